@@ -1,0 +1,26 @@
+# Every lab is built twice from the same framework: the student's work in labs/<dir> (as shipped: the
+# starter generated from the solution) as <id>, and the reference in solutions/<dir> as <id>_solution.
+set(GSV_LABS "" CACHE INTERNAL "")
+
+function(gsv_add_lab id dir)
+  foreach(variant IN ITEMS starter solution)
+    if(variant STREQUAL "starter")
+      set(src labs/${dir})
+      set(target ${id})
+    else()
+      set(src solutions/${dir})
+      set(target ${id}_solution)
+    endif()
+    file(GLOB lab_sources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${src}/*.cpp)
+    if(NOT lab_sources)
+      continue()
+    endif()
+    add_executable(${target} ${lab_sources})
+    target_link_libraries(${target} PRIVATE gsv_common)
+    target_compile_definitions(${target} PRIVATE GSV_LAB_DIR="${src}" GSV_LAB_VARIANT="${variant}")
+    set_target_properties(${target} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bin)
+  endforeach()
+  set(GSV_LABS ${GSV_LABS} ${id} CACHE INTERNAL "")
+endfunction()
+
+gsv_add_lab(lab01 lab01_gooch)

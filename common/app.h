@@ -1,0 +1,104 @@
+#pragma once
+// The lab app. A lab declares what it is (parameters with their ranges and accuracy knob, render cases,
+// effects) and how it draws; the framework gives it the window, headless rendering, sweeps, the command
+// line, hot reload, timing and image output. A lab's main() is one line: return gsv::run_lab<MyLab>(argc, argv);
+#include "common/assets.h"
+#include "common/context.h"
+#include "common/params.h"
+#include "common/shader_library.h"
+#include "common/transforms.h"
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace gsv {
+
+struct LabInfo {
+    std::string id;               // "lab01": names outputs and reports
+    std::string title;            // "GLSL basics and Gooch shading"
+    GlVersion needs{4, 1};        // labs other than 05 run on macOS's 4.1 core
+    std::string needs_why = "the kit's baseline";
+};
+
+struct RenderCase {
+    std::string name;
+    std::string description;
+    std::vector<std::string> settings;  // "name=value", applied over the defaults
+};
+
+struct Frame {
+    int width = 0, height = 0;
+    double time_s = 0;  // seconds since start in window mode; 0 headless, so images are reproducible
+    float aspect() const { return height > 0 ? static_cast<float>(width) / static_cast<float>(height) : 1.0f; }
+};
+
+using SweepMetrics = std::vector<std::pair<std::string, double>>;
+
+class LabKit;
+
+class Lab {
+public:
+    virtual ~Lab() = default;
+    virtual LabInfo info() const = 0;
+    virtual void declare(Params& params, std::vector<RenderCase>& cases) = 0;
+    virtual void setup(LabKit& kit) = 0;
+    virtual void render(LabKit& kit, const Frame& frame) = 0;
+    // A parameter changed (window keys, the next sweep point): rebuild what depends on it, e.g. a mesh.
+    virtual void params_changed(LabKit&) {}
+    // The settings of the converged reference a sweep measures error against; empty: the knob's last value.
+    virtual std::vector<std::string> sweep_reference() const { return {}; }
+    // Lab-specific error columns for a sweep, measured at the current settings.
+    virtual SweepMetrics sweep_metrics(LabKit&, const Frame&) { return {}; }
+};
+
+// What a lab gets from the framework.
+class LabKit {
+public:
+    LabKit(Context& context, Params& params, const Assets& assets, Profile profile);
+
+    const Params& params() const { return params_; }
+    Profile profile() const { return profile_; }
+    GlVersion gl_version() const { return context_.effective_version(); }
+    const Assets& assets() const { return assets_; }
+    Context& context() { return context_; }
+
+    // A program from the lab's shader files (e.g. {"gooch.vert", "gooch.frag"}), built with the
+    // parameters' #defines and kept up to date by the framework.
+    const ShaderLibrary::Entry& program(const std::string& name, const std::vector<std::string>& files);
+    // Binds the program and sets every runtime parameter as its uniform; set the rest yourself.
+    const ShaderProgram& use(const ShaderLibrary::Entry& entry) const;
+    void set_transforms(const ShaderProgram& program, const Transforms& transforms) const {
+        apply_transforms(program, transforms, profile_);
+    }
+
+    ShaderLibrary& shaders() { return shaders_; }
+
+private:
+    Context& context_;
+    Params& params_;
+    const Assets& assets_;
+    Profile profile_;
+    ShaderLibrary shaders_;
+};
+
+// Declares the camera parameters (camera_yaw, camera_pitch, camera_distance) that window mode drives with
+// the mouse and that cases and hidden grader cases set.
+void add_orbit_camera(Params& params, float yaw, float pitch, float distance);
+OrbitCamera orbit_camera(const Params& params);
+
+// Exit statuses shared by every lab binary (the grader tells failure classes apart by them).
+enum ExitStatus { kExitOk = 0, kExitError = 1, kExitUsage = 2, kExitUnsupported = 3, kExitNonFinite = 4 };
+
+int run_lab(std::unique_ptr<Lab> lab, const char* lab_dir, const char* variant, int argc, const char* const* argv);
+
+#ifdef GSV_LAB_DIR  // defined for lab executables by cmake/labs.cmake
+template <class L>
+int run_lab(int argc, char** argv) {
+    return run_lab(std::make_unique<L>(), GSV_LAB_DIR, GSV_LAB_VARIANT, argc, argv);
+}
+#endif
+
+}  // namespace gsv

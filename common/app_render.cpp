@@ -1,0 +1,102 @@
+// Headless render mode: one case to PNG, plus a JSON with timings and what GL really was.
+#include "common/app_session.h"
+#include "common/error.h"
+#include "common/framebuffer.h"
+#include "common/gl.h"
+#include "common/image.h"
+#include "common/image_compare.h"
+#include "common/json.h"
+#include "common/timing.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+namespace gsv {
+
+Json params_json(const Params& params) {
+    Json out = Json::object();
+    for (const auto& spec : params.specs()) out[spec.name] = params.get_text(spec.name);
+    return out;
+}
+
+Json gl_json(const Context& context) {
+    const ContextInfo& info = context.info();
+    Json gl = Json::object();
+    gl["renderer"] = info.renderer;
+    gl["vendor"] = info.vendor;
+    gl["version"] = info.version_string;
+    gl["glsl"] = info.glsl_version_string;
+    gl["profile"] = profile_name(info.profile);
+    gl["backend"] = backend_name(info.backend);
+    gl["requested"] = info.requested.str();
+    gl["effective"] = context.effective_version().str();
+    return gl;
+}
+
+Json timing_json(const TimingStats& t, int warmup) {
+    Json j = Json::object();
+    j["median_ms"] = t.median_ms;
+    j["min_ms"] = t.min_ms;
+    j["max_ms"] = t.max_ms;
+    j["mean_ms"] = t.mean_ms;
+    j["frames"] = t.frames;
+    j["warmup"] = warmup;
+    return j;
+}
+
+int run_render(Session& s) {
+    const Backend backend = s.options.backend.value_or(Backend::Egl);
+    s.options.width = std::max(s.options.width, 1);
+    s.open(backend);
+    if (auto error = s.sync_params()) throw Error(*error);
+
+    const int width = s.options.width, height = s.options.height;
+    // Float target so NaN and Inf survive to the readback instead of silently turning black.
+    Framebuffer target(width, height, ColorFormat::RGBA32F);
+    const Frame frame{width, height, 0.0};
+    const int warmup = s.options.warmup >= 0 ? s.options.warmup : 1;
+    const int frames = s.options.frames > 0 ? s.options.frames : 3;
+    const TimingStats timing = time_frames([&] {
+        target.bind();
+        s.render_frame(frame);
+    }, warmup, frames);
+    check_gl_error("rendering the frame");
+
+    const ImageF pixels = target.read_rgba32f();
+    const FloatStats stats = float_stats(pixels);
+    const Image image = to_rgba8(pixels);
+
+    std::string png = s.options.out;
+    if (png.empty()) png = s.info.id + (s.options.case_name.empty() ? "" : "-" + s.options.case_name) + ".png";
+    std::string json_path = s.options.json;
+    if (json_path.empty()) json_path = std::filesystem::path(png).replace_extension(".json").string();
+    write_png(png, image);
+
+    Json report = Json::object();
+    report["lab"] = s.info.id;
+    report["variant"] = s.variant;
+    report["case"] = s.options.case_name;
+    report["width"] = width;
+    report["height"] = height;
+    report["image"] = png;
+    report["params"] = params_json(s.params);
+    report["timing"] = timing_json(timing, warmup);
+    report["gl"] = gl_json(*s.context);
+    report["nan_pixels"] = static_cast<double>(stats.nan_count);
+    report["inf_pixels"] = static_cast<double>(stats.inf_count);
+    report["blank"] = is_blank(image);
+    std::ofstream out(json_path);
+    if (!out || !(out << report.dump(2) << "\n")) throw Error("cannot write '" + json_path + "'");
+
+    std::printf("%s: wrote %s (%dx%d), median %.2f ms/frame over %d frames\n", s.info.id.c_str(), png.c_str(), width,
+                height, timing.median_ms, timing.frames);
+    if (stats.nan_count > 0 || stats.inf_count > 0) {
+        std::fprintf(stderr, "%s: the image has %ld NaN and %ld Inf pixel values (painted magenta in %s)\n",
+                     s.info.id.c_str(), stats.nan_count, stats.inf_count, png.c_str());
+        return kExitNonFinite;
+    }
+    return kExitOk;
+}
+
+}  // namespace gsv

@@ -1,0 +1,45 @@
+#pragma once
+// One run of a lab binary: what the three modes share (internal to the framework).
+#include "common/app.h"
+#include "common/cli.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace gsv {
+
+struct Session {
+    Session() = default;
+    ~Session();  // the lab's GL objects go before the context that owns them
+    std::unique_ptr<Lab> lab;
+    LabInfo info;
+    std::string variant;  // "starter" or "solution"
+    CliOptions options;
+    Params params;
+    std::vector<RenderCase> cases;
+    std::unique_ptr<Assets> assets;
+    std::unique_ptr<Context> context;
+    std::unique_ptr<LabKit> kit;
+
+    // Creates the context, checks the lab's GL needs, builds the kit and runs lab->setup.
+    void open(Backend backend);
+    void apply_case(const std::string& name);  // throws naming the unknown case and the known ones
+    // Applies the case then the --set assignments, as the command line asked.
+    void apply_command_line_settings();
+    // Renders one frame into the bound framebuffer: clear, then the lab.
+    void render_frame(const Frame& frame);
+    // After a parameter change: rebuild shaders if a compile-time parameter moved, tell the lab.
+    // Returns a shader error (the last good program keeps running), if any.
+    std::optional<std::string> sync_params();
+    std::string title() const { return info.id + " (" + variant + ")"; }
+
+private:
+    std::string compiled_signature_;
+};
+
+int run_window(Session& session);
+int run_render(Session& session);
+int run_sweep(Session& session);
+
+}  // namespace gsv

@@ -1,0 +1,39 @@
+#pragma once
+// An offscreen render target: headless runs, sweeps and the grader render into one of these, since a
+// surfaceless context has no default framebuffer.
+#include "common/gl_object.h"
+#include "common/image.h"
+#include "common/texture.h"
+
+namespace gsv {
+
+enum class ColorFormat { RGBA8, RGBA32F };
+
+class Framebuffer {
+public:
+    Framebuffer() = default;
+    Framebuffer(int width, int height, ColorFormat format, bool with_depth = true);
+
+    void bind() const;                  // binds for drawing and sets the viewport to the whole target
+    static void bind_default(int width, int height);
+    int width() const { return width_; }
+    int height() const { return height_; }
+    ColorFormat format() const { return format_; }
+    const Texture& color() const { return color_; }
+
+    // Readbacks return row 0 = top (GL's row 0 is the bottom) and tightly packed rows.
+    Image read_rgba8() const;
+    ImageF read_rgba32f() const;
+
+private:
+    FramebufferName name_;
+    Texture color_;
+    RenderbufferName depth_;
+    int width_ = 0, height_ = 0;
+    ColorFormat format_ = ColorFormat::RGBA8;
+};
+
+// Reads the bound read framebuffer (e.g. a window's back buffer) as RGBA8, top row first.
+Image read_current_framebuffer(int width, int height);
+
+}  // namespace gsv

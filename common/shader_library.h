@@ -1,0 +1,45 @@
+#pragma once
+// The programs of one lab, kept rebuildable: when a shader file changes (hot reload) or a compile-time
+// parameter changes (an effect switched on), every program is rebuilt; a build that fails keeps the
+// last good program running and reports the error instead.
+#include "common/shader_program.h"
+
+#include <deque>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gsv {
+
+class ShaderLibrary {
+public:
+    class Entry {
+    public:
+        const ShaderProgram& program() const { return program_; }
+        const ProgramSpec& spec() const { return spec_; }
+
+    private:
+        friend class ShaderLibrary;
+        ProgramSpec spec_;
+        ShaderProgram program_;
+        std::vector<std::pair<std::filesystem::path, std::filesystem::file_time_type>> stamps_;
+    };
+
+    explicit ShaderLibrary(PreprocessOptions base) : base_(std::move(base)) {}
+
+    // Builds now (throws on error: a lab cannot start with a broken shader). The reference stays valid.
+    Entry& add(ProgramSpec spec, const std::vector<ShaderDefine>& defines);
+    // Rebuilds every program with new defines; on failure keeps the old ones and returns the error.
+    std::optional<std::string> rebuild_all(const std::vector<ShaderDefine>& defines);
+    // Rebuilds programs whose files changed on disk; returns the error of a failed rebuild, if any.
+    std::optional<std::string> reload_changed(const std::vector<ShaderDefine>& defines);
+    const PreprocessOptions& options() const { return base_; }
+
+private:
+    static void build(Entry& entry, const PreprocessOptions& options, const std::vector<ShaderDefine>& defines);
+    PreprocessOptions base_;
+    std::deque<Entry> entries_;
+};
+
+}  // namespace gsv

@@ -1,0 +1,55 @@
+#pragma once
+// Turns a lab's shader file into the one string handed to glShaderSource: the kit writes the #version
+// line and its defines, splices in the profile prelude and every #include, and keeps a #line map so a
+// driver's error log can be pointed back at the file and line the student actually wrote.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "common/gl_version.h"
+
+namespace gsv {
+
+struct ShaderDefine {
+    std::string name;
+    std::string value;
+};
+
+struct PreprocessOptions {
+    Profile profile = Profile::Core;
+    GlVersion version{4, 1};
+    ShaderStage stage = ShaderStage::Fragment;
+    std::vector<std::filesystem::path> include_dirs;  // searched in order AFTER the including file's own directory
+    std::vector<ShaderDefine> defines;                // injected in order, after the built-in defines, before the prelude
+    bool with_prelude = true;
+};
+
+// Name of files[0]: the #version line and defines the kit writes are source string 0, so a driver
+// complaint about them (an unsupported #version, a clashing define) is not blamed on the lab's file.
+inline constexpr const char* kGeneratedHeaderName = "<generated header>";
+
+struct ShaderSource {
+    std::string text;                                 // ready for glShaderSource
+    std::vector<std::string> files;                   // index = GLSL source-string number used in #line
+    std::vector<std::filesystem::path> dependencies;  // every file read (main, prelude, includes), for hot reload
+    int main_file_index = 0;
+    // lines[i] holds files[i]'s lines without their line endings; kept so logs can quote the source.
+    std::vector<std::vector<std::string>> lines;
+
+    std::string file_line_text(int source_string, int line) const;  // the original text of that line, "" if unknown
+};
+
+// Source string 0 is the generated header, 1 the main file, then the prelude and includes in the order
+// they are first read. A file included twice keeps one source-string number.
+// Limitation: #include is resolved before the GLSL preprocessor runs, so an #include inside a disabled
+// #if branch must still name a file that exists.
+ShaderSource preprocess_shader(const std::filesystem::path& main_file, const PreprocessOptions& options);
+
+// Rewrites a driver's compile/link info log so each message names the original file and line and
+// is followed by that source line indented by 4 spaces. Lines it cannot parse pass through unchanged.
+std::string translate_compile_log(const std::string& log, const ShaderSource& source);
+
+const char* stage_name(ShaderStage stage);                           // "vertex", "fragment", "tess_control", ...
+ShaderStage stage_from_extension(const std::filesystem::path& file);  // .vert .frag .geom .comp .tesc .tese
+
+}  // namespace gsv

@@ -1,0 +1,21 @@
+// Lab 01, part 1: the classic diffuse + specular shader, the first thing to write in GLSL.
+#pragma once
+
+uniform float uShininess;     // the Phong exponent: larger is a smaller, sharper highlight
+uniform float uSpecularStrength;  // strength of the white highlight
+
+const vec3 kNotDone = vec3(1.0, 0.0, 1.0);  // magenta: this part of the lab is still to be written
+
+// TODO(L01-T2): the diffuse (Lambert) term. n and l are unit vectors in eye space.
+// Light arriving from behind the surface (n.l < 0) adds nothing; keep a little ambient light
+// (0.15 of k_d) so the unlit side is not pure black.
+vec3 diffuse(vec3 n, vec3 l, vec3 kd) {
+    return kNotDone;
+}
+
+// TODO(L01-T3): the specular (Phong) term: reflect the light direction about the normal and raise
+// its agreement with the view direction to the power uShininess. Every vector must be in the same
+// space (eye space here). No highlight where the light is behind the surface.
+vec3 specular(vec3 n, vec3 l, vec3 v) {
+    return kNotDone;
+}
