@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# Installs what the kit needs to build, run headless, test and plot, where it is missing.
+# Debian/Ubuntu: installs with apt-get (through sudo when not root). Elsewhere: prints the equivalents.
+set -euo pipefail
+
+debian_packages=(
+  cmake ninja-build g++ pkg-config
+  libglfw3-dev libglm-dev catch2 libstb-dev
+  libegl-dev libgl-dev libgl1-mesa-dri libegl-mesa0 libosmesa6-dev
+  libimgui-dev
+  python3-glad glslang-tools
+  xvfb xauth imagemagick gnuplot-nox
+)
+
+if [ "$(uname -s)" = "Darwin" ]; then
+  cat <<'MSG'
+macOS: install the kit's dependencies with Homebrew, then build with the same CMake commands:
+  brew install cmake ninja glfw glm catch2 stb glslang gnuplot
+  (no EGL or OSMesa on macOS: labs run in a window with an OpenGL 4.1 core context; lab 05 needs 4.3)
+MSG
+  exit 0
+fi
+case "$(uname -s)" in
+  MINGW*|MSYS*|CYGWIN*)
+    cat <<'MSG'
+Windows: install the dependencies with vcpkg and point CMake at its toolchain file:
+  vcpkg install glfw3 glm catch2 stb imgui[glfw-binding,opengl3-binding]
+  cmake --preset default -DCMAKE_TOOLCHAIN_FILE=%VCPKG_ROOT%/scripts/buildsystems/vcpkg.cmake
+MSG
+    exit 0 ;;
+esac
+
+if ! command -v dpkg-query >/dev/null 2>&1; then
+  echo "setup: not a Debian-based system; install the equivalents of: ${debian_packages[*]}" >&2
+  exit 0
+fi
+
+missing=()
+for p in "${debian_packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup: all ${#debian_packages[@]} packages present"
+  exit 0
+fi
+echo "setup: installing ${missing[*]}"
+sudo=""
+[ "$(id -u)" -eq 0 ] || sudo="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "setup: done"

@@ -1,0 +1,5 @@
+out vec2 vTexCoord;
+void main() {
+    vTexCoord = aTexCoord0.st;
+    gl_Position = aVertex;
+}

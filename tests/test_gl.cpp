@@ -1,0 +1,281 @@
+// The framework against a real (headless) GL context: backends, profiles, GL objects, reload.
+#include "catch.hpp"
+#include "gl_fixture.h"
+
+#include "common/buffer.h"
+#include "common/error.h"
+#include "common/framebuffer.h"
+#include "common/gl.h"
+#include "common/gpu_mesh.h"
+#include "common/image_compare.h"
+#include "common/shader_library.h"
+#include "common/texture.h"
+#include "common/timing.h"
+#include "common/transforms.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <chrono>
+#include <fstream>
+#include <thread>
+
+using namespace gsv;
+
+namespace {
+
+// The lower-left half of the target: a right triangle through (-1,-1), (1,-1), (-1,1).
+MeshData lower_left_triangle() {
+    MeshData mesh;
+    mesh.positions = {{-1, -1, 0}, {1, -1, 0}, {-1, 1, 0}};
+    mesh.normals.assign(3, glm::vec3(0, 0, 1));
+    mesh.texcoords = {{0, 0}, {1, 0}, {0, 1}};
+    mesh.indices = {0, 1, 2};
+    return mesh;
+}
+
+Image render_triangle(Context& context, Profile profile, const std::string& vertex_shader) {
+    Framebuffer target(64, 64, ColorFormat::RGBA8);
+    target.bind();
+    glClearColor(0, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    ShaderProgram program = test::test_program(context, profile, {vertex_shader, "triangle.frag"});
+    program.use();
+    Transforms t;  // a rotation about z leaves the triangle's normal (0,0,1) unchanged
+    t.model = glm::rotate(glm::mat4(1.0f), 0.0f, glm::vec3(0, 0, 1));
+    apply_transforms(program, t, profile);
+    program.set("uColor", glm::vec3(1, 0, 0));
+    GpuMesh mesh(lower_left_triangle(), profile);
+    mesh.draw();
+    check_gl_error("drawing the test triangle");
+    return target.read_rgba8();
+}
+
+void check_known_triangle(const Image& image) {
+    // Row 0 of the readback is the TOP: the triangle covers the bottom-left, so the top-left pixel
+    // is inside only at the very corner; check well inside and well outside.
+    const std::uint8_t* inside = image.at(8, 55);   // near the bottom-left corner
+    const std::uint8_t* outside = image.at(55, 8);  // near the top-right corner
+    CHECK(int(inside[0]) == 255);
+    CHECK(int(inside[3]) == 255);  // normal z = 1 -> 0.5 + 0.5 = 1
+    CHECK(int(outside[0]) == 0);
+    CHECK(int(outside[3]) == 255);  // clear alpha
+    // Texture coordinates interpolate: u grows to the right, v upwards.
+    CHECK(int(image.at(40, 55)[1]) > int(image.at(8, 55)[1]));
+    CHECK(int(image.at(8, 30)[2]) > int(image.at(8, 55)[2]));
+}
+
+}  // namespace
+
+TEST_CASE("context: EGL surfaceless renders a known triangle", "[gl]") {
+    auto context = test::headless_context(Profile::Core, {4, 1}, Backend::Egl);
+    INFO(context->describe());
+    CHECK(context->info().profile == Profile::Core);
+    CHECK_FALSE(context->info().renderer.empty());
+    check_known_triangle(render_triangle(*context, Profile::Core, "triangle.vert"));
+}
+
+#if GSV_HAVE_OSMESA
+TEST_CASE("context: OSMesa renders the same known triangle", "[gl]") {
+    auto context = test::headless_context(Profile::Core, {4, 1}, Backend::OSMesa);
+    INFO(context->describe());
+    check_known_triangle(render_triangle(*context, Profile::Core, "triangle.vert"));
+}
+#endif
+
+TEST_CASE("context: core and compat give the same image, seeds' built-ins fed in compat", "[gl]") {
+    Image core, compat_kit_names, compat_seed_builtins;
+    {
+        auto context = test::headless_context(Profile::Core);
+        core = render_triangle(*context, Profile::Core, "triangle.vert");
+    }
+    {
+        auto context = test::headless_context(Profile::Compat);
+        CHECK(context->info().profile == Profile::Compat);
+        compat_kit_names = render_triangle(*context, Profile::Compat, "triangle.vert");
+        compat_seed_builtins = render_triangle(*context, Profile::Compat, "seed_style.vert");
+    }
+    CHECK(compare_images(compat_kit_names, core, {}).max_channel_diff == 0);
+    CHECK(compare_images(compat_seed_builtins, core, {}).max_channel_diff == 0);
+}
+
+TEST_CASE("context: the run holds to the requested version and refuses what it lacks", "[gl]") {
+    auto context = test::headless_context(Profile::Core, {4, 1});
+    CHECK(context->effective_version() == GlVersion{4, 1});
+    CHECK_NOTHROW(context->require({4, 1}, "the baseline"));
+    try {
+        context->require({4, 3}, "compute shaders");
+        FAIL("require(4.3) on a 4.1 run must throw");
+    } catch (const UnsupportedError& e) {
+        const std::string message = e.what();
+        CHECK(message.find("needs OpenGL 4.3 (compute shaders)") != std::string::npos);
+        CHECK(message.find("4.1") != std::string::npos);
+        CHECK(message.find('\n') == std::string::npos);
+    }
+    // A #version 410 program cannot use a 4.3 feature even where the driver has it.
+    ShaderProgram ok = test::test_program(*context, Profile::Core, {"quad.vert", "nan.frag"});
+    CHECK(ok);
+}
+
+TEST_CASE("context: bad backend, profile and version names are refused with the value named", "[gl]") {
+    CHECK_THROWS_WITH(parse_backend("vulkan"), Catch::Matchers::Contains("'vulkan'"));
+    CHECK_THROWS_WITH(parse_profile("es"), Catch::Matchers::Contains("'es'"));
+    CHECK_THROWS_WITH(parse_gl_version("5.0"), Catch::Matchers::Contains("out of range"));
+    CHECK_THROWS_WITH(parse_gl_version("four"), Catch::Matchers::Contains("'four'"));
+    CHECK(parse_gl_version("4.3") == GlVersion{4, 3});
+}
+
+TEST_CASE("framebuffer: float readback keeps NaN that an 8-bit target would hide", "[gl]") {
+    auto context = test::headless_context();
+    ShaderProgram program = test::test_program(*context, Profile::Core, {"quad.vert", "nan.frag"});
+    GpuMesh quad(make_fullscreen_quad(), Profile::Core);
+    Framebuffer float_target(8, 8, ColorFormat::RGBA32F);
+    float_target.bind();
+    program.use();
+    program.set("uZero", 0.0f);
+    quad.draw();
+    const FloatStats stats = float_stats(float_target.read_rgba32f());
+    CHECK(stats.nan_count + stats.inf_count == 64);
+    // The kit's PNG conversion paints NaN magenta instead of black.
+    const Image shown = to_rgba8(float_target.read_rgba32f());
+    CHECK(int(shown.at(3, 3)[0]) == 255);
+    CHECK(int(shown.at(3, 3)[2]) == 255);
+}
+
+TEST_CASE("texture: a 2D array returns exactly its layer; a 3D texture blends neighbours", "[gl]") {
+    auto context = test::headless_context();
+    const int w = 4, h = 4, layers = 3;
+    std::vector<float> texels(static_cast<std::size_t>(w * h * layers));
+    const float layer_value[layers] = {0.1f, 0.6f, 0.9f};
+    for (int l = 0; l < layers; ++l)
+        for (int i = 0; i < w * h; ++i) texels[static_cast<std::size_t>(l * w * h + i)] = layer_value[l];
+    Texture array = Texture::create_2d_array(w, h, layers, TexelFormat::R32F, texels.data());
+    Texture volume = Texture::create_3d(w, h, layers, TexelFormat::R32F, texels.data());
+    CHECK(array.depth() == layers);
+    ShaderProgram program = test::test_program(*context, Profile::Core, {"quad.vert", "sample_layers.frag"});
+    GpuMesh quad(make_fullscreen_quad(), Profile::Core);
+    Framebuffer target(8, 8, ColorFormat::RGBA32F);
+    for (int layer = 0; layer < layers; ++layer) {
+        target.bind();
+        program.use();
+        array.bind(0);
+        volume.bind(1);
+        program.set("uArray", 0);
+        program.set("uVolume", 1);
+        program.set("uLayer", static_cast<float>(layer));
+        program.set("uDepth", static_cast<float>(layers));
+        quad.draw();
+        const ImageF out = target.read_rgba32f();
+        CHECK(out.at(4, 4)[0] == layer_value[layer]);  // exact: no filtering between layers
+        CHECK(std::abs(out.at(4, 4)[1] - layer_value[layer]) < 1e-6f);  // at a slice centre the 3D texture agrees
+    }
+    // Between slices the 3D texture mixes them; the array cannot (its layer index is rounded).
+    target.bind();
+    program.use();
+    program.set("uLayer", 0.5f);
+    quad.draw();
+    const ImageF between = target.read_rgba32f();
+    CHECK(std::abs(between.at(4, 4)[1] - 0.5f * (layer_value[0] + layer_value[1])) < 1e-3f);
+    CHECK((between.at(4, 4)[0] == layer_value[0] || between.at(4, 4)[0] == layer_value[1]));
+
+    GLint max_layers = 0;
+    glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &max_layers);
+    CHECK_THROWS_AS(Texture::create_2d_array(1, 1, max_layers + 1, TexelFormat::R8, nullptr), UnsupportedError);
+}
+
+TEST_CASE("texture: mipmaps, wrap and 8-bit rows that are not 4-byte aligned", "[gl]") {
+    auto context = test::headless_context();
+    std::vector<std::uint8_t> odd_rows(3 * 5);  // R8, 3 wide: rows of 3 bytes
+    for (std::size_t i = 0; i < odd_rows.size(); ++i) odd_rows[i] = static_cast<std::uint8_t>(i * 10);
+    Texture t = Texture::create_2d(3, 5, TexelFormat::R8, odd_rows.data(),
+                                   Sampling{GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_REPEAT});
+    t.bind(0);
+    GLint levels_width = 0;
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, 2, GL_TEXTURE_WIDTH, &levels_width);
+    CHECK(levels_width == 1);  // the chain was built: 3x5 -> 1x2 -> 1x1
+    std::vector<std::uint8_t> back(odd_rows.size());
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_RED, GL_UNSIGNED_BYTE, back.data());
+    CHECK(back == odd_rows);
+    check_gl_error("texture round trip");
+}
+
+TEST_CASE("buffer: map with invalidate, write, read back; storage buffers need 4.3", "[gl]") {
+    {
+        auto context = test::headless_context(Profile::Core, {4, 5});
+        Buffer ssbo = Buffer::create(GL_SHADER_STORAGE_BUFFER, 1024 * sizeof(float), nullptr, GL_DYNAMIC_DRAW);
+        float* p = ssbo.map_write_invalidate_as<float>();
+        for (int i = 0; i < 1024; ++i) p[i] = static_cast<float>(i) * 0.5f;
+        ssbo.unmap();
+        ssbo.bind_base(3);
+        GLint bound = 0;
+        glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, 3, &bound);
+        CHECK(static_cast<GLuint>(bound) == ssbo.id());
+        const float* q = ssbo.map_read_as<float>();
+        CHECK(q[1023] == 511.5f);
+        ssbo.unmap();
+        CHECK_THROWS_AS(ssbo.upload(1020 * sizeof(float), 8 * sizeof(float), p), Error);
+    }
+    // Moving a buffer moves the GL name; the moved-from one deletes nothing.
+    auto context = test::headless_context();
+    Buffer a = Buffer::create(GL_ARRAY_BUFFER, 16, nullptr);
+    const GLuint name = a.id();
+    Buffer b = std::move(a);
+    CHECK(b.id() == name);
+    CHECK(a.id() == 0);
+    CHECK(glIsBuffer(name) == GL_TRUE);
+}
+
+TEST_CASE("shader_library: hot reload rebuilds a changed file and keeps the last good program on error", "[gl]") {
+    auto context = test::headless_context();
+    const auto dir = test::temp_dir("reload");
+    auto write = [&](const std::string& name, const std::string& text) {
+        std::ofstream(dir / name) << text;
+    };
+    write("r.vert", "void main() { gl_Position = aVertex; }\n");
+    write("r.frag", "out vec4 fColor;\nvoid main() {\n    fColor = vec4(1.0);\n}\n");
+    PreprocessOptions options;
+    options.version = context->effective_version();
+    options.include_dirs = {test::source_root() / "shaders"};
+    ShaderLibrary library(options);
+    ProgramSpec spec{"r", {dir / "r.vert", dir / "r.frag"}, {}};
+    const auto& entry = library.add(spec, {});
+    const GLuint first = entry.program().id();
+    CHECK_FALSE(library.reload_changed({}).has_value());  // nothing changed
+
+    // File times can have coarse resolution: step the clock past it before each edit.
+    auto touch_later = [&](const std::string& name, const std::string& text) {
+        const auto before = std::filesystem::last_write_time(dir / name);
+        write(name, text);
+        std::filesystem::last_write_time(dir / name, before + std::chrono::seconds(2));
+    };
+    touch_later("r.frag", "out vec4 fColor;\nvoid main() {\n    fColor = vec4(1.0) +;\n}\n");
+    const auto error = library.reload_changed({});
+    REQUIRE(error.has_value());
+    CHECK(error->find("r.frag:3") != std::string::npos);          // the file and line
+    CHECK(error->find("fColor = vec4(1.0) +;") != std::string::npos);  // the source line itself
+    CHECK(entry.program().id() == first);                           // still running the last good one
+    CHECK(glIsProgram(first) == GL_TRUE);
+    CHECK_FALSE(library.reload_changed({}).has_value());  // reported once, not every frame
+
+    touch_later("r.frag", "out vec4 fColor;\nvoid main() {\n    fColor = vec4(0.5);\n}\n");
+    CHECK_FALSE(library.reload_changed({}).has_value());
+    CHECK(entry.program().id() != 0);
+    CHECK(entry.program().id() != first);
+
+    // New defines rebuild every program; a define that breaks it keeps the old one.
+    const GLuint before_defines = entry.program().id();
+    CHECK_FALSE(library.rebuild_all({{"UNUSED_SWITCH", "1"}}).has_value());
+    CHECK(entry.program().id() != before_defines);
+}
+
+TEST_CASE("timing: median of glFinish-bracketed frames after warm-up", "[gl]") {
+    auto context = test::headless_context();
+    int calls = 0;
+    const TimingStats stats = time_frames([&] { ++calls; std::this_thread::sleep_for(std::chrono::milliseconds(2)); }, 2, 5);
+    CHECK(calls == 7);
+    CHECK(stats.frames == 5);
+    CHECK(stats.median_ms >= 1.5);
+    CHECK(stats.min_ms <= stats.median_ms);
+    CHECK(stats.median_ms <= stats.max_ms);
+    CHECK(summarize({3, 1, 2, 10}).median_ms == 2.5);
+}
