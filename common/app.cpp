@@ -61,7 +61,12 @@ void Session::open(Backend backend) {
     context_options.width = options.width;
     context_options.height = options.height;
     context_options.title = title();
-    context = create_context(context_options);
+    try {
+        context = create_context(context_options);
+    } catch (const UnsupportedError& e) {
+        throw UnsupportedError(std::string(e.what()) + "; " + info.id + " needs OpenGL " + info.needs.str() + " (" +
+                               info.needs_why + ")");
+    }
     std::fprintf(stderr, "%s: %s\n", info.id.c_str(), context->describe().c_str());
     context->require(info.needs, info.needs_why);
     kit = std::make_unique<LabKit>(*context, params, *assets, options.profile);

@@ -2,6 +2,7 @@
 
 #include "common/error.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -45,13 +46,14 @@ std::string SweepReport::table() const {
     out << line;
     if (!rows.empty())
         for (const auto& [name, value] : rows.front().extra) out << " " << std::string(14 - std::min<std::size_t>(14, name.size()), ' ') << name;
+    // Values are right-aligned under their names, however long the names are.
     out << "\n";
     for (const auto& r : rows) {
         std::snprintf(line, sizeof line, "%-12s %-10s %10.3f %8.2f %10.3f %8d", r.series.c_str(), r.knob.c_str(),
                       r.median_ms, base_ms > 0 ? r.median_ms / base_ms : 0.0, r.rmse, r.max_diff);
         out << line;
         for (const auto& [name, value] : r.extra) {
-            std::snprintf(line, sizeof line, " %14.4f", value);
+            std::snprintf(line, sizeof line, " %*.4f", static_cast<int>(std::max<std::size_t>(14, name.size())), value);
             out << line;
         }
         out << "\n";
@@ -93,7 +95,7 @@ std::vector<std::string> SweepReport::write(const std::filesystem::path& dir) co
        << "set datafile separator ','\nset terminal pngcairo size 1200,460 font ',10'\n"
        << "set output '" << png_path.filename().string() << "'\n"
        << "set multiplot layout 1,2 title '" << lab << ": what accuracy costs in time (" << width << "x" << height << ")'\n"
-       << "set key top right\nset grid\n";
+       << "set termoption noenhanced\nset key top right\nset grid\n";
     if (numeric) gp << "set logscale x 2\n";
     else gp << "set xtics rotate by -30\n";
     auto plot = [&](int column, const std::string& ylabel) {
@@ -107,7 +109,9 @@ std::vector<std::string> SweepReport::write(const std::filesystem::path& dir) co
         }
         gp << "\n";
     };
+    gp << "set logscale y\n";  // errors fall by orders of magnitude as the knob converges
     plot(5, "RMSE against the reference (0-255)");
+    gp << "unset logscale y\n";
     plot(3, "median ms per frame");
     gp << "unset multiplot\n";
     write_file(gp_path, gp.str());

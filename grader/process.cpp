@@ -11,7 +11,7 @@
 namespace gsv {
 
 ProcessResult run_process(const std::vector<std::string>& argv, const std::filesystem::path& working_dir,
-                          const ProcessLimits& limits) {
+                          const ProcessLimits& limits, const std::vector<std::string>& environment) {
     ProcessResult result;
     int pipe_fds[2];
     if (argv.empty() || pipe(pipe_fds) != 0) {
@@ -34,6 +34,7 @@ ProcessResult run_process(const std::vector<std::string>& argv, const std::files
         close(pipe_fds[0]);
         close(pipe_fds[1]);
         if (!working_dir.empty() && chdir(working_dir.c_str()) != 0) _exit(126);
+        for (const auto& assignment : environment) putenv(const_cast<char*>(assignment.c_str()));
         std::vector<char*> args;
         for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
         args.push_back(nullptr);

@@ -22,7 +22,8 @@ struct ProcessLimits {
     std::size_t max_output_bytes = 64 * 1024;
 };
 
+// `environment` adds or overrides NAME=VALUE entries of the inherited environment.
 ProcessResult run_process(const std::vector<std::string>& argv, const std::filesystem::path& working_dir,
-                          const ProcessLimits& limits);
+                          const ProcessLimits& limits, const std::vector<std::string>& environment = {});
 
 }  // namespace gsv

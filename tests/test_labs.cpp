@@ -1,0 +1,266 @@
+// Every lab binary, run as students, lecturers, CI and the grader run it.
+#include "catch.hpp"
+#include "gl_fixture.h"
+#include "lab_runner.h"
+
+#include "common/image_compare.h"
+#include "grader/grade.h"
+
+#include <fstream>
+#include <set>
+#include <sstream>
+
+using namespace gsv;
+namespace fs = std::filesystem;
+
+namespace {
+
+// Labs that must run on macOS's OpenGL 4.1 core profile: every lab but 05 (compute shaders).
+std::vector<std::string> labs_on_gl41() {
+    std::vector<std::string> labs;
+    std::stringstream list(GSV_LABS);
+    for (std::string lab; std::getline(list, lab, ';');)
+        if (!lab.empty() && lab != "lab05") labs.push_back(lab);
+    return labs;
+}
+
+Image must_render(const test::LabRun& run) {
+    INFO(run.process.output);
+    REQUIRE(run.exit_code() == 0);
+    return read_png(run.png);
+}
+
+std::string read_text(const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// A copy of the files lab01_solution loads, to break on purpose (GSV_ROOT points the binary at it).
+fs::path copy_of_lab01(const std::string& name) {
+    const fs::path root = test::temp_dir(name);
+    fs::copy(test::source_root() / "shaders", root / "shaders", fs::copy_options::recursive);
+    fs::create_directories(root / "solutions");
+    fs::copy(test::source_root() / "solutions" / "lab01_gooch", root / "solutions" / "lab01_gooch", fs::copy_options::recursive);
+    fs::create_directories(root / "data");
+    fs::copy(test::source_root() / "data" / "meshes", root / "data" / "meshes", fs::copy_options::recursive);
+    return root;
+}
+
+void replace_in_file(const fs::path& file, const std::string& from, const std::string& to) {
+    std::string text = read_text(file);
+    const auto at = text.find(from);
+    REQUIRE(at != std::string::npos);
+    text.replace(at, from.size(), to);
+    std::ofstream(file) << text;
+}
+
+int line_of(const fs::path& file, const std::string& needle) {
+    std::ifstream in(file);
+    int n = 0;
+    for (std::string line; std::getline(in, line);) {
+        ++n;
+        if (line.find(needle) != std::string::npos) return n;
+    }
+    return -1;
+}
+
+}  // namespace
+
+TEST_CASE("labs: every lab but 05 runs on an OpenGL 4.1 core context and renders the same image", "[labs]") {
+    const auto dir = test::temp_dir("gl41");
+    for (const auto& lab : labs_on_gl41()) {
+        INFO(lab);
+        // The override makes Mesa report 4.1, so glad loads no 4.2+ entry point: a call to one would crash.
+        const Image at41 = must_render(test::render(lab + "_solution", {}, dir, lab + "-41", {"--gl", "4.1"},
+                                                    {"MESA_GL_VERSION_OVERRIDE=4.1", "MESA_GLSL_VERSION_OVERRIDE=410"}));
+        const Json report = read_json_file(dir / (lab + "-41.json"));
+        CHECK(report.object_at("gl").string_at("effective") == "4.1");
+        CHECK(report.object_at("gl").string_at("version").rfind("4.1", 0) == 0);
+        const Image at45 = must_render(test::render(lab + "_solution", {}, dir, lab + "-45", {"--gl", "4.5"}));
+        CHECK(compare_images(at41, at45, {}).max_channel_diff == 0);
+    }
+}
+
+TEST_CASE("labs: a context below what the lab needs stops with one clear line and status 3", "[labs]") {
+    const auto dir = test::temp_dir("gl33");
+    const auto run = test::render("lab01_solution", {}, dir, "old", {}, {"MESA_GL_VERSION_OVERRIDE=3.3"});
+    INFO(run.process.output);
+    CHECK(run.exit_code() == 3);
+    CHECK(run.process.output.find("needs OpenGL 4.1") != std::string::npos);
+    CHECK_FALSE(fs::exists(run.png));
+}
+
+TEST_CASE("lab01: core and compat profiles, EGL and OSMesa backends give the same image", "[labs]") {
+    const auto dir = test::temp_dir("profiles");
+    for (const char* name : {"gooch", "phong", "teapot", "cut-open", "per-vertex"}) {
+        INFO(name);
+        const Image core = must_render(test::render("lab01_solution", {}, dir, std::string(name) + "-core", {"--case", name}));
+        const Image compat = must_render(test::render("lab01_solution", {}, dir, std::string(name) + "-compat",
+                                                      {"--case", name, "--profile", "compat"}));
+        CHECK(compare_images(compat, core, {}).max_channel_diff == 0);
+        CHECK(read_json_file(dir / (std::string(name) + "-compat.json")).object_at("gl").string_at("profile") == "compat");
+#if GSV_HAVE_OSMESA
+        const Image osmesa = must_render(test::render("lab01_solution", {}, dir, std::string(name) + "-osmesa",
+                                                      {"--case", name, "--backend", "osmesa"}));
+        CHECK(compare_images(osmesa, core, {}).max_channel_diff == 0);
+        CHECK(read_json_file(dir / (std::string(name) + "-osmesa.json")).object_at("gl").string_at("backend") == "osmesa");
+#endif
+    }
+}
+
+TEST_CASE("lab01: the solution scores full marks against the goldens and live; the starter fails every TODO", "[labs]") {
+    // A bin folder whose "student" lab01 is the reference solution.
+    const auto bin = test::temp_dir("grade-bin");
+    fs::create_symlink(test::bin_dir() / "lab01_solution", bin / "lab01");
+    fs::create_symlink(test::bin_dir() / "lab01_solution", bin / "lab01_solution");
+    GradeOptions options;
+    options.kit_root = test::source_root();
+    options.labs = {"lab01"};
+    for (bool self_check : {true, false}) {
+        options.bin_dir = bin;
+        options.self_check = self_check;
+        options.out_dir = test::temp_dir(self_check ? "grade-golden" : "grade-live");
+        const auto results = grade(options);
+        REQUIRE(results.size() >= 8);
+        for (const auto& r : results) {
+            INFO(r.name << ": " << status_name(r.status) << " " << r.detail << "\n" << r.output);
+            CHECK(r.status == CaseStatus::Passed);
+            CHECK(r.reference == (self_check ? "golden" : "live"));
+        }
+    }
+    // The shipped starter: it builds and runs, and every TODO's check fails.
+    options.bin_dir = test::bin_dir();
+    options.self_check = false;
+    options.out_dir = test::temp_dir("grade-starter");
+    std::set<std::string> todos_failed, todos;
+    for (const auto& r : grade(options)) {
+        INFO(r.name << ": " << status_name(r.status) << " " << r.detail);
+        CHECK(r.status == CaseStatus::WrongImage);  // it ran and rendered, and the image is wrong
+        todos.insert(r.todo);
+        if (r.points == 0) todos_failed.insert(r.todo);
+    }
+    CHECK(todos_failed == todos);
+}
+
+TEST_CASE("lab01: the starter renders a clear 'not done' image: magenta where the shading is missing", "[labs]") {
+    const auto dir = test::temp_dir("starter");
+    const Image image = must_render(test::render("lab01", {}, dir, "starter"));
+    long magenta = 0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const auto* p = image.at(x, y);
+            if (p[0] > 200 && p[1] < 40 && p[2] > 200) ++magenta;
+        }
+    CHECK(magenta > image.width * image.height / 5);
+}
+
+TEST_CASE("lab01: bad command lines give one line naming the culprit and status 2", "[labs]") {
+    const auto dir = test::temp_dir("bad-cli");
+    struct Bad {
+        std::vector<std::string> args;
+        std::string says;
+    };
+    const std::vector<Bad> bad = {
+        {{"render", "--bogus"}, "unknown option '--bogus'"},
+        {{"render", "--set", "alpha=1.5"}, "parameter 'alpha' = 1.5 is out of range [0, 1]"},
+        {{"render", "--set", "mesh_resolution=2"}, "parameter 'mesh_resolution' = 2 is out of range [3, 1024]"},
+        {{"render", "--set", "shading=toon"}, "parameter 'shading' = 'toon' is not one of: phong, gooch"},
+        {{"render", "--set", "glossiness=3"}, "unknown parameter 'glossiness'"},
+        {{"render", "--set", "scale=1,2"}, "needs three comma-separated numbers"},
+        {{"render", "--case", "nope"}, "unknown case 'nope'"},
+        {{"render", "--size", "0x10"}, "--size = 0 is out of range"},
+        {{"render", "--profile", "es"}, "unknown profile 'es'"},
+        {{"paint"}, "unknown mode 'paint'"},
+    };
+    for (const auto& b : bad) {
+        const auto run = test::run_lab("lab01_solution", b.args, dir);
+        INFO(run.process.output);
+        CHECK(run.exit_code() == 2);
+        const auto lines = test::lines_of(run.process.output);
+        REQUIRE(lines.size() == 1);
+        CHECK(lines[0].find(b.says) != std::string::npos);
+    }
+    CHECK(fs::is_empty(dir));  // nothing written
+}
+
+TEST_CASE("lab01: a missing shader, a compile error, a missing or corrupt mesh: clear error, status 1", "[labs]") {
+    {
+        const auto root = copy_of_lab01("missing-shader");
+        fs::remove(root / "solutions" / "lab01_gooch" / "shade.frag");
+        const auto run = test::render("lab01_solution", {}, root, "x", {}, {"GSV_ROOT=" + root.string()});
+        INFO(run.process.output);
+        CHECK(run.exit_code() == 1);
+        CHECK(run.process.output.find("shade.frag") != std::string::npos);
+        CHECK_FALSE(fs::exists(run.png));
+    }
+    {
+        const auto root = copy_of_lab01("compile-error");
+        const fs::path phong = root / "solutions" / "lab01_gooch" / "phong.glsl";
+        replace_in_file(phong, "vec3 r = reflect(-l, n);", "vec3 r = reflect(-l, n) +;");
+        const int line = line_of(phong, "vec3 r = reflect(-l, n) +;");
+        const auto run = test::render("lab01_solution", {}, root, "x", {}, {"GSV_ROOT=" + root.string()});
+        INFO(run.process.output);
+        CHECK(run.exit_code() == 1);
+        CHECK(run.process.output.find("shader compile error") != std::string::npos);
+        CHECK(run.process.output.find("phong.glsl:" + std::to_string(line) + ":") != std::string::npos);
+        CHECK(run.process.output.find("vec3 r = reflect(-l, n) +;") != std::string::npos);  // the source line
+    }
+    {
+        const auto root = copy_of_lab01("missing-mesh");
+        fs::remove(root / "data" / "meshes" / "teapot.obj");
+        const auto run = test::render("lab01_solution", {}, root, "x", {}, {"GSV_ROOT=" + root.string()});
+        INFO(run.process.output);
+        CHECK(run.exit_code() == 1);
+        CHECK(run.process.output.find("teapot.obj") != std::string::npos);
+    }
+    {
+        const auto root = copy_of_lab01("corrupt-mesh");
+        std::ofstream(root / "data" / "meshes" / "teapot.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 zero\nf 1 2 3\n";
+        const auto run = test::render("lab01_solution", {}, root, "x", {}, {"GSV_ROOT=" + root.string()});
+        INFO(run.process.output);
+        CHECK(run.exit_code() == 1);
+        CHECK(run.process.output.find("teapot.obj:3") != std::string::npos);
+    }
+}
+
+TEST_CASE("lab01: assets are found from any working directory, never through it", "[labs]") {
+    const auto elsewhere = test::temp_dir("cwd");
+    const auto run = test::render("lab01_solution", {"model=teapot"}, elsewhere, "teapot");
+    INFO(run.process.output);
+    CHECK(run.exit_code() == 0);
+}
+
+TEST_CASE("lab01: sweep mode writes the accuracy-vs-time table, CSV and plot", "[labs]") {
+    const auto dir = test::temp_dir("sweep");
+    const auto run = test::run_lab("lab01_solution",
+                                   {"sweep", "--size", "128x128", "--frames", "1", "--warmup", "0", "--out-dir", dir.string()},
+                                   dir);
+    INFO(run.process.output);
+    REQUIRE(run.exit_code() == 0);
+    const std::string csv = read_text(dir / "lab01-sweep.csv");
+    const auto rows = test::lines_of(csv);
+    REQUIRE(rows.size() == 1 + 2 * 10);  // header, 2 shading rates x 10 resolutions
+    CHECK(rows[0] == "shading_rate,mesh_resolution,median_ms,min_ms,rmse,max_diff,normal_err_mean_deg,normal_err_max_deg");
+    auto column = [&](const std::string& row, int k) {
+        std::stringstream s(row);
+        std::string cell;
+        for (int i = 0; i <= k; ++i) std::getline(s, cell, ',');
+        return std::stod(cell);
+    };
+    // Per fragment, the error against the converged reference falls as the mesh is refined...
+    const std::string coarse = rows[11], fine = rows[20];
+    REQUIRE(coarse.rfind("fragment,6,", 0) == 0);
+    REQUIRE(fine.rfind("fragment,512,", 0) == 0);
+    CHECK(column(fine, 4) < 0.25 * column(coarse, 4));
+    // ...and the normal error shrinks with the segment angle (about 360/6/2 degrees at 6 segments).
+    CHECK(column(coarse, 7) > 5.0);
+    CHECK(column(fine, 7) < 0.5);
+    // Where the outline has converged (128 segments), lighting per vertex still errs where per fragment does not.
+    REQUIRE(rows[8].rfind("vertex,128,", 0) == 0);
+    REQUIRE(rows[18].rfind("fragment,128,", 0) == 0);
+    CHECK(column(rows[8], 4) > 1.5 * column(rows[18], 4));
+    CHECK(fs::exists(dir / "lab01-sweep.gp"));
+    if (std::system("command -v gnuplot >/dev/null 2>&1") == 0) CHECK(fs::file_size(dir / "lab01-sweep.png") > 1000);
+}
