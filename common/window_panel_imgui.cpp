@@ -35,11 +35,15 @@ public:
         ImGui::NewFrame();
         bool changed = false;
         ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-        ImGui::SetNextWindowBgAlpha(0.75f);
+        ImGui::SetNextWindowBgAlpha(0.55f);
+        ImGui::SetNextWindowCollapsed(false, ImGuiCond_FirstUseEver);
+        // Narrow and translucent: the lab's image is what the room is looking at.
         ImGui::Begin(state.heading.c_str(), nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+        ImGui::SetWindowFontScale(0.85f);
+        ImGui::PushItemWidth(110.0f);
         ImGui::Text("%.2f ms render (glFinish), %.1f fps", state.render_ms,
                     state.frame_ms > 0 ? 1000.0 / state.frame_ms : 0.0);
-        ImGui::TextDisabled("%s", state.gl.c_str());
+        ImGui::TextDisabled("%s", state.gl.substr(0, state.gl.find(',')).c_str());
         ImGui::Separator();
         Params& params = state.params;
         int index = 0;
@@ -106,7 +110,8 @@ public:
             ImGui::TextWrapped("%s", state.status.c_str());
             ImGui::PopStyleColor();
         }
-        ImGui::TextDisabled("H: keys   S: screenshot   P: print command line");
+        ImGui::TextDisabled("H: keys  S: screenshot  P: command line");
+        ImGui::PopItemWidth();
         ImGui::End();
         ImGui::Render();
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
