@@ -8,6 +8,7 @@
 #include <string>
 
 #include "catch.hpp"
+#include "test_support.h"
 #include "common/error.h"
 #include "common/image.h"
 #include "common/image_compare.h"
@@ -16,29 +17,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A fresh directory under the system temp dir, removed with everything in it when the test ends.
-struct TempDir {
-    fs::path path;
-    TempDir() {
-        std::random_device entropy;
-        path = fs::temp_directory_path() / ("gsv_test_image_" + std::to_string(entropy()));
-        fs::create_directories(path);
-    }
-    ~TempDir() {
-        std::error_code ignored;
-        fs::remove_all(path, ignored);
-    }
-};
 
-template <typename Action>
-std::string gsv_error_message(Action&& action) {
-    try {
-        action();
-    } catch (const gsv::Error& e) {
-        return e.what();
-    }
-    return "<no gsv::Error thrown>";
-}
 
 bool contains(const std::string& text, const std::string& part) {
     return text.find(part) != std::string::npos;
@@ -120,8 +99,8 @@ TEST_CASE("image: a new image is transparent black and at() addresses rows from 
 }
 
 TEST_CASE("image: PNG round trip keeps every RGBA byte and creates parent directories") {
-    TempDir dir;
-    const fs::path file = dir.path / "nested" / "deeper" / "gradient.png";
+    gsv::test::TempDir dir;
+    const fs::path file = dir.path() / "nested" / "deeper" / "gradient.png";
     const gsv::Image original = gradient(37, 23);
     gsv::write_png(file, original);
     REQUIRE(fs::exists(file));
@@ -132,41 +111,41 @@ TEST_CASE("image: PNG round trip keeps every RGBA byte and creates parent direct
 }
 
 TEST_CASE("image: reading a missing PNG is a gsv::Error naming the path") {
-    TempDir dir;
-    const fs::path missing = dir.path / "no_such_file.png";
-    const std::string message = gsv_error_message([&] { gsv::read_png(missing); });
+    gsv::test::TempDir dir;
+    const fs::path missing = dir.path() / "no_such_file.png";
+    const std::string message = gsv::test::gsv_error_message([&] { gsv::read_png(missing); });
     CHECK(contains(message, "cannot read PNG '" + missing.string() + "'"));
     CHECK(!contains(message, "\n"));
 }
 
 TEST_CASE("image: reading a truncated or corrupt PNG is a gsv::Error naming the path") {
-    TempDir dir;
-    const fs::path truncated = dir.path / "truncated.png";
+    gsv::test::TempDir dir;
+    const fs::path truncated = dir.path() / "truncated.png";
     gsv::write_png(truncated, gradient(64, 64));
     fs::resize_file(truncated, fs::file_size(truncated) / 2);
-    std::string message = gsv_error_message([&] { gsv::read_png(truncated); });
+    std::string message = gsv::test::gsv_error_message([&] { gsv::read_png(truncated); });
     CHECK(contains(message, "cannot read PNG '" + truncated.string() + "': "));
 
-    const fs::path garbage = dir.path / "garbage.png";
+    const fs::path garbage = dir.path() / "garbage.png";
     std::ofstream(garbage) << "this is not a PNG file";
-    message = gsv_error_message([&] { gsv::read_png(garbage); });
+    message = gsv::test::gsv_error_message([&] { gsv::read_png(garbage); });
     CHECK(contains(message, "cannot read PNG '" + garbage.string() + "': "));
 
-    const fs::path empty = dir.path / "empty.png";
+    const fs::path empty = dir.path() / "empty.png";
     std::ofstream{empty};
-    message = gsv_error_message([&] { gsv::read_png(empty); });
+    message = gsv::test::gsv_error_message([&] { gsv::read_png(empty); });
     CHECK(contains(message, "cannot read PNG '" + empty.string() + "': "));
 }
 
 TEST_CASE("image: writing where a directory cannot be made is a gsv::Error naming the path") {
-    TempDir dir;
-    const fs::path blocker = dir.path / "a_file";
+    gsv::test::TempDir dir;
+    const fs::path blocker = dir.path() / "a_file";
     std::ofstream(blocker) << "x";
     const fs::path target = blocker / "out.png";
-    const std::string message = gsv_error_message([&] { gsv::write_png(target, gradient(2, 2)); });
+    const std::string message = gsv::test::gsv_error_message([&] { gsv::write_png(target, gradient(2, 2)); });
     CHECK(contains(message, "cannot write PNG '" + target.string() + "'"));
 
-    CHECK(contains(gsv_error_message([&] { gsv::write_png(dir.path / "e.png", gsv::Image()); }),
+    CHECK(contains(gsv::test::gsv_error_message([&] { gsv::write_png(dir.path() / "e.png", gsv::Image()); }),
                    "e.png"));
 }
 

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "catch.hpp"
+#include "test_support.h"
 #include "common/error.h"
 #include "common/json.h"
 
@@ -13,18 +14,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-template <typename Action>
-std::string gsv_error_message(Action&& action) {
-    try {
-        action();
-    } catch (const gsv::Error& e) {
-        return e.what();
-    }
-    return "<no gsv::Error thrown>";
-}
 
 std::string parse_error(const std::string& text) {
-    return gsv_error_message([&] { gsv::parse_json(text, "t.json"); });
+    return gsv::test::gsv_error_message([&] { gsv::parse_json(text, "t.json"); });
 }
 
 }  // namespace
@@ -183,25 +175,25 @@ TEST_CASE("json: required members report the key path and position") {
     CHECK(tolerance.line() == 3);
     CHECK(tolerance.column() == 16);
 
-    CHECK(gsv_error_message([&] { tolerance.number_at("max_channel_diff"); }) ==
+    CHECK(gsv::test::gsv_error_message([&] { tolerance.number_at("max_channel_diff"); }) ==
           "cases.json:3:37: 'tolerance.max_channel_diff' must be a number, not a string");
-    CHECK(gsv_error_message([&] { tolerance.number_at("max_differing_fraction"); }) ==
+    CHECK(gsv::test::gsv_error_message([&] { tolerance.number_at("max_differing_fraction"); }) ==
           "cases.json:3:16: 'tolerance.max_differing_fraction' is missing; it must be a number");
-    CHECK(gsv_error_message([&] { tolerance.int_at("budget"); }) ==
+    CHECK(gsv::test::gsv_error_message([&] { tolerance.int_at("budget"); }) ==
           "cases.json:3:52: 'tolerance.budget' must be an integer, not 2.5");
-    CHECK(gsv_error_message([&] { root.string_at("tolerance"); }) ==
+    CHECK(gsv::test::gsv_error_message([&] { root.string_at("tolerance"); }) ==
           "cases.json:3:16: 'tolerance' must be a string, not an object");
-    CHECK(gsv_error_message([&] { root.array_at("cases").at(1).string_at("name"); }) ==
+    CHECK(gsv::test::gsv_error_message([&] { root.array_at("cases").at(1).string_at("name"); }) ==
           "cases.json:4:28: 'cases[1].name' is missing; it must be a string");
-    CHECK(gsv_error_message([&] { root.array_at("cases").at(1).bool_at("size"); }) ==
+    CHECK(gsv::test::gsv_error_message([&] { root.array_at("cases").at(1).bool_at("size"); }) ==
           "cases.json:4:37: 'cases[1].size' must be a boolean, not a number");
-    CHECK(gsv_error_message([&] { root.array_at("cases").at(2); }) ==
+    CHECK(gsv::test::gsv_error_message([&] { root.array_at("cases").at(2); }) ==
           "cases.json:4:12: 'cases' has 2 elements; index 2 is out of range");
-    CHECK(gsv_error_message([&] { root.find("name")->as_number(); }) ==
+    CHECK(gsv::test::gsv_error_message([&] { root.find("name")->as_number(); }) ==
           "cases.json:2:11: 'name' must be a number, not a string");
-    CHECK(gsv_error_message([&] { gsv::parse_json("[1]", "top.json").number_at("x"); }) ==
+    CHECK(gsv::test::gsv_error_message([&] { gsv::parse_json("[1]", "top.json").number_at("x"); }) ==
           "top.json:1:1: the top-level value must be an object, not an array");
-    CHECK(gsv_error_message([&] { root.member_at("absent"); }) == "cases.json:1:1: 'absent' is missing");
+    CHECK(gsv::test::gsv_error_message([&] { root.member_at("absent"); }) == "cases.json:1:1: 'absent' is missing");
 
     CHECK(root.array_at("cases").at(0).string_at("name") == "a");
     CHECK(root.array_at("cases").at(1).int_at("size") == 3);
@@ -215,7 +207,7 @@ TEST_CASE("json: optional members fall back only when absent or null") {
     CHECK(root.string_or("s", "d") == "x");
     CHECK(root.string_or("missing", "d") == "d");
     CHECK(root.bool_or("b", false));
-    CHECK(gsv_error_message([&] { root.bool_or("s", false); }) ==
+    CHECK(gsv::test::gsv_error_message([&] { root.bool_or("s", false); }) ==
           "o.json:1:15: 's' must be a boolean, not a string");
 }
 
@@ -223,11 +215,11 @@ TEST_CASE("json: values built in code report errors without a position") {
     gsv::Json built;
     built["size"] = "big";
     CHECK(built.source_name().empty());
-    CHECK(gsv_error_message([&] { built.number_at("size"); }) == "'size' must be a number, not a string");
+    CHECK(gsv::test::gsv_error_message([&] { built.number_at("size"); }) == "'size' must be a number, not a string");
     gsv::Json list = gsv::Json::array();
-    CHECK(gsv_error_message([&] { list["key"]; }) == "the top-level value must be an object, not an array");
+    CHECK(gsv::test::gsv_error_message([&] { list["key"]; }) == "the top-level value must be an object, not an array");
     gsv::Json text = "word";
-    CHECK(gsv_error_message([&] { text.push_back(1); }) == "the top-level value must be an array, not a string");
+    CHECK(gsv::test::gsv_error_message([&] { text.push_back(1); }) == "the top-level value must be an array, not a string");
 }
 
 TEST_CASE("json: equality ignores object key order but not array order") {
@@ -243,12 +235,12 @@ TEST_CASE("json: read_json_file names a missing file and uses the path as source
     const fs::path dir = fs::temp_directory_path() / ("gsv_test_json_" + std::to_string(entropy()));
     fs::create_directories(dir);
     const fs::path missing = dir / "missing.json";
-    CHECK(gsv_error_message([&] { gsv::read_json_file(missing); }) ==
+    CHECK(gsv::test::gsv_error_message([&] { gsv::read_json_file(missing); }) ==
           "cannot read JSON file '" + missing.string() + "': no such file");
 
     const fs::path file = dir / "bad.json";
     std::ofstream(file) << "{\n  \"a\": [1, 2,, 3]\n}\n";
-    CHECK(gsv_error_message([&] { gsv::read_json_file(file); }) ==
+    CHECK(gsv::test::gsv_error_message([&] { gsv::read_json_file(file); }) ==
           file.string() + ":2:14: expected a JSON value, found ','");
 
     const fs::path good = dir / "good.json";

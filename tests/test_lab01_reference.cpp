@@ -9,6 +9,7 @@
 // gooch.glsl. At mesh_resolution=512 the tessellation is far below 8-bit precision, so the two must
 // agree to a few levels wherever a pixel is well inside the sphere's outline.
 #include "catch.hpp"
+#include "test_support.h"
 
 #include "common/image.h"
 #include "common/json.h"
@@ -49,27 +50,7 @@ const dvec3 kClearColor(0.32, 0.33, 0.36);  // lab.cpp's glClearColor
 // ---------------------------------------------------------------------------------------------
 // Running the lab
 
-// A fresh folder per render, removed with everything in it afterwards.
-class TempDir {
-public:
-    TempDir() {
-        static std::atomic<int> counter{0};
-        const auto stamp = std::chrono::steady_clock::now().time_since_epoch().count();
-        path_ = fs::temp_directory_path() /
-                ("gsv_lab01_reference_" + std::to_string(stamp) + "_" + std::to_string(counter++));
-        fs::create_directories(path_);
-    }
-    ~TempDir() {
-        std::error_code ignored;
-        fs::remove_all(path_, ignored);
-    }
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
-    const fs::path& path() const { return path_; }
-
-private:
-    fs::path path_;
-};
+using gsv::test::TempDir;
 
 std::string shell_quote(const std::string& text) {
     std::string out = "'";

@@ -1,4 +1,5 @@
 #include "catch.hpp"
+#include "test_support.h"
 
 #include "common/error.h"
 #include "common/shader_source.h"
@@ -19,34 +20,8 @@ using gsv::ShaderStage;
 
 namespace {
 
-// Each test gets its own folder so parallel ctest runs cannot see each other's files.
-class TempDir {
-public:
-    TempDir() {
-        static std::atomic<int> counter{0};
-        const auto stamp = std::chrono::steady_clock::now().time_since_epoch().count();
-        root_ = fs::temp_directory_path() /
-                ("gsv_shader_source_" + std::to_string(stamp) + "_" + std::to_string(counter++));
-        fs::create_directories(root_);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(root_, ec);
-    }
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
+using gsv::test::TempDir;
 
-    fs::path write(const fs::path& relative, const std::string& content) const {
-        const fs::path path = root_ / relative;
-        fs::create_directories(path.parent_path());
-        std::ofstream(path, std::ios::binary) << content;
-        return path;
-    }
-    fs::path path(const fs::path& relative = {}) const { return (root_ / relative).lexically_normal(); }
-
-private:
-    fs::path root_;
-};
 
 PreprocessOptions bare_options(GlVersion version = {4, 1}, Profile profile = Profile::Core) {
     PreprocessOptions options;

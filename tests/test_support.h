@@ -1,0 +1,57 @@
+#pragma once
+// Small helpers the test files share.
+#include "common/error.h"
+
+#include <atomic>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace gsv::test {
+
+// A fresh folder per test, removed with everything in it afterwards; unique even when ctest runs test
+// cases in parallel processes.
+class TempDir {
+public:
+    TempDir() {
+        static std::atomic<int> counter{0};
+        const auto stamp = std::chrono::steady_clock::now().time_since_epoch().count();
+        root_ = std::filesystem::temp_directory_path() /
+                ("gsv_test_" + std::to_string(stamp) + "_" + std::to_string(counter++));
+        std::filesystem::create_directories(root_);
+    }
+    ~TempDir() {
+        std::error_code ignored;
+        std::filesystem::remove_all(root_, ignored);
+    }
+    TempDir(const TempDir&) = delete;
+    TempDir& operator=(const TempDir&) = delete;
+
+    std::filesystem::path path(const std::filesystem::path& relative = {}) const {
+        return (root_ / relative).lexically_normal();
+    }
+    // Writes `content` to a file in the folder (creating subfolders) and returns its path.
+    std::filesystem::path write(const std::filesystem::path& relative, const std::string& content) const {
+        const std::filesystem::path file = root_ / relative;
+        std::filesystem::create_directories(file.parent_path());
+        std::ofstream(file, std::ios::binary) << content;
+        return file;
+    }
+
+private:
+    std::filesystem::path root_;
+};
+
+// The message of the gsv::Error that `action` throws.
+template <typename Action>
+std::string gsv_error_message(Action&& action) {
+    try {
+        action();
+    } catch (const gsv::Error& e) {
+        return e.what();
+    }
+    return "<no gsv::Error thrown>";
+}
+
+}  // namespace gsv::test
