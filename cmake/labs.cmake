@@ -21,6 +21,7 @@ function(gsv_add_lab id dir)
     set_target_properties(${target} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bin)
   endforeach()
   set(GSV_LABS ${GSV_LABS} ${id} CACHE INTERNAL "")
+  set(GSV_LAB_DIR_${id} ${dir} CACHE INTERNAL "")
 endfunction()
 
 gsv_add_lab(lab01 lab01_gooch)

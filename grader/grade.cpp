@@ -80,8 +80,8 @@ std::vector<CaseResult> grade(const GradeOptions& options, void (*progress)(cons
         if (!options.labs.empty() &&
             std::find(options.labs.begin(), options.labs.end(), lab.lab) == options.labs.end())
             continue;
-        const fs::path student = options.bin_dir / lab.lab;
-        const fs::path solution = options.bin_dir / (lab.lab + "_solution");
+        const fs::path student = fs::absolute(options.bin_dir) / lab.lab;
+        const fs::path solution = fs::absolute(options.bin_dir) / (lab.lab + "_solution");
         const bool live = !options.self_check && fs::exists(solution);
         ProcessLimits limits;
         limits.timeout = std::chrono::milliseconds(static_cast<long>(lab.timeout_s * 1000));
@@ -92,9 +92,10 @@ std::vector<CaseResult> grade(const GradeOptions& options, void (*progress)(cons
             r.todo = c.todo;
             r.visibility = c.visibility;
             r.max_points = c.points;
-            const fs::path dir = options.out_dir / lab.lab / c.name;
+            // Absolute: each lab process runs inside this folder, so a relative --out would nest twice.
+            const fs::path dir = fs::absolute(options.out_dir) / lab.lab / c.name;
             fs::create_directories(dir);
-            const fs::path golden = options.kit_root / "grader" / "golden" / lab.lab / (c.name + ".png");
+            const fs::path golden = fs::absolute(options.kit_root) / "grader" / "golden" / lab.lab / (c.name + ".png");
             const fs::path expected_png = dir / "expected.png";
             if (options.update_goldens) {
                 const ProcessResult ref = run_process(render_command(solution, lab, c, golden), dir, limits);
