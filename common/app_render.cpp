@@ -47,7 +47,6 @@ Json timing_json(const TimingStats& t, int warmup) {
 
 int run_render(Session& s) {
     const Backend backend = s.options.backend.value_or(Backend::Egl);
-    s.options.width = std::max(s.options.width, 1);
     s.open(backend);
     if (auto error = s.sync_params()) throw Error(*error);
 

@@ -34,6 +34,4 @@ std::unique_ptr<WindowPanel> make_window_panel(GLFWwindow* window, GlVersion) {
 }
 #endif
 
-std::unique_ptr<WindowPanel> make_title_panel(GLFWwindow* window) { return std::make_unique<TitlePanel>(window); }
-
 }  // namespace gsv
