@@ -1,6 +1,6 @@
 #pragma once
 // Frame timing that is honest on a software rasterizer: each frame is bracketed by glFinish and timed
-// with a steady clock (GL_TIME_ELAPSED queries do not see llvmpipe's rasterization), after a warm-up,
+// with a steady clock (GL timer queries do not see llvmpipe's rasterization), after a warm-up,
 // and summarised by the median.
 #include <functional>
 #include <vector>
