@@ -84,7 +84,8 @@ std::vector<CaseResult> grade(const GradeOptions& options, void (*progress)(cons
         const fs::path solution = fs::absolute(options.bin_dir) / (lab.lab + "_solution");
         const bool live = !options.self_check && fs::exists(solution);
         ProcessLimits limits;
-        limits.timeout = std::chrono::milliseconds(static_cast<long>(lab.timeout_s * 1000));
+        const double timeout_s = options.timeout_s > 0 ? options.timeout_s : lab.timeout_s;
+        limits.timeout = std::chrono::milliseconds(static_cast<long>(timeout_s * 1000));
         for (const auto& c : lab.cases) {
             CaseResult r;
             r.lab = lab.lab;

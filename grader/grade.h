@@ -31,6 +31,7 @@ struct GradeOptions {
     std::vector<std::string> labs;      // empty: every lab with a case file
     bool self_check = false;            // never use a live reference, even when present
     bool update_goldens = false;        // render the references into grader/golden instead of grading
+    double timeout_s = 0;               // per-process limit; 0: the case file's timeout_s
 };
 
 std::vector<CaseResult> grade(const GradeOptions& options, void (*progress)(const CaseResult&) = nullptr);
