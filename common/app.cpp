@@ -130,6 +130,7 @@ int run_lab(std::unique_ptr<Lab> lab, const char* lab_dir, const char* variant, 
         session.info = session.lab->info();
         session.variant = variant;
         session.lab->declare(session.params, session.cases);
+        session.defaults = session.params;
         try {
             session.options = parse_cli(argc, argv);
             session.apply_command_line_settings();

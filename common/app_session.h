@@ -17,6 +17,7 @@ struct Session {
     std::string variant;  // "starter" or "solution"
     CliOptions options;
     Params params;
+    Params defaults;  // as the lab declared them, before any case or --set
     std::vector<RenderCase> cases;
     std::unique_ptr<Assets> assets;
     std::unique_ptr<Context> context;

@@ -45,13 +45,10 @@ void adjust(Params& params, const std::string& name, double delta) {
 }
 
 std::string command_line(const Session& s) {
-    Params defaults;
-    std::vector<RenderCase> ignored;
-    s.lab->declare(defaults, ignored);
     std::string line = s.info.id + (s.variant == "solution" ? "_solution" : "") + " render";
     for (const auto& spec : s.params.specs()) {
         const std::string value = s.params.get_text(spec.name);
-        if (value != defaults.get_text(spec.name)) line += " --set " + spec.name + "=" + value;
+        if (value != s.defaults.get_text(spec.name)) line += " --set " + spec.name + "=" + value;
     }
     return line;
 }
@@ -85,14 +82,10 @@ void on_key(GLFWwindow* window, int key, int, int action, int mods) {
             std::printf("case %s\n", s.cases[static_cast<std::size_t>(in->case_index)].name.c_str());
         }
         break;
-    case GLFW_KEY_D: {
-        std::vector<RenderCase> ignored;
-        Params defaults;
-        s.lab->declare(defaults, ignored);
-        params = defaults;
+    case GLFW_KEY_D:
+        params = s.defaults;
         in->params_changed = true;
         break;
-    }
     case GLFW_KEY_R: in->reload = true; break;
     case GLFW_KEY_S: in->screenshot = true; break;
     case GLFW_KEY_P: std::printf("%s\n", command_line(s).c_str()); break;

@@ -75,6 +75,10 @@ const char* status_name(CaseStatus status) {
 
 std::vector<CaseResult> grade(const GradeOptions& options, void (*progress)(const CaseResult&)) {
     std::vector<CaseResult> results;
+    auto record = [&](const CaseResult& r) {
+        results.push_back(r);
+        if (progress) progress(r);
+    };
     for (const auto& file : case_files(options.kit_root)) {
         const LabCases lab = load_lab_cases(file);
         if (!options.labs.empty() &&
@@ -104,8 +108,7 @@ std::vector<CaseResult> grade(const GradeOptions& options, void (*progress)(cons
                 r.status = classify(ref, detail);
                 r.detail = r.status == CaseStatus::Passed ? "wrote " + golden.string() : detail;
                 r.output = ref.output;
-                results.push_back(r);
-                if (progress) progress(r);
+                record(r);
                 continue;
             }
             if (live) {
@@ -116,8 +119,7 @@ std::vector<CaseResult> grade(const GradeOptions& options, void (*progress)(cons
                     r.status = CaseStatus::ReferenceFailed;
                     r.detail = "the reference solution failed: " + detail;
                     r.output = ref.output;
-                    results.push_back(r);
-                    if (progress) progress(r);
+                    record(r);
                     continue;
                 }
             } else {
@@ -125,8 +127,7 @@ std::vector<CaseResult> grade(const GradeOptions& options, void (*progress)(cons
                 if (!fs::exists(golden)) {
                     r.status = CaseStatus::ReferenceFailed;
                     r.detail = "no golden image " + golden.string();
-                    results.push_back(r);
-                    if (progress) progress(r);
+                    record(r);
                     continue;
                 }
                 fs::copy_file(golden, expected_png, fs::copy_options::overwrite_existing);
@@ -165,8 +166,7 @@ std::vector<CaseResult> grade(const GradeOptions& options, void (*progress)(cons
                     }
                 }
             }
-            results.push_back(r);
-            if (progress) progress(r);
+            record(r);
         }
     }
     return results;

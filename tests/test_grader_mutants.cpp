@@ -19,12 +19,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string read_text(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
 // A kit whose labs/<lab_dir> is the solution with one edit; GSV_ROOT points both binaries at it, so the
 // "student" lab reads the edited shaders and the reference reads the untouched solution.
@@ -39,7 +33,7 @@ public:
         fs::copy(test::source_root() / "solutions" / lab_dir, root / "solutions" / lab_dir, fs::copy_options::recursive);
         fs::copy(test::source_root() / "solutions" / lab_dir, root / "labs" / lab_dir, fs::copy_options::recursive);
         const fs::path file = root / "labs" / lab_dir / edit.string_at("file");
-        std::string text = read_text(file);
+        std::string text = test::read_text(file);
         const std::string find = edit.string_at("find");
         const auto at = text.find(find);
         if (at == std::string::npos) FAIL("mutant '" << edit.string_at("name") << "': '" << find << "' not found in " << file);

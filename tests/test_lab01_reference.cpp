@@ -58,10 +58,6 @@ std::string shell_quote(const std::string& text) {
     return out + "'";
 }
 
-std::string read_text(const fs::path& path) {
-    std::ifstream in(path);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
 
 struct Render {
     gsv::Image image;
@@ -91,7 +87,7 @@ Render render_solution(const std::vector<std::string>& overrides) {
                               : exit_code == 1 ? " (error)"
                                                : "";
         FAIL("lab01_solution exited with status " << exit_code << meaning << "\ncommand: " << command
-                                                  << "\noutput:\n" << read_text(log));
+                                                  << "\noutput:\n" << gsv::test::read_text(log));
     }
     Render r;
     r.image = gsv::read_png(png);

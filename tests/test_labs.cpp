@@ -1,5 +1,6 @@
 // Every lab binary, run as students, lecturers, CI and the grader run it.
 #include "catch.hpp"
+#include "test_support.h"
 #include "gl_fixture.h"
 #include "lab_runner.h"
 
@@ -30,12 +31,6 @@ Image must_render(const test::LabRun& run) {
     return read_png(run.png);
 }
 
-std::string read_text(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
 // A copy of the files lab01_solution loads, to break on purpose (GSV_ROOT points the binary at it).
 fs::path copy_of_lab01(const std::string& name) {
@@ -49,7 +44,7 @@ fs::path copy_of_lab01(const std::string& name) {
 }
 
 void replace_in_file(const fs::path& file, const std::string& from, const std::string& to) {
-    std::string text = read_text(file);
+    std::string text = test::read_text(file);
     const auto at = text.find(from);
     REQUIRE(at != std::string::npos);
     text.replace(at, from.size(), to);
@@ -242,7 +237,7 @@ TEST_CASE("lab01: sweep mode writes the accuracy-vs-time table, CSV and plot", "
                                    dir);
     INFO(run.process.output);
     REQUIRE(run.exit_code() == 0);
-    const std::string csv = read_text(dir / "lab01-sweep.csv");
+    const std::string csv = test::read_text(dir / "lab01-sweep.csv");
     const auto rows = test::lines_of(csv);
     REQUIRE(rows.size() == 1 + 2 * 10);  // header, 2 shading rates x 10 resolutions
     CHECK(rows[0] == "shading_rate,mesh_resolution,median_ms,min_ms,rmse,max_diff,normal_err_mean_deg,normal_err_max_deg");

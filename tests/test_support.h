@@ -6,6 +6,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 namespace gsv::test {
@@ -42,6 +43,11 @@ public:
 private:
     std::filesystem::path root_;
 };
+
+inline std::string read_text(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
 
 // The message of the gsv::Error that `action` throws.
 template <typename Action>
