@@ -2,6 +2,7 @@
 
 #include "common/error.h"
 #include "common/json.h"
+#include "grader/draw.h"
 
 #include <algorithm>
 #include <regex>
@@ -18,37 +19,79 @@ ImageTolerance tolerance_from(const Json& j) {
     return t;
 }
 
+void parse_size(const std::string& size, const std::string& file, int& width, int& height) {
+    static const std::regex size_pattern(R"(^([0-9]{1,4})x([0-9]{1,4})$)");
+    std::smatch m;
+    if (!std::regex_match(size, m, size_pattern) || std::stoi(m[1]) < 1 || std::stoi(m[2]) < 1)
+        throw Error(file + ": a size must be WIDTHxHEIGHT, got '" + size + "'");
+    width = std::stoi(m[1]);
+    height = std::stoi(m[2]);
+}
+
+GradeCase case_from(const Json& c, const std::string& file) {
+    static const std::regex name_pattern(R"(^[a-z0-9][a-z0-9-]{0,40}$)");
+    static const std::regex todo_pattern(R"(^L[0-9]{2}-T[0-9]+$)");
+    GradeCase gc;
+    gc.name = c.string_at("name");
+    if (!std::regex_match(gc.name, name_pattern))
+        throw Error(file + ": case name '" + gc.name + "' must be lower-case letters, digits and '-' (it names a folder)");
+    gc.todo = c.string_at("todo");
+    if (!std::regex_match(gc.todo, todo_pattern))
+        throw Error(file + ": case '" + gc.name + "' has todo '" + gc.todo + "', expected an id like L01-T2");
+    gc.description = c.string_or("description", "");
+    gc.points = c.number_or("points", 1);
+    if (gc.points < 0) throw Error(file + ": case '" + gc.name + "' has negative points");
+    for (const Json& s : c.array_at("settings").as_array()) gc.settings.push_back(s.as_string());
+    if (const Json* timing = c.find("timing")) {
+        gc.timing.points = timing->number_at("points");
+        gc.timing.max_ratio = timing->number_or("max_ratio", 2);
+        if (gc.timing.points < 0 || gc.timing.max_ratio < 1)
+            throw Error(file + ": case '" + gc.name + "': timing needs points >= 0 and max_ratio >= 1");
+    }
+    return gc;
+}
+
 }  // namespace
 
 LabCases load_lab_cases(const std::filesystem::path& file) {
     const Json root = read_json_file(file);
     LabCases lab;
     lab.lab = root.string_at("lab");
-    const std::string size = root.string_at("size");
-    static const std::regex size_pattern(R"(^([0-9]{1,4})x([0-9]{1,4})$)");
-    std::smatch m;
-    if (!std::regex_match(size, m, size_pattern)) throw Error(file.string() + ": 'size' must be WIDTHxHEIGHT, got '" + size + "'");
-    lab.width = std::stoi(m[1]);
-    lab.height = std::stoi(m[2]);
+    parse_size(root.string_at("size"), file.string(), lab.width, lab.height);
     const Json& tolerance = root.object_at("tolerance");
     lab.live_tolerance = tolerance_from(tolerance.object_at("live"));
     lab.golden_tolerance = tolerance_from(tolerance.object_at("golden"));
     lab.timeout_s = root.number_or("timeout_s", 60);
-    static const std::regex todo_pattern(R"(^L[0-9]{2}-T[0-9]+$)");
-    for (const Json& c : root.array_at("cases").as_array()) {
-        GradeCase gc;
-        gc.name = c.string_at("name");
-        gc.todo = c.string_at("todo");
-        if (!std::regex_match(gc.todo, todo_pattern))
-            throw Error(file.string() + ": case '" + gc.name + "' has todo '" + gc.todo + "', expected an id like L01-T2");
-        gc.description = c.string_or("description", "");
-        gc.visibility = c.string_or("visibility", "public");
-        gc.points = c.number_or("points", 1);
-        for (const Json& s : c.array_at("settings").as_array()) gc.settings.push_back(s.as_string());
-        lab.cases.push_back(gc);
+    if (const Json* timing = root.find("timing")) {
+        if (timing->contains("size")) parse_size(timing->string_at("size"), file.string(), lab.timing_width, lab.timing_height);
+        lab.timing_frames = timing->int_or("frames", lab.timing_frames);
+        lab.timing_warmup = timing->int_or("warmup", lab.timing_warmup);
+        lab.timing_rounds = timing->int_or("rounds", lab.timing_rounds);
+        if (lab.timing_frames < 1 || lab.timing_warmup < 0 || lab.timing_rounds < 1)
+            throw Error(file.string() + ": timing needs frames >= 1, warmup >= 0, rounds >= 1");
     }
+    for (const Json& c : root.array_at("cases").as_array()) lab.cases.push_back(case_from(c, file.string()));
     if (lab.cases.empty()) throw Error(file.string() + ": no cases");
     return lab;
+}
+
+void add_hidden_cases(LabCases& lab, const std::filesystem::path& file, std::uint64_t seed) {
+    const Json root = read_json_file(file);
+    if (root.string_at("lab") != lab.lab)
+        throw Error(file.string() + ": 'lab' is '" + root.string_at("lab") + "', expected '" + lab.lab + "'");
+    for (const Json& c : root.array_at("cases").as_array()) {
+        const GradeCase base = case_from(c, file.string());
+        const int count = c.int_or("count", 1);
+        if (count < 1 || count > 50) throw Error(file.string() + ": case '" + base.name + "': count must be 1..50");
+        for (int i = 1; i <= count; ++i) {
+            GradeCase drawn = base;
+            drawn.visibility = "hidden";
+            if (count > 1) drawn.name += "-" + std::to_string(i);
+            SeededDraw draw(seed, lab.lab + "/" + drawn.name);
+            for (auto& s : draw_settings(c.object_at("draw"), draw)) drawn.settings.push_back(std::move(s));
+            lab.cases.push_back(std::move(drawn));
+        }
+    }
 }
 
 std::vector<std::filesystem::path> case_files(const std::filesystem::path& kit_root) {
@@ -59,6 +102,10 @@ std::vector<std::filesystem::path> case_files(const std::filesystem::path& kit_r
         if (e.path().extension() == ".json") files.push_back(e.path());
     std::sort(files.begin(), files.end());
     return files;
+}
+
+std::filesystem::path hidden_case_file(const std::filesystem::path& kit_root, const std::string& lab) {
+    return kit_root / "grader" / "hidden" / (lab + ".json");
 }
 
 }  // namespace gsv

@@ -1,17 +1,26 @@
 #pragma once
-// A lab's grading cases, declared as data in grader/cases/<lab>.json.
+// A lab's grading cases, declared as data: the public ones in grader/cases/<lab>.json (shipped to
+// students, with golden images), the hidden ones in grader/hidden/<lab>.json (instructors only), whose
+// parameters are drawn from the seed given at grading time.
 #include "common/image_compare.h"
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
 
 namespace gsv {
 
+struct TimingSpec {
+    double points = 0;      // 0: not timed
+    double max_ratio = 2;   // student median frame time over the reference's
+};
+
 struct GradeCase {
     std::string name, todo, description, visibility = "public";
     double points = 1;
     std::vector<std::string> settings;  // name=value, as for --set
+    TimingSpec timing;
 };
 
 struct LabCases {
@@ -20,11 +29,19 @@ struct LabCases {
     ImageTolerance live_tolerance;    // against the reference rendered in the same run, same machine
     ImageTolerance golden_tolerance;  // against committed golden images: another GPU and driver
     double timeout_s = 60;
+    // Timing: its own size (large enough that the lab's own work, not fixed costs, sets the frame
+    // time), frames per process after warm-up, and interleaved student/reference rounds.
+    int timing_width = 1024, timing_height = 1024;
+    int timing_frames = 5, timing_warmup = 2, timing_rounds = 2;
     std::vector<GradeCase> cases;
 };
 
-// Throws gsv::Error naming the file, the member and what is wrong.
+// Each throws gsv::Error naming the file, the member and what is wrong.
 LabCases load_lab_cases(const std::filesystem::path& file);
+// Appends the hidden cases of `file`, drawn from `seed`: a case with "count": n becomes n cases
+// <name>-1 .. <name>-n, each with its own draw.
+void add_hidden_cases(LabCases& lab, const std::filesystem::path& file, std::uint64_t seed);
 std::vector<std::filesystem::path> case_files(const std::filesystem::path& kit_root);
+std::filesystem::path hidden_case_file(const std::filesystem::path& kit_root, const std::string& lab);
 
 }  // namespace gsv

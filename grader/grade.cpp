@@ -3,222 +3,411 @@
 #include "common/error.h"
 #include "common/image.h"
 #include "common/json.h"
+#include "grader/cases.h"
+#include "grader/draw.h"
 #include "grader/process.h"
+#include "grader/run_lab.h"
+#include "grader/submission.h"
 
 #include <algorithm>
-#include <cstdio>
+#include <chrono>
+#include <cmath>
 #include <map>
-#include <sstream>
+#include <optional>
 
 namespace fs = std::filesystem;
 
 namespace gsv {
 namespace {
 
-std::vector<std::string> render_command(const fs::path& binary, const LabCases& lab, const GradeCase& c,
-                                        const fs::path& png) {
-    std::vector<std::string> argv{binary.string(), "render", "--size",
-                                  std::to_string(lab.width) + "x" + std::to_string(lab.height), "--out", png.string(),
-                                  "--frames", "1", "--warmup", "0"};
-    for (const auto& s : c.settings) {
-        argv.push_back("--set");
-        argv.push_back(s);
-    }
-    return argv;
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n == 0 ? 0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-std::string last_lines(const std::string& text, int count) {
-    std::size_t pos = text.size();
-    while (pos > 0 && (text[pos - 1] == '\n')) --pos;
-    for (int i = 0; i < count && pos != std::string::npos && pos > 0; ++i) pos = text.rfind('\n', pos - 1);
-    return text.substr(pos == std::string::npos ? 0 : pos + (pos > 0 ? 1 : 0));
+// Everything one grading run needs, built once.
+class Grading {
+public:
+    Grading(const GradeOptions& options, const std::function<void(const GradeProgress&)>& progress)
+        : options_(options), progress_(progress), out_(fs::absolute(options.out_dir)), kit_(fs::absolute(options.kit_root)),
+          bin_(fs::absolute(options.bin_dir)) {}
+
+    GradeReport run();
+
+private:
+    void load_labs();
+    void set_up_sandbox(const fs::path& student_bin, const fs::path& student_root);
+    void grade_lab(const LabCases& lab, bool live, const LabBuild* build);
+    void grade_case(const LabCases& lab, const GradeCase& c, bool live, const LabBuild* build);
+    void update_golden(const LabCases& lab, const GradeCase& c);
+    void check_image(const LabCases& lab, const GradeCase& c, const LabRun& student, const Image& expected, bool live,
+                     CaseResult& r);
+    CaseResult check_timing(const LabCases& lab, const GradeCase& c, const CaseResult& image);
+    bool is_copy_of_golden(const std::string& lab, const std::string& case_name, const Image& image);
+    void record(CaseResult r);
+    ProcessLimits limits(const LabCases& lab, bool student) const;
+
+    const GradeOptions& options_;
+    const std::function<void(const GradeProgress&)>& progress_;
+    fs::path out_, kit_, bin_;
+    GradeReport report_;
+    std::vector<LabCases> labs_;
+    std::vector<bool> live_;
+    SandboxPolicy policy_;
+    SandboxSupport support_;
+    LabRunner student_, reference_;
+    std::map<std::string, std::map<std::string, Image>> goldens_;  // lab -> case -> image
+    int total_ = 0;
+};
+
+ProcessLimits Grading::limits(const LabCases& lab, bool student) const {
+    ProcessLimits l;
+    const double timeout_s = options_.timeout_s > 0 ? options_.timeout_s : lab.timeout_s;
+    l.timeout = std::chrono::milliseconds(static_cast<long>(timeout_s * 1000));
+    if (student && options_.sandbox) {
+        l.sandbox = &policy_;
+        l.support = &support_;
+    }
+    return l;
 }
 
-// Tells the failure classes apart from the exit status the lab framework gives each (common/app.h).
-CaseStatus classify(const ProcessResult& r, std::string& detail) {
-    if (r.failed_to_start) { detail = "the lab binary could not be started"; return CaseStatus::MissingBinary; }
-    if (r.timed_out) { detail = "killed after the time limit (an endless loop in a shader?)"; return CaseStatus::Timeout; }
-    if (r.signal != 0) { detail = std::string("crashed with signal ") + std::to_string(r.signal) + (r.signal == 11 ? " (segmentation fault)" : ""); return CaseStatus::Crash; }
-    switch (r.exit_code) {
-    case 0: return CaseStatus::Passed;
-    case 3: detail = last_lines(r.output, 1); return CaseStatus::Unsupported;
-    case 4: detail = "NaN or Inf in the image"; return CaseStatus::NonFinite;
-    default: break;
-    }
-    if (r.output.find("shader compile error") != std::string::npos || r.output.find("shader link error") != std::string::npos) {
-        const auto at = r.output.find("shader ");
-        detail = r.output.substr(at, r.output.find('\n', at) - at);
-        return CaseStatus::ShaderError;
-    }
-    detail = last_lines(r.output, 1);
-    return CaseStatus::Error;
-}
-
-}  // namespace
-
-const char* status_name(CaseStatus status) {
-    switch (status) {
-    case CaseStatus::Passed: return "passed";
-    case CaseStatus::WrongImage: return "wrong image";
-    case CaseStatus::NonFinite: return "NaN";
-    case CaseStatus::MissingBinary: return "no binary";
-    case CaseStatus::ShaderError: return "shader error";
-    case CaseStatus::Crash: return "crash";
-    case CaseStatus::Timeout: return "timeout";
-    case CaseStatus::MissingOutput: return "no output";
-    case CaseStatus::Unsupported: return "unsupported";
-    case CaseStatus::Error: return "error";
-    case CaseStatus::ReferenceFailed: return "reference failed";
-    }
-    return "?";
-}
-
-std::vector<CaseResult> grade(const GradeOptions& options, void (*progress)(const CaseResult&)) {
-    std::vector<CaseResult> results;
-    auto record = [&](const CaseResult& r) {
-        results.push_back(r);
-        if (progress) progress(r);
-    };
-    for (const auto& file : case_files(options.kit_root)) {
-        const LabCases lab = load_lab_cases(file);
-        if (!options.labs.empty() &&
-            std::find(options.labs.begin(), options.labs.end(), lab.lab) == options.labs.end())
+void Grading::load_labs() {
+    std::vector<std::string> known;
+    for (const auto& file : case_files(kit_)) {
+        LabCases lab = load_lab_cases(file);
+        known.push_back(lab.lab);
+        if (!options_.labs.empty() && std::find(options_.labs.begin(), options_.labs.end(), lab.lab) == options_.labs.end())
             continue;
-        const fs::path student = fs::absolute(options.bin_dir) / lab.lab;
-        const fs::path solution = fs::absolute(options.bin_dir) / (lab.lab + "_solution");
-        const bool live = !options.self_check && fs::exists(solution);
-        ProcessLimits limits;
-        const double timeout_s = options.timeout_s > 0 ? options.timeout_s : lab.timeout_s;
-        limits.timeout = std::chrono::milliseconds(static_cast<long>(timeout_s * 1000));
-        for (const auto& c : lab.cases) {
+        const bool live = !options_.self_check && !options_.update_goldens && fs::exists(bin_ / (lab.lab + "_solution"));
+        const fs::path hidden = hidden_case_file(kit_, lab.lab);
+        if (live && options_.hidden && fs::exists(hidden)) {
+            add_hidden_cases(lab, hidden, report_.seed);
+            report_.hidden_included = true;
+        }
+        if (live && options_.timing)
+            for (const auto& c : lab.cases) report_.timing_included = report_.timing_included || c.timing.points > 0;
+        labs_.push_back(std::move(lab));
+        live_.push_back(live);
+    }
+    for (const auto& wanted : options_.labs)
+        if (std::find(known.begin(), known.end(), wanted) == known.end()) {
+            std::string list;
+            for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+            throw Error("no grading cases for lab '" + wanted + "' (grader/cases/" + wanted + ".json); labs with cases: " + list);
+        }
+    for (std::size_t i = 0; i < labs_.size(); ++i)
+        for (const auto& c : labs_[i].cases) total_ += 1 + (live_[i] && options_.timing && c.timing.points > 0 ? 1 : 0);
+}
+
+void Grading::set_up_sandbox(const fs::path& student_bin, const fs::path& student_root) {
+    // What student code must not read: the reference, the goldens, hidden cases, other results.
+    policy_.hidden = {kit_ / "solutions", kit_ / "grader" / "golden", kit_ / "grader" / "hidden", kit_ / "tests"};
+    for (const auto& lab : labs_) {
+        fs::create_directories(out_ / lab.lab);
+        policy_.hidden.push_back(out_ / lab.lab);
+        if (student_bin != bin_) policy_.hidden.push_back(bin_);
+        else if (fs::exists(bin_ / (lab.lab + "_solution"))) policy_.hidden.push_back(bin_ / (lab.lab + "_solution"));
+    }
+#if defined(__SANITIZE_ADDRESS__)
+    policy_.address_space_bytes = 0;  // the labs of a sanitizer build reserve terabytes of shadow memory
+#endif
+    if (!options_.sandbox) {
+        report_.sandbox = "off (--no-sandbox): student code runs with the grader's rights";
+        return;
+    }
+    // A submission's binaries do not exist yet: its build folder is handed to the sandbox user anyway.
+    std::vector<fs::path> must_reach{kit_ / "cmake", kit_ / "shaders", bin_.parent_path()};
+    if (fs::exists(student_bin)) must_reach.push_back(student_bin);
+    if (fs::exists(student_root)) must_reach.push_back(student_root);
+    support_ = probe_sandbox(must_reach, policy_.hidden);
+    report_.sandbox = support_.describe();
+}
+
+GradeReport Grading::run() {
+    const auto start = std::chrono::steady_clock::now();
+    report_.seed = options_.seed ? *options_.seed : fresh_seed();
+    report_.submission = options_.submission.empty() ? (kit_ / "labs").string() : fs::absolute(options_.submission).string();
+    load_labs();
+    const bool any_live = std::find(live_.begin(), live_.end(), true) != live_.end();
+    report_.mode = options_.update_goldens ? "update goldens" : any_live ? "instructor" : "self-check";
+    fs::create_directories(out_);
+
+    fs::path student_bin = bin_, student_root = kit_;
+    std::vector<LabBuild> builds;
+    if (!options_.submission.empty()) {
+        const fs::path work = out_ / "submission-build";
+        student_root = work / "kit";
+        student_bin = work / "build" / "bin";
+        set_up_sandbox(student_bin, student_root);
+        std::vector<std::string> lab_ids;
+        for (const auto& lab : labs_) lab_ids.push_back(lab.lab);
+        if (progress_) progress_({0, total_, nullptr, "building the submission's labs"});
+        ProcessLimits build_limits = limits(labs_.empty() ? LabCases{} : labs_.front(), true);
+        build_limits.timeout = std::chrono::minutes(5);
+        build_limits.max_output_bytes = 256 * 1024;
+        const SubmissionBuild built =
+            build_submission(options_.submission, kit_, bin_.parent_path(), lab_ids, work, build_limits);
+        report_.builds = built.builds;
+    } else {
+        set_up_sandbox(student_bin, student_root);
+    }
+    // The kit's own labs find their files as they would when a student runs them (GSV_ROOT included).
+    student_ = LabRunner{student_bin, options_.submission.empty() ? fs::path() : student_root, true};
+    reference_ = LabRunner{bin_, "", false};
+    for (std::size_t i = 0; i < labs_.size(); ++i) {
+        const LabBuild* build = nullptr;
+        for (const auto& b : report_.builds)
+            if (b.lab == labs_[i].lab) build = &b;
+        grade_lab(labs_[i], live_[i], build);
+    }
+    report_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return report_;
+}
+
+void Grading::record(CaseResult r) {
+    report_.results.push_back(std::move(r));
+    if (progress_) progress_({static_cast<int>(report_.results.size()), total_, &report_.results.back(), ""});
+}
+
+void Grading::grade_lab(const LabCases& lab, bool live, const LabBuild* build) {
+    for (const auto& c : lab.cases) {
+        if (options_.update_goldens) {
+            if (c.visibility == "public") update_golden(lab, c);
+            continue;
+        }
+        try {
+            grade_case(lab, c, live, build);
+        } catch (const std::exception& e) {
+            // One case's trouble never stops the rest.
             CaseResult r;
             r.lab = lab.lab;
             r.name = c.name;
             r.todo = c.todo;
-            r.visibility = c.visibility;
             r.max_points = c.points;
-            // Absolute: each lab process runs inside this folder, so a relative --out would nest twice.
-            const fs::path dir = fs::absolute(options.out_dir) / lab.lab / c.name;
-            fs::create_directories(dir);
-            const fs::path golden = fs::absolute(options.kit_root) / "grader" / "golden" / lab.lab / (c.name + ".png");
-            const fs::path expected_png = dir / "expected.png";
-            if (options.update_goldens) {
-                const ProcessResult ref = run_process(render_command(solution, lab, c, golden), dir, limits);
-                std::string detail;
-                r.status = classify(ref, detail);
-                r.detail = r.status == CaseStatus::Passed ? "wrote " + golden.string() : detail;
-                r.output = ref.output;
-                record(r);
-                continue;
-            }
-            if (live) {
-                r.reference = "live";
-                const ProcessResult ref = run_process(render_command(solution, lab, c, expected_png), dir, limits);
-                std::string detail;
-                if (classify(ref, detail) != CaseStatus::Passed) {
-                    r.status = CaseStatus::ReferenceFailed;
-                    r.detail = "the reference solution failed: " + detail;
-                    r.output = ref.output;
-                    record(r);
-                    continue;
-                }
-            } else {
-                r.reference = "golden";
-                if (!fs::exists(golden)) {
-                    r.status = CaseStatus::ReferenceFailed;
-                    r.detail = "no golden image " + golden.string();
-                    record(r);
-                    continue;
-                }
-                fs::copy_file(golden, expected_png, fs::copy_options::overwrite_existing);
-            }
-            const fs::path actual_png = dir / "actual.png";
-            fs::remove(actual_png);
-            const ProcessResult run = fs::exists(student)
-                                          ? run_process(render_command(student, lab, c, actual_png), dir, limits)
-                                          : ProcessResult{-1, 0, false, true, "", 0};
-            r.seconds = run.seconds;
-            r.output = run.output;
-            r.status = classify(run, r.detail);
-            if (r.status == CaseStatus::MissingBinary && !fs::exists(student))
-                r.detail = "no binary " + student.string() + " (did the lab build?)";
-            if (r.status == CaseStatus::Passed) {
-                if (!fs::exists(actual_png)) {
-                    r.status = CaseStatus::MissingOutput;
-                    r.detail = "the lab exited 0 but wrote no image";
-                } else {
-                    try {
-                        const Image actual = read_png(actual_png);
-                        const Image expected = read_png(expected_png);
-                        const ImageTolerance tolerance = live ? lab.live_tolerance : lab.golden_tolerance;
-                        const ImageDiff diff = compare_images(actual, expected, tolerance);
-                        if (diff.within(tolerance)) {
-                            r.points = c.points;
-                            r.detail = diff.max_channel_diff == 0 ? "identical" : "max diff " + std::to_string(diff.max_channel_diff);
-                        } else {
-                            r.status = CaseStatus::WrongImage;
-                            r.detail = diff.summary();
-                            if (!diff.size_mismatch) write_png(dir / "diff.png", difference_heatmap(actual, expected));
-                        }
-                    } catch (const Error& e) {
-                        r.status = CaseStatus::MissingOutput;
-                        r.detail = e.what();
-                    }
-                }
-            }
+            r.status = CaseStatus::Error;
+            r.detail = std::string("grader: ") + e.what();
             record(r);
         }
     }
-    return results;
 }
 
-std::string score_table(const std::vector<CaseResult>& results) {
-    std::ostringstream out;
-    char line[512];
-    std::snprintf(line, sizeof line, "%-7s %-12s %-7s %-14s %8s  %s\n", "lab", "case", "todo", "status", "points", "detail");
-    out << line;
-    std::map<std::string, std::pair<double, double>> per_lab;
-    double total = 0, max_total = 0;
-    for (const auto& r : results) {
-        std::snprintf(line, sizeof line, "%-7s %-12s %-7s %-14s %4.1f/%-3.1f  %s\n", r.lab.c_str(), r.name.c_str(),
-                      r.todo.c_str(), status_name(r.status), r.points, r.max_points, r.detail.substr(0, 100).c_str());
-        out << line;
-        per_lab[r.lab].first += r.points;
-        per_lab[r.lab].second += r.max_points;
-        total += r.points;
-        max_total += r.max_points;
+void Grading::update_golden(const LabCases& lab, const GradeCase& c) {
+    CaseResult r;
+    r.lab = lab.lab;
+    r.name = c.name;
+    r.todo = c.todo;
+    const LabRun ref = reference_.render(lab.lab + "_solution", lab, c, false, limits(lab, false));
+    r.status = ref.status;
+    r.output = ref.process.output;
+    r.detail = ref.detail;
+    if (ref.status == CaseStatus::Passed) {
+        const fs::path golden = kit_ / "grader" / "golden" / lab.lab / (c.name + ".png");
+        fs::create_directories(golden.parent_path());
+        write_png(golden, *ref.image);
+        r.detail = "wrote " + golden.string();
     }
-    out << "\n";
-    for (const auto& [lab, score] : per_lab) {
-        std::snprintf(line, sizeof line, "%-7s %5.1f / %-5.1f\n", lab.c_str(), score.first, score.second);
-        out << line;
-    }
-    std::snprintf(line, sizeof line, "%-7s %5.1f / %-5.1f\n", "total", total, max_total);
-    out << line;
-    return out.str();
+    record(r);
 }
 
-std::string results_json(const std::vector<CaseResult>& results) {
-    Json root = Json::object();
-    double score = 0;
-    Json tests = Json::array();
-    for (const auto& r : results) {
-        Json t = Json::object();
-        t["name"] = r.lab + "/" + r.name + " (" + r.todo + ")";
-        t["score"] = r.points;
-        t["max_score"] = r.max_points;
-        t["status"] = r.status == CaseStatus::Passed ? "passed" : "failed";
-        t["output"] = std::string(status_name(r.status)) + ": " + r.detail + (r.output.empty() ? "" : "\n" + r.output);
-        t["visibility"] = r.visibility == "hidden" ? "after_due_date" : "visible";
-        Json tags = Json::array();
-        tags.push_back(r.todo);
-        t["tags"] = tags;
-        tests.push_back(t);
-        score += r.points;
+void Grading::grade_case(const LabCases& lab, const GradeCase& c, bool live, const LabBuild* build) {
+    CaseResult r;
+    r.lab = lab.lab;
+    r.name = c.name;
+    r.todo = c.todo;
+    r.description = c.description;
+    r.visibility = c.visibility;
+    r.settings = c.settings;
+    r.max_points = c.points;
+    r.reference = live ? "live" : "golden";
+    const bool timed = live && options_.timing && c.timing.points > 0;
+    auto timing_row_like = [&](const CaseResult& image_row) {
+        if (!timed) return;
+        CaseResult t = image_row;
+        t.kind = "timing";
+        t.points = 0;
+        t.max_points = c.timing.points;
+        t.actual_png = t.expected_png = t.diff_png = "";
+        t.detail = "not timed: " + std::string(status_name(image_row.status));
+        record(t);
+    };
+    const fs::path dir = out_ / lab.lab / c.name;
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+
+    if (build && !build->ok) {
+        r.status = CaseStatus::BuildError;
+        r.detail = first_build_error(build->log);
+        r.output = build->log;
+        record(r);
+        timing_row_like(report_.results.back());
+        return;
     }
-    root["score"] = score;
-    root["tests"] = tests;
-    return root.dump(2) + "\n";
+    // The student first: this case's expected image does not exist yet while student code runs.
+    const LabRun student = student_.render(lab.lab, lab, c, false, limits(lab, true));
+    r.seconds = student.process.seconds;
+    r.output = student.process.output;
+    r.status = student.status;
+    r.detail = student.detail;
+
+    Image expected;
+    if (live) {
+        const LabRun reference = reference_.render(lab.lab + "_solution", lab, c, false, limits(lab, false));
+        if (reference.status != CaseStatus::Passed) {
+            r.status = CaseStatus::ReferenceFailed;
+            r.detail = "the reference solution failed (" + std::string(status_name(reference.status)) + "): " + reference.detail;
+            r.output = reference.process.output;
+            record(r);
+            timing_row_like(report_.results.back());
+            return;
+        }
+        expected = *reference.image;
+    } else {
+        const fs::path golden = kit_ / "grader" / "golden" / lab.lab / (c.name + ".png");
+        if (!fs::exists(golden)) {
+            r.status = CaseStatus::ReferenceFailed;
+            r.detail = "no golden image " + golden.string() + " (run gsv-grade --update-goldens)";
+            record(r);
+            return;
+        }
+        try {
+            expected = read_png(golden);
+        } catch (const Error& e) {
+            r.status = CaseStatus::ReferenceFailed;
+            r.detail = std::string("the golden image is unreadable: ") + e.what();
+            record(r);
+            return;
+        }
+    }
+    write_png(dir / "expected.png", expected);
+    r.expected_png = fs::relative(dir / "expected.png", out_).generic_string();
+    if (student.status == CaseStatus::Passed) check_image(lab, c, student, expected, live, r);
+    record(r);
+    const CaseResult image_row = report_.results.back();
+    if (!timed) return;
+    if (image_row.status != CaseStatus::Passed) return timing_row_like(image_row);
+    record(check_timing(lab, c, image_row));
+}
+
+void Grading::check_image(const LabCases& lab, const GradeCase& c, const LabRun& student, const Image& expected,
+                          bool live, CaseResult& r) {
+    const fs::path dir = out_ / lab.lab / c.name;
+    const Image& actual = *student.image;
+    // Re-encoded by the grader: only pixels come back from student code.
+    write_png(dir / "actual.png", actual);
+    r.actual_png = fs::relative(dir / "actual.png", out_).generic_string();
+    const ImageTolerance tolerance = live ? lab.live_tolerance : lab.golden_tolerance;
+    const ImageDiff diff = compare_images(actual, expected, tolerance);
+    r.image.done = true;
+    r.image.tolerance = tolerance;
+    r.image.max_channel_diff = diff.max_channel_diff;
+    r.image.differing_pixels = diff.differing_pixels;
+    r.image.total_pixels = diff.total_pixels;
+    r.image.psnr = diff.psnr;
+    r.image.ssim = diff.ssim;
+    r.image.diff_x0 = diff.diff_x0;
+    r.image.diff_y0 = diff.diff_y0;
+    r.image.diff_x1 = diff.diff_x1;
+    r.image.diff_y1 = diff.diff_y1;
+    if (diff.within(tolerance)) {
+        r.status = CaseStatus::Passed;
+        r.points = c.points;
+        r.detail = diff.max_channel_diff == 0 ? "identical" : "max diff " + std::to_string(diff.max_channel_diff);
+        return;
+    }
+    r.detail = diff.summary();
+    if (!diff.size_mismatch) {
+        write_png(dir / "diff.png", difference_heatmap(actual, expected));
+        r.diff_png = fs::relative(dir / "diff.png", out_).generic_string();
+    }
+    if (is_blank(actual) && !is_blank(expected)) {
+        r.status = CaseStatus::BlankImage;
+        r.detail = "one flat colour where the reference has a picture (is anything drawn?)";
+    } else if (is_copy_of_golden(lab.lab, c.name, actual)) {
+        r.status = CaseStatus::CopiedImage;
+        r.detail = "pixel for pixel a committed golden image, not a rendering of this case's parameters";
+    } else {
+        r.status = CaseStatus::WrongImage;
+    }
+}
+
+bool Grading::is_copy_of_golden(const std::string& lab, const std::string& case_name, const Image& image) {
+    auto& goldens = goldens_[lab];
+    if (goldens.empty()) {
+        const fs::path dir = kit_ / "grader" / "golden" / lab;
+        if (fs::is_directory(dir))
+            for (const auto& e : fs::directory_iterator(dir))
+                if (e.path().extension() == ".png") goldens[e.path().stem().string()] = read_png(e.path());
+    }
+    for (const auto& [name, golden] : goldens)
+        if (name != case_name && golden.width == image.width && golden.height == image.height && golden.rgba == image.rgba)
+            return true;
+    return false;
+}
+
+CaseResult Grading::check_timing(const LabCases& lab, const GradeCase& c, const CaseResult& image) {
+    CaseResult t = image;
+    t.kind = "timing";
+    t.max_points = c.timing.points;
+    t.points = 0;
+    t.actual_png = t.expected_png = t.diff_png = "";
+    t.output.clear();
+    t.seconds = 0;
+    std::vector<double> s, ref;
+    std::optional<LabRun> failure;
+    // Interleaved, so a machine that slows down slows both alike.
+    auto measure = [&](int rounds) {
+        for (int i = 0; i < rounds && !failure; ++i) {
+            const LabRun a = student_.render(lab.lab, lab, c, true, limits(lab, true));
+            t.seconds += a.process.seconds;
+            if (a.status != CaseStatus::Passed) {
+                failure = a;
+                return;
+            }
+            const LabRun b = reference_.render(lab.lab + "_solution", lab, c, true, limits(lab, false));
+            if (b.status == CaseStatus::Passed) {
+                s.push_back(a.median_ms);
+                ref.push_back(b.median_ms);
+            }
+        }
+    };
+    const double band = c.timing.max_ratio;
+    auto ratio = [&] { return median(s) / std::max(1e-6, median(ref)); };
+    measure(lab.timing_rounds);
+    // Near the band (within 25% either way) one more measurement decides.
+    if (!failure && std::fabs(std::log(ratio() / band)) < std::log(1.25)) {
+        measure(lab.timing_rounds);
+        t.timing.remeasured = true;
+    }
+    t.timing.done = true;
+    t.timing.student_ms = median(s);
+    t.timing.reference_ms = median(ref);
+    t.timing.ratio = ratio();
+    t.timing.max_ratio = band;
+    t.timing.rounds = static_cast<int>(s.size());
+    if (failure) {
+        t.status = failure->status;
+        t.detail = "while timing: " + failure->detail;
+        t.output = failure->process.output;
+        return t;
+    }
+    char line[160];
+    std::snprintf(line, sizeof line, "%.2f ms vs the reference's %.2f ms: %.2fx (band %.2gx)%s", t.timing.student_ms,
+                  t.timing.reference_ms, t.timing.ratio, band, t.timing.remeasured ? ", measured twice" : "");
+    t.detail = line;
+    if (t.timing.ratio <= band) {
+        t.status = CaseStatus::Passed;
+        t.points = c.timing.points;
+    } else {
+        t.status = CaseStatus::TooSlow;
+    }
+    return t;
+}
+
+}  // namespace
+
+GradeReport grade(const GradeOptions& options, const std::function<void(const GradeProgress&)>& progress) {
+    return Grading(options, progress).run();
 }
 
 }  // namespace gsv

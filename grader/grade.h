@@ -1,41 +1,41 @@
 #pragma once
-// Grades the labs of one kit tree: each case is rendered headless by the student's binary in its own
-// process and compared with the reference (rendered live by <lab>_solution when it is there, else the
-// committed golden image).
-#include "grader/cases.h"
+// Grades the labs of one submission headless. Each case is rendered by the student's binary in its own
+// sandboxed process and compared with the reference: rendered live by <lab>_solution in the same run
+// (instructor grading: public and hidden cases, timing) or the committed golden image (self-check).
+#include "grader/grade_result.h"
 
+#include <cstdint>
 #include <filesystem>
+#include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace gsv {
 
-enum class CaseStatus { Passed, WrongImage, NonFinite, MissingBinary, ShaderError, Crash, Timeout, MissingOutput,
-                        Unsupported, Error, ReferenceFailed };
-const char* status_name(CaseStatus status);
-
-struct CaseResult {
-    std::string lab, name, todo, visibility;
-    double points = 0, max_points = 0;
-    CaseStatus status = CaseStatus::Error;
-    std::string detail;  // one line for the table; output holds the rest
-    std::string output;  // what helps the student: compiler messages, where the image differs
-    std::string reference;  // "live" or "golden"
-    double seconds = 0;
-};
-
 struct GradeOptions {
-    std::filesystem::path kit_root;     // where grader/cases and grader/golden are
-    std::filesystem::path bin_dir;      // where the lab binaries are
+    std::filesystem::path kit_root;     // grader/cases, golden, hidden; solutions/
+    std::filesystem::path bin_dir;      // the kit's build: <lab>_solution, and <lab> when no submission is given
+    std::filesystem::path submission;   // empty: grade the kit's own labs/ (as built in bin_dir)
     std::filesystem::path out_dir;      // images and reports
     std::vector<std::string> labs;      // empty: every lab with a case file
-    bool self_check = false;            // never use a live reference, even when present
-    bool update_goldens = false;        // render the references into grader/golden instead of grading
-    double timeout_s = 0;               // per-process limit; 0: the case file's timeout_s
+    bool self_check = false;            // golden images only, public cases only, even when solutions are built
+    bool update_goldens = false;        // render grader/golden/<lab>/<case>.png with the references instead
+    bool timing = true;                 // instructor mode: time the cases that declare a timing band
+    bool hidden = true;                 // instructor mode: add the hidden cases drawn from the seed
+    bool sandbox = true;                // off only to debug the grader itself
+    std::optional<std::uint64_t> seed;  // hidden cases; none: a fresh seed, recorded in the report
+    double timeout_s = 0;               // per process; 0: the case file's timeout_s
 };
 
-std::vector<CaseResult> grade(const GradeOptions& options, void (*progress)(const CaseResult&) = nullptr);
-std::string score_table(const std::vector<CaseResult>& results);
-std::string results_json(const std::vector<CaseResult>& results);  // Gradescope-shaped results.json
+struct GradeProgress {
+    int done = 0, total = 0;
+    const CaseResult* result = nullptr;  // the check just finished; null while building
+    std::string stage;                   // "building lab01", ...
+};
+
+// Throws gsv::Error on what stops grading as a whole: an unreadable case file, a lab that has none, a
+// submission without labs/. Everything a student's code does is a CaseResult.
+GradeReport grade(const GradeOptions& options, const std::function<void(const GradeProgress&)>& progress = {});
 
 }  // namespace gsv

@@ -1,24 +1,69 @@
-// gsv-grade: grades every lab of a kit tree headless and prints the score table.
+// gsv-grade: grades a submission (or the kit's own labs/) headless, prints the score table and writes the
+// reports; or grades a folder of submissions with N workers.
+#include "common/assets.h"
 #include "common/error.h"
+#include "grader/batch.h"
+#include "grader/draw.h"
 #include "grader/grade.h"
+#include "grader/report.h"
 
 #include <cstdio>
-#include <cstring>
 #include <fstream>
+#include <cstdlib>
 #include <sstream>
+#include <unistd.h>
 
 namespace {
 
-void print_progress(const gsv::CaseResult& r) {
-    std::fprintf(stderr, "  %-7s %-12s %s\n", r.lab.c_str(), r.name.c_str(), gsv::status_name(r.status));
+const char* kUsage =
+    "usage: gsv-grade [--kit DIR] [--bin DIR] [--submission DIR | --batch DIR [--workers N]] [--out DIR]\n"
+    "                 [--labs lab01,lab02] [--seed N] [--self-check] [--no-timing] [--public-only]\n"
+    "                 [--timeout S] [--fail-under F] [--update-goldens] [--no-sandbox] [--quiet]\n"
+    "  --kit DIR         the kit (cases, goldens, hidden cases, solutions); default: the one this was built from\n"
+    "  --bin DIR         the kit's built labs and <lab>_solution; default: this build's bin/\n"
+    "  --submission DIR  a copy of the kit whose labs/ hold a student's work: built against this kit, then graded\n"
+    "  --batch DIR       every folder in DIR is a submission; --workers N grade N at a time (default 2)\n"
+    "  --out DIR         images and reports: results.json (Gradescope), report.json, junit.xml, report.html\n"
+    "  --seed N          draws the hidden cases; the same seed gives the same cases (default: a fresh one, printed)\n"
+    "  --self-check      golden images and public cases only, even where the solutions are built\n"
+    "  --no-timing       skip the frame-time checks\n"
+    "  --public-only     skip the hidden cases\n"
+    "  --timeout S       wall-clock limit per lab process (default: the case file's)\n"
+    "  --fail-under F    exit 1 when the score is below F (0..1) of the maximum: a CI gate\n"
+    "  --update-goldens  render grader/golden/<lab>/<case>.png with the reference solutions\n"
+    "  --no-sandbox      run student code without namespaces and limits (to debug the grader only)\n"
+    "exit status: 0 graded (whatever the score), 1 under --fail-under, 2 usage or internal error\n";
+
+bool quiet = false;
+
+void print_progress(const gsv::GradeProgress& p) {
+    if (quiet) return;
+    if (!p.result) {
+        std::fprintf(stderr, "%s...\n", p.stage.c_str());
+        return;
+    }
+    const gsv::CaseResult& r = *p.result;
+    const std::string name = r.lab + "/" + r.name + (r.kind == "timing" ? " [time]" : "");
+    std::fprintf(stderr, "[%2d/%2d] %-32s %-14s %5.2f s\n", p.done, p.total, name.c_str(), gsv::status_name(r.status),
+                 r.seconds);
 }
 
-const char* kUsage =
-    "usage: gsv-grade [--kit DIR] [--bin DIR] [--out DIR] [--labs lab01,lab02] [--self-check] [--fail-under F]\n"
-    "                 [--update-goldens]\n"
-    "  --self-check      compare with the committed golden images even when the solutions are built\n"
-    "  --fail-under F    exit 1 when the score is below F (0..1) of the maximum: a CI gate\n"
-    "  --update-goldens  render grader/golden/<lab>/<case>.png with the reference solutions\n";
+void print_batch_progress(const gsv::BatchEntry& e, int done, int total) {
+    std::fprintf(stderr, "[%2d/%2d] %-24s %s\n", done, total, e.name.c_str(),
+                 e.graded ? (std::to_string(e.score) + " / " + std::to_string(e.max_score)).c_str() : e.problem.c_str());
+}
+
+std::uint64_t parse_seed(const std::string& text) {
+    std::size_t used = 0;
+    unsigned long long value = 0;
+    try {
+        value = std::stoull(text, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used != text.size() || text.empty() || text[0] == '-') throw gsv::Error("--seed needs a whole number, got '" + text + "'");
+    return value;
+}
 
 }  // namespace
 
@@ -28,6 +73,9 @@ int main(int argc, char** argv) {
     options.bin_dir = GSV_BIN_DIR;
     options.out_dir = "grade-results";
     double fail_under = -1;
+    std::filesystem::path batch;
+    int workers = 2;
+    std::vector<std::string> pass_through;  // what each batch run gets too
     try {
         for (int i = 1; i < argc; ++i) {
             const std::string a = argv[i];
@@ -35,47 +83,83 @@ int main(int argc, char** argv) {
                 if (i + 1 >= argc) throw gsv::Error("option " + a + " needs a value");
                 return argv[++i];
             };
-            if (a == "--kit") options.kit_root = value();
-            else if (a == "--bin") options.bin_dir = value();
+            auto number = [&](double lo, double hi) {
+                const std::string text = value();
+                char* end = nullptr;
+                const double v = std::strtod(text.c_str(), &end);
+                if (text.empty() || *end != '\0' || !(v >= lo && v <= hi))
+                    throw gsv::Error(a + " needs a number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got '" + text + "'");
+                return v;
+            };
+            if (a == "--kit") { options.kit_root = value(); pass_through.insert(pass_through.end(), {a, std::filesystem::absolute(options.kit_root).string()}); }
+            else if (a == "--bin") { options.bin_dir = value(); pass_through.insert(pass_through.end(), {a, std::filesystem::absolute(options.bin_dir).string()}); }
+            else if (a == "--submission") options.submission = value();
+            else if (a == "--batch") batch = value();
+            else if (a == "--workers") workers = static_cast<int>(number(1, 256));
             else if (a == "--out") options.out_dir = value();
             else if (a == "--labs") {
-                std::stringstream list(value());
-                for (std::string lab; std::getline(list, lab, ',');) options.labs.push_back(lab);
-            } else if (a == "--self-check") options.self_check = true;
+                const std::string list = value();
+                pass_through.insert(pass_through.end(), {a, list});
+                std::stringstream items(list);
+                for (std::string lab; std::getline(items, lab, ',');) options.labs.push_back(lab);
+            } else if (a == "--seed") options.seed = parse_seed(value());
+            else if (a == "--self-check") { options.self_check = true; pass_through.push_back(a); }
+            else if (a == "--no-timing") { options.timing = false; pass_through.push_back(a); }
+            else if (a == "--public-only") { options.hidden = false; pass_through.push_back(a); }
+            else if (a == "--no-sandbox") { options.sandbox = false; pass_through.push_back(a); }
+            else if (a == "--timeout") { options.timeout_s = number(0.1, 3600); pass_through.insert(pass_through.end(), {a, std::to_string(options.timeout_s)}); }
             else if (a == "--update-goldens") options.update_goldens = true;
-            else if (a == "--fail-under") fail_under = std::stod(value());
+            else if (a == "--fail-under") fail_under = number(0, 1);
+            else if (a == "--quiet") quiet = true;
             else if (a == "-h" || a == "--help") {
                 std::printf("%s", kUsage);
                 return 0;
             } else throw gsv::Error("unknown option '" + a + "' (see --help)");
         }
-        const auto results = gsv::grade(options, print_progress);
+        if (!batch.empty()) {
+            if (!options.submission.empty()) throw gsv::Error("--batch and --submission exclude each other");
+            gsv::BatchOptions b;
+            b.grader = gsv::Assets::executable_path(argv[0]);
+            b.submissions = batch;
+            b.out_dir = options.out_dir;
+            b.workers = workers;
+            b.seed = options.seed ? *options.seed : gsv::fresh_seed();
+            b.pass_through = pass_through;
+            std::fprintf(stderr, "grading the submissions in %s with %d workers, seed %llu\n", batch.c_str(), workers,
+                         static_cast<unsigned long long>(b.seed));
+            const auto entries = gsv::grade_batch(b, print_batch_progress);
+            std::printf("%s", gsv::class_table(entries).c_str());
+            const auto csv = options.out_dir / "class.csv";
+            std::ofstream(csv) << gsv::class_csv(entries);
+            std::printf("per-submission reports in %s/<name>/, the class in %s\n", options.out_dir.c_str(), csv.c_str());
+            return 0;
+        }
+        const gsv::GradeReport report = gsv::grade(options, print_progress);
         if (options.update_goldens) {
             int failed = 0;
-            for (const auto& r : results)
+            for (const auto& r : report.results)
                 if (r.status != gsv::CaseStatus::Passed) {
                     std::fprintf(stderr, "gsv-grade: %s/%s: %s\n%s\n", r.lab.c_str(), r.name.c_str(), r.detail.c_str(), r.output.c_str());
                     ++failed;
                 }
-            std::printf("updated %zu golden images, %d failed\n", results.size() - static_cast<std::size_t>(failed), failed);
+            std::printf("updated %zu golden images, %d failed\n", report.results.size() - static_cast<std::size_t>(failed), failed);
             return failed ? 1 : 0;
         }
-        std::printf("%s", gsv::score_table(results).c_str());
-        const auto json_path = options.out_dir / "results.json";
-        std::ofstream(json_path) << gsv::results_json(results);
-        std::printf("images and results.json in %s\n", options.out_dir.string().c_str());
-        double score = 0, max_score = 0;
-        for (const auto& r : results) {
-            score += r.points;
-            max_score += r.max_points;
+        gsv::write_reports(report, options.out_dir);
+        if (!quiet) {
+            std::printf("%s", gsv::score_table(report).c_str());
+            std::printf("reports (report.html, junit.xml, results.json, report.json) and images in %s\n", options.out_dir.c_str());
         }
-        if (fail_under >= 0 && max_score > 0 && score < fail_under * max_score) {
-            std::fprintf(stderr, "gsv-grade: score %.1f / %.1f is under --fail-under %.2f\n", score, max_score, fail_under);
+        if (fail_under >= 0 && report.max_score() > 0 && report.score() < fail_under * report.max_score()) {
+            std::fprintf(stderr, "gsv-grade: score %.1f / %.1f is under --fail-under %.2f\n", report.score(), report.max_score(), fail_under);
             return 1;
         }
         return 0;
     } catch (const gsv::Error& e) {
         std::fprintf(stderr, "gsv-grade: %s\n", e.what());
+        return 2;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "gsv-grade: internal error: %s\n", e.what());
         return 2;
     }
 }

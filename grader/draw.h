@@ -1,0 +1,34 @@
+#pragma once
+// Hidden cases draw their parameters from a seed given at grading time, so an image baked into a
+// submission cannot match. The same seed draws the same cases on every machine (our own splitmix64,
+// not the standard library's distributions, whose output differs between implementations).
+#include "common/json.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace gsv {
+
+class SeededDraw {
+public:
+    // `stream` tells apart what is drawn for each case from the same seed (e.g. "lab01/hidden-phong/2").
+    SeededDraw(std::uint64_t seed, const std::string& stream);
+    std::uint64_t next();
+    double uniform(double lo, double hi);  // [lo, hi)
+    long integer(long lo, long hi);        // [lo, hi]
+
+private:
+    std::uint64_t state_;
+};
+
+// One "name=value" setting per member of `spec`, e.g.
+//   {"light_x": {"range": [-4, 4]}, "steps": {"int": [1, 8]}, "model": {"choice": ["sphere", "torus"]},
+//    "light_position": {"vec3": [[-4, 4], [-1, 4], [0.5, 4]]}}
+// Throws gsv::Error naming the member when a spec is malformed.
+std::vector<std::string> draw_settings(const Json& spec, SeededDraw& draw);
+
+// A seed for when none is given: from the clock and the OS's entropy, printed so the run can be repeated.
+std::uint64_t fresh_seed();
+
+}  // namespace gsv

@@ -1,0 +1,37 @@
+#pragma once
+// Runs a lab binary headless on one case, in a working folder of its own, and reads back only what it
+// may hand in: a PNG (decoded and size-checked) and its JSON report's frame time (validated).
+#include "grader/cases.h"
+#include "grader/grade_result.h"
+#include "grader/process.h"
+#include "common/image.h"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace gsv {
+
+struct LabRun {
+    ProcessResult process;
+    CaseStatus status = CaseStatus::Error;  // Passed: it ran, and image is set
+    std::string detail;
+    std::optional<Image> image;
+    double median_ms = 0;  // from the lab's report, when frames were timed
+};
+
+struct LabRunner {
+    std::filesystem::path bin_dir;
+    std::filesystem::path root;  // GSV_ROOT for the lab (a submission's kit view); empty: the binary's own
+    bool student = false;        // its working folder is handed to the sandbox user
+
+    // The case's image at the lab's size (one frame), or `timed`: frames at the lab's timing size.
+    LabRun render(const std::string& binary, const LabCases& lab, const GradeCase& c, bool timed,
+                  const ProcessLimits& limits) const;
+};
+
+// Tells the failure classes apart from how the process ended and the exit status the lab framework
+// gives each (common/app.h); Passed when it exited 0.
+CaseStatus classify(const ProcessResult& r, std::string& detail);
+
+}  // namespace gsv

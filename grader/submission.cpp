@@ -1,0 +1,98 @@
+#include "grader/submission.h"
+
+#include "common/error.h"
+
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace gsv {
+namespace {
+
+// Plain files and folders only: a link could point at the reference solution.
+int copy_plain_tree(const fs::path& from, const fs::path& to) {
+    int skipped = 0;
+    fs::create_directories(to);
+    for (auto it = fs::recursive_directory_iterator(from); it != fs::recursive_directory_iterator(); ++it) {
+        const fs::path target = to / fs::relative(it->path(), from);
+        if (it->is_symlink()) {
+            ++skipped;
+            if (it->is_directory()) it.disable_recursion_pending();
+        } else if (it->is_directory()) {
+            fs::create_directories(target);
+        } else if (it->is_regular_file()) {
+            fs::copy_file(it->path(), target, fs::copy_options::overwrite_existing);
+        }
+    }
+    return skipped;
+}
+
+std::string cmake_generator(const fs::path& kit_build) {
+    std::ifstream cache(kit_build / "CMakeCache.txt");
+    for (std::string line; std::getline(cache, line);)
+        if (line.rfind("CMAKE_GENERATOR:INTERNAL=", 0) == 0) return line.substr(line.find('=') + 1);
+    return "";
+}
+
+}  // namespace
+
+std::string first_build_error(const std::string& log) {
+    std::istringstream lines(log);
+    std::string last;
+    for (std::string line; std::getline(lines, line);) {
+        if (line.find("error:") != std::string::npos || line.find("error ") == 0) return line;
+        if (!line.empty()) last = line;
+    }
+    return last;
+}
+
+SubmissionBuild build_submission(const fs::path& submission, const fs::path& kit_root, const fs::path& kit_build,
+                                 const std::vector<std::string>& labs, const fs::path& work_dir,
+                                 const ProcessLimits& limits) {
+    const fs::path labs_dir = fs::is_directory(submission / "labs") ? submission / "labs" : submission;
+    if (!fs::is_directory(labs_dir) || labs_dir.filename() != "labs")
+        throw Error("submission '" + submission.string() + "' has no labs/ folder");
+    if (!fs::exists(kit_build / "gsv-targets.cmake"))
+        throw Error("'" + kit_build.string() + "' is not a configured kit build (no gsv-targets.cmake): build the kit first");
+    SubmissionBuild result;
+    result.root = work_dir / "kit";
+    result.bin_dir = work_dir / "build" / "bin";
+    fs::remove_all(work_dir);
+    const int skipped = copy_plain_tree(labs_dir, result.root / "labs");
+    fs::create_directory_symlink(fs::absolute(kit_root / "shaders"), result.root / "shaders");
+    fs::create_directory_symlink(fs::absolute(kit_root / "data"), result.root / "data");
+    fs::create_directories(work_dir / "build");
+    if (limits.support) hand_over(work_dir, *limits.support);
+
+    std::vector<std::string> configure{GSV_CMAKE_COMMAND, "-S", (fs::absolute(kit_root) / "grader" / "submission").string(),
+                                       "-B", (work_dir / "build").string(), "-DGSV_KIT_BUILD=" + fs::absolute(kit_build).string(),
+                                       "-DGSV_LABS_ROOT=" + result.root.string()};
+    if (const std::string generator = cmake_generator(kit_build); !generator.empty()) {
+        configure.push_back("-G");
+        configure.push_back(generator);
+    }
+    const ProcessResult configured = run_process(configure, work_dir, limits);
+    for (const auto& lab : labs) {
+        LabBuild build;
+        build.lab = lab;
+        if (configured.exit_code != 0) {
+            build.log = "configuring the submission's build failed:\n" + configured.output;
+        } else {
+            const ProcessResult made = run_process({GSV_CMAKE_COMMAND, "--build", (work_dir / "build").string(), "--target", lab},
+                                                   work_dir, limits);
+            build.seconds = made.seconds;
+            build.ok = made.exit_code == 0 && fs::exists(result.bin_dir / lab);
+            build.log = made.output;
+            if (made.timed_out) build.log += "\nthe build was killed after the time limit";
+            if (!build.ok && made.output.find("unknown target") != std::string::npos)
+                build.log = "the submission has no sources for " + lab + " (labs/<lab folder>/*.cpp)\n" + made.output;
+        }
+        if (skipped > 0) build.log += "\n(" + std::to_string(skipped) + " links in the submission's labs/ were not copied)";
+        result.builds.push_back(std::move(build));
+    }
+    return result;
+}
+
+}  // namespace gsv

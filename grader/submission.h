@@ -1,0 +1,28 @@
+#pragma once
+// A submission is a copy of the kit whose labs/ hold a student's work. Only labs/ is taken from it, and
+// only its plain files (no links out of it); the framework, shared shaders and data are the kit's. Each
+// lab is built as its own target, so one lab's compile error leaves the others gradable.
+#include "grader/grade_result.h"
+#include "grader/process.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace gsv {
+
+struct SubmissionBuild {
+    std::filesystem::path root;     // GSV_ROOT for the student's binaries: labs/ copied, shaders/ and data/ the kit's
+    std::filesystem::path bin_dir;  // the student's lab binaries
+    std::vector<LabBuild> builds;
+};
+
+// Throws gsv::Error when the submission has no labs/ folder or the kit build is not configured.
+SubmissionBuild build_submission(const std::filesystem::path& submission, const std::filesystem::path& kit_root,
+                                 const std::filesystem::path& kit_build, const std::vector<std::string>& labs,
+                                 const std::filesystem::path& work_dir, const ProcessLimits& limits);
+
+// The first compiler error of a build log ("file:line:col: error: ..."), or its last line.
+std::string first_build_error(const std::string& log);
+
+}  // namespace gsv

@@ -1,0 +1,211 @@
+#!/usr/bin/env bash
+# Exports the student edition of the kit into DEST: everything a student needs to do the labs and self-check
+# them against the committed golden images, and nothing that gives answers away.
+#
+#   scripts/export-student.sh [--include-untracked] DEST      (also: scripts/kit export-student ...)
+#
+# Left out: solutions/, tests/ (they need the solutions), grader/hidden/ (hidden grading cases), .github/ (the
+# instructor's workflows), build*/ folders, grade-results/, .git, and whatever git ignores. In a git checkout
+# only the files git tracks are exported (their working-tree content); --include-untracked adds the untracked
+# files that git does not ignore. Outside git, every file is copied but those excluded above and those matching
+# the kit's top-level .gitignore (simple patterns only).
+# Replaced or added in DEST: .ci/run (the student self-check), .github/workflows/self-check.yml (from
+# grader/ci/github-classroom.yml), STUDENT.md, and a first line in README.md pointing at it.
+# DEST must not exist or be an empty folder, and must be outside the kit.
+set -euo pipefail
+
+die() { echo "export-student: $*" >&2; exit 1; }
+usage() { echo "usage: scripts/export-student.sh [--include-untracked] DEST" >&2; exit 2; }
+
+include_untracked=0
+dest=""
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --include-untracked) include_untracked=1 ;;
+    -h|--help) sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -*) echo "export-student: unknown option '$1'" >&2; usage ;;
+    *) [ -z "$dest" ] || usage; dest=$1 ;;
+  esac
+  shift
+done
+[ -n "$dest" ] || usage
+
+root=$(cd "$(dirname "$0")/.." && pwd -P)
+
+# The canonical absolute form of a path that need not exist yet.
+abs_path() {
+  local p=$1 rest=""
+  case "$p" in /*) ;; *) p="$PWD/$p" ;; esac
+  while [ ! -d "$p" ]; do
+    case "$(basename "$p")" in .|..) die "cannot resolve '$1': give DEST without . or .. past the existing part" ;; esac
+    rest="/$(basename "$p")$rest"
+    p=$(dirname "$p")
+  done
+  p=$(cd "$p" && pwd -P)
+  echo "${p%/}$rest"
+}
+
+if [ -e "$dest" ] || [ -L "$dest" ]; then
+  [ -d "$dest" ] || die "'$dest' exists and is not a folder"
+  [ -z "$(ls -A "$dest")" ] || die "'$dest' is not empty; give a new or empty folder"
+fi
+dest_abs=$(abs_path "$dest")
+case "$dest_abs/" in
+  "$root/"*) die "'$dest' is inside the kit ($root); export to a folder outside it" ;;
+esac
+[ -f "$root/grader/ci/github-classroom.yml" ] || die "grader/ci/github-classroom.yml is missing from the kit"
+
+# What never goes to students, whichever way the file list is made.
+excluded() {
+  case "$1" in
+    solutions|solutions/*|tests|tests/*|grader/hidden|grader/hidden/*|.github/*) return 0 ;;
+    build*/*|*/build*/*) return 0 ;;
+    grade-results/*|*/grade-results/*) return 0 ;;
+    .git|.git/*|*/.git|*/.git/*) return 0 ;;
+  esac
+  return 1
+}
+
+# Without git: the kit's top-level .gitignore, read the simple way (no negation, no **).
+gitignore_patterns=()
+if [ -f "$root/.gitignore" ]; then
+  while IFS= read -r line || [ -n "$line" ]; do
+    line=${line%$'\r'}
+    case "$line" in ''|'#'*|'!'*) continue ;; esac
+    gitignore_patterns+=("$line")
+  done <"$root/.gitignore"
+fi
+ignored() {
+  local path=$1 pat dir_only anchored prefix comp
+  local -a comps
+  IFS=/ read -r -a comps <<<"$path"
+  for pat in ${gitignore_patterns[@]+"${gitignore_patterns[@]}"}; do
+    dir_only=0; anchored=0
+    case "$pat" in */) dir_only=1; pat=${pat%/} ;; esac
+    case "$pat" in /*) anchored=1; pat=${pat#/} ;; */*) anchored=1 ;; esac
+    prefix=""
+    local i n=${#comps[@]}
+    for ((i = 0; i < n; i++)); do
+      comp=${comps[i]}
+      prefix=${prefix:+$prefix/}$comp
+      # A directory-only pattern matches the folders on the path, not the file itself.
+      if [ $dir_only -eq 1 ] && [ $i -eq $((n - 1)) ]; then break; fi
+      if [ $anchored -eq 1 ]; then
+        # shellcheck disable=SC2053
+        [[ $prefix == $pat ]] && return 0
+      else
+        # shellcheck disable=SC2053
+        [[ $comp == $pat ]] && return 0
+      fi
+    done
+  done
+  return 1
+}
+
+list=$(mktemp)
+trap 'rm -f "$list"' EXIT
+count=0
+skipped_untracked=0
+add() {  # a path relative to the kit root
+  excluded "$1" && return 0
+  [ -f "$root/$1" ] || [ -L "$root/$1" ] || return 0  # deleted in the working tree, or a submodule folder
+  printf '%s\0' "$1" >>"$list"
+  count=$((count + 1))
+}
+
+if command -v git >/dev/null 2>&1 && git -C "$root" rev-parse --is-inside-work-tree >/dev/null 2>&1; then
+  source_kind="git checkout"
+  while IFS= read -r -d '' f; do add "$f"; done < <(git -C "$root" ls-files -z --cached)
+  if [ $include_untracked -eq 1 ]; then
+    while IFS= read -r -d '' f; do add "$f"; done < <(git -C "$root" ls-files -z --others --exclude-standard)
+  else
+    while IFS= read -r -d '' f; do
+      excluded "$f" || skipped_untracked=$((skipped_untracked + 1))
+    done < <(git -C "$root" ls-files -z --others --exclude-standard)
+  fi
+else
+  source_kind="folder (no git)"
+  while IFS= read -r -d '' f; do
+    f=${f#./}
+    ignored "$f" || add "$f"
+  done < <(cd "$root" && find . \( -name .git -o -path ./solutions -o -path ./tests -o -path ./grader/hidden \
+                                   -o -path ./.github -o -name 'build*' -type d -o -name grade-results \) -prune \
+                                -o \( -type f -o -type l \) -print0)
+fi
+[ $count -gt 0 ] || die "no files to export from $root"
+
+mkdir -p "$dest_abs"
+(cd "$root" && tar --null -T "$list" -cf -) | (cd "$dest_abs" && tar -xf -)
+
+# The student edition's own files.
+mkdir -p "$dest_abs/.ci" "$dest_abs/.github/workflows"
+cat >"$dest_abs/.ci/run" <<'EOF'
+#!/usr/bin/env bash
+# CI of the student edition: a fresh Debian/Ubuntu machine, no GPU. Installs what the kit needs (scripts/setup.sh),
+# builds, and self-checks labs/ against the committed golden images. The reports land in build/grade-results.
+# Exits 0 whenever grading ran, whatever the score; pass --fail-under F (0..1) to fail below a fraction of the points.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+export DEBIAN_FRONTEND=noninteractive
+exec scripts/kit grade --self-check "$@"
+EOF
+chmod 755 "$dest_abs/.ci/run"
+cp "$root/grader/ci/github-classroom.yml" "$dest_abs/.github/workflows/self-check.yml"
+
+cat >"$dest_abs/STUDENT.md" <<'EOF'
+# Student edition
+
+This is the student edition of the kit: the framework, the labs' starter code, and the grading cases with their
+golden images. It has no reference solutions, no test suite and no hidden grading cases.
+
+## Your work
+
+- Edit the files in `labs/<lab>/` (for example `labs/lab01_gooch/`); each TODO has an id such as `L01-T3`, and
+  `labs/<lab>/README.md` describes it. Only `labs/` is graded: the instructor's grader builds your `labs/` against
+  its own copy of the framework, shaders and data, so changes anywhere else are not seen.
+- `build/bin/lab01` opens your lab in a window (shaders reload when saved); `build/bin/lab01 list` shows its
+  parameters and named cases; `build/bin/lab01 render --case phong --out phong.png` renders one headless.
+
+## Self-check
+
+```sh
+scripts/kit grade                  # install what is missing, build, grade every lab
+scripts/kit grade --labs lab01     # one lab
+```
+
+The self-check renders each public case of `grader/cases/<lab>.json` with your lab and compares the image with the
+committed golden image in `grader/golden/<lab>/`, rendered by the reference solution. The tolerance is wide enough
+for another GPU or driver. It prints a score table and writes `build/grade-results/`: `report.html` (your image,
+the expected one and their difference side by side), `results.json`, `junit.xml`, and the images of each case.
+Every push runs the same check on GitHub (`.github/workflows/self-check.yml`, also `.ci/run`), and the reports
+are attached to the run as the artifact `grade-results`.
+
+## What the instructor's grade adds
+
+- **Hidden cases**, drawn from a seed that is kept secret until after the due date: other settings (models,
+  scales, camera, mesh resolution, ...) for the same TODOs. Solve each TODO in general, not for the public cases.
+- **A live reference**: the reference solution renders each case on the grading machine, and your image must
+  match it with a tight tolerance.
+- **Timing**: cases whose frame time is compared with the reference's.
+- Each lab runs in a sandbox with limits on time, memory and output.
+
+So a full self-check score is a good sign, not a guarantee; a case that fails the self-check will almost surely fail
+the grade too.
+EOF
+
+if [ -f "$dest_abs/README.md" ]; then
+  readme=$(cat "$dest_abs/README.md")
+  {
+    echo "> **Student edition**: see [STUDENT.md](STUDENT.md). The reference solutions, the test suite and the hidden"
+    echo "> grading cases are not included; \`scripts/kit grade\` self-checks your labs against the golden images."
+    echo
+    printf '%s\n' "$readme"
+  } >"$dest_abs/README.md"
+fi
+
+total=$(cd "$dest_abs" && find . -type f | wc -l | tr -d ' ')
+if [ $skipped_untracked -gt 0 ]; then
+  echo "export-student: left out $skipped_untracked untracked file(s) (git status shows them; --include-untracked adds them)" >&2
+fi
+echo "exported the student edition of $root ($source_kind): $total files in $dest_abs;" \
+     "self-check: cd $dest_abs && scripts/kit grade"

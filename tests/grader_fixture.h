@@ -1,0 +1,99 @@
+#pragma once
+// Kits and submissions made from the reference solution with edits (tests/mutants/<lab>.json), and
+// grading them the way an instructor would.
+#include "catch.hpp"
+#include "gl_fixture.h"
+#include "lab_runner.h"
+#include "test_support.h"
+
+#include "common/json.h"
+#include "grader/grade.h"
+
+#include <fstream>
+#include <map>
+
+namespace gsv::test {
+
+inline Json mutant_spec(const std::string& lab) { return read_json_file(source_root() / "tests" / "mutants" / (lab + ".json")); }
+
+// Applies one {find, replace} edit (or each of "edits") to the file named by `edit`'s "file".
+inline void apply_edits(const std::filesystem::path& lab_folder, const Json& edit) {
+    const std::filesystem::path file = lab_folder / edit.string_at("file");
+    std::string text = read_text(file);
+    auto one = [&](const Json& e) {
+        const std::string find = e.string_at("find");
+        const auto at = text.find(find);
+        if (at == std::string::npos) FAIL("'" << find << "' not found in " << file);
+        std::string replace = e.string_at("replace");
+        for (auto kit = replace.find("@KIT@"); kit != std::string::npos; kit = replace.find("@KIT@"))
+            replace.replace(kit, 5, source_root().string());
+        text.replace(at, find.size(), replace);
+    };
+    if (const Json* edits = edit.find("edits")) {
+        for (const Json& e : edits->as_array()) one(e);
+    } else {
+        one(edit);
+    }
+    std::ofstream(file, std::ios::binary) << text;
+}
+
+// A kit whose labs/<lab_dir> is the solution with edits: GSV_ROOT points the kit's built <lab> binary at
+// it, so shader edits need no build. The reference reads the untouched solution copied beside it.
+class EditedKit {
+public:
+    EditedKit(const std::string& lab_dir, const Json& edit) {
+        const auto root = dir_.path("kit");
+        std::filesystem::create_directories(root / "solutions");
+        std::filesystem::create_directories(root / "labs");
+        std::filesystem::copy(source_root() / "shaders", root / "shaders", std::filesystem::copy_options::recursive);
+        std::filesystem::copy(source_root() / "data", root / "data", std::filesystem::copy_options::recursive);
+        std::filesystem::copy(source_root() / "solutions" / lab_dir, root / "solutions" / lab_dir, std::filesystem::copy_options::recursive);
+        std::filesystem::copy(source_root() / "solutions" / lab_dir, root / "labs" / lab_dir, std::filesystem::copy_options::recursive);
+        apply_edits(root / "labs" / lab_dir, edit);
+        setenv("GSV_ROOT", root.c_str(), 1);
+    }
+    ~EditedKit() { unsetenv("GSV_ROOT"); }
+    std::filesystem::path out() const { return dir_.path("out"); }
+
+private:
+    TempDir dir_;
+};
+
+// A submission: a folder whose labs/<lab_dir> is the solution with edits, and extra files copied in.
+class Submission {
+public:
+    Submission(const std::string& lab_dir, const Json* edit) {
+        const auto folder = dir_.path("submission/labs") / lab_dir;
+        std::filesystem::create_directories(folder.parent_path());
+        std::filesystem::copy(source_root() / "solutions" / lab_dir, folder, std::filesystem::copy_options::recursive);
+        if (!edit) return;
+        apply_edits(folder, *edit);
+        if (const Json* files = edit->find("copy_files"))
+            for (const auto& [name, from] : files->as_object())
+                std::filesystem::copy_file(source_root() / from.as_string(), folder / name);
+    }
+    std::filesystem::path path() const { return dir_.path("submission"); }
+    std::filesystem::path out() const { return dir_.path("out"); }
+
+private:
+    TempDir dir_;
+};
+
+inline GradeOptions instructor_options(const std::string& lab, const std::filesystem::path& out) {
+    GradeOptions options;
+    options.kit_root = source_root();
+    options.bin_dir = bin_dir();
+    options.out_dir = out;
+    options.labs = {lab};
+    options.seed = 20261122;
+    return options;
+}
+
+inline std::map<std::string, CaseResult> by_name(const GradeReport& report, const std::string& kind = "image") {
+    std::map<std::string, CaseResult> results;
+    for (const auto& r : report.results)
+        if (r.kind == kind) results[r.name] = r;
+    return results;
+}
+
+}  // namespace gsv::test

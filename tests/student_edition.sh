@@ -1,0 +1,116 @@
+#!/usr/bin/env bash
+# The student edition works: `scripts/kit export-student` leaves out solutions/, tests/ and grader/hidden/; the
+# export configures and builds on its own; its self-check (golden references) gives the shipped lab01 starter 0
+# points and the reference solution, copied into the export's labs/, full marks. Slow: it builds the export
+# (lab01 and gsv-grade only, 2 cores). Exit 0: pass, 1: fail.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/gsv-student-edition.XXXXXX")
+trap 'rm -rf "$tmp"' EXIT
+kit=$tmp/export
+log=$tmp/log
+unset GSV_ROOT  # the labs must find their shaders in the export, not wherever this points
+start=$SECONDS
+
+fail() {
+  echo "student_edition: FAIL: $*" >&2
+  if [ -s "$log" ]; then echo "--- last output:" >&2; tail -n 40 "$log" >&2; fi
+  exit 1
+}
+step() { echo "student_edition: [$((SECONDS - start))s] $*"; }
+run() { "$@" >"$log" 2>&1; }
+
+# The export. Untracked files too: this tests the working tree, new files not yet committed included.
+step "export"
+run "$root/scripts/kit" export-student --include-untracked "$kit" || fail "scripts/kit export-student failed"
+tail -n 1 "$log"
+for p in solutions tests grader/hidden build grade-results .git; do
+  [ ! -e "$kit/$p" ] || fail "$p was exported"
+done
+for p in labs/lab01_gooch grader/golden/lab01 grader/cases/lab01.json STUDENT.md .github/workflows/self-check.yml; do
+  [ -e "$kit/$p" ] || fail "$p is missing from the export"
+done
+grep -q "scripts/kit grade" "$kit/.ci/run" || fail ".ci/run of the export does not run the self-check"
+if ! { [ -x "$kit/.ci/run" ] && [ -x "$kit/scripts/kit" ]; }; then fail "scripts lost their executable bit"; fi
+
+# DEST must be new or empty, and outside the kit.
+run "$root/scripts/kit" export-student "$kit" && fail "exporting into a non-empty folder was not refused"
+grep -q "not empty" "$log" || fail "no clear message for a non-empty DEST"
+run "$root/scripts/kit" export-student "$root/build-student-export-test" && fail "exporting into the kit was not refused"
+[ ! -e "$root/build-student-export-test" ] || fail "a refused export left $root/build-student-export-test behind"
+
+# Configure and build the export on its own: no solutions/, no tests/.
+step "configure the export"
+run cmake -S "$kit" -B "$kit/build" -G Ninja -DCMAKE_BUILD_TYPE=Release || fail "the export does not configure"
+step "build lab01 and gsv-grade"
+run cmake --build "$kit/build" --target lab01 gsv-grade -j 2 || fail "the export does not build"
+[ ! -e "$kit/build/bin/lab01_solution" ] || fail "the export built lab01_solution"
+
+# Grades the export's labs (self-check, as a student would) into $1 and checks results.json (Gradescope shape;
+# report.json, where written, for the mode): $2 = zero (every check 0 points) or full (every check full marks).
+grade() {
+  local out=$1 expect=$2 rc=0
+  run "$kit/build/bin/gsv-grade" --kit "$kit" --bin "$kit/build/bin" --out "$out" --labs lab01 || rc=$?
+  [ $rc -eq 0 ] || fail "gsv-grade exited $rc on the $expect run"
+  python3 - "$out" "$expect" <<'PY' || fail "the $expect run's results are wrong (above)"
+import json, os, sys
+
+out, expect = sys.argv[1], sys.argv[2]
+problems = []
+results = json.load(open(os.path.join(out, "results.json")))
+tests = results.get("tests", [])
+score = float(results.get("score", -1))
+top = sum(float(t.get("max_score", 0)) for t in tests)
+if not tests or top <= 0:
+    problems.append(f"no graded checks in results.json ({len(tests)} tests, {top:g} points)")
+for t in tests:
+    if t.get("visibility") in ("after_due_date", "hidden"):
+        problems.append(f"hidden check in a self-check: {t.get('name')}")
+    s, m = float(t.get("score", 0)), float(t.get("max_score", 0))
+    if (expect == "zero" and s != 0) or (expect == "full" and s < m):
+        first = str(t.get("output", "")).strip().splitlines()[:3]
+        problems.append(f"{t.get('name')}: {s:g} / {m:g}: " + " | ".join(first))
+if expect == "zero" and score != 0:
+    problems.append(f"score {score:g}, expected 0")
+if expect == "full" and abs(score - top) > 1e-9:
+    problems.append(f"score {score:g}, expected the maximum {top:g}")
+
+# The mode: self-check against golden images (there is no reference solution in the student edition).
+def find(node, key, found):
+    if isinstance(node, dict):
+        for k, v in node.items():
+            if k == key and isinstance(v, str):
+                found.append(v)
+            find(v, key, found)
+    elif isinstance(node, list):
+        for v in node:
+            find(v, key, found)
+    return found
+mode = "no report.json; golden references, as no lab01_solution was built"
+report_path = os.path.join(out, "report.json")
+if os.path.exists(report_path):
+    report = json.load(open(report_path))
+    modes = [report["mode"]] if isinstance(report, dict) and isinstance(report.get("mode"), str) else find(report, "mode", [])
+    references = set(find(report, "reference", []))
+    if modes and any(m != "self-check" for m in modes):
+        problems.append(f"mode {modes}, expected self-check")
+    if references - {"golden"}:
+        problems.append(f"references {sorted(references)}, expected golden only")
+    mode = f"mode {modes[0] if modes else '?'}, references {sorted(references) or '?'}"
+for p in problems:
+    print("  " + p)
+print(f"student_edition: {expect}: {score:g} / {top:g} points over {len(tests)} checks ({mode})")
+sys.exit(1 if problems else 0)
+PY
+}
+
+step "self-check the starter"
+grade "$tmp/grade-starter" zero
+
+step "copy solutions/lab01_gooch into the export's labs/, rebuild lab01"
+cp "$root"/solutions/lab01_gooch/* "$kit/labs/lab01_gooch/"
+run cmake --build "$kit/build" --target lab01 -j 2 || fail "the export does not build with the solution in labs/"
+step "self-check the solution"
+grade "$tmp/grade-solution" full
+
+step "passed"

@@ -1,0 +1,383 @@
+// The grader's reports, written from a hand-built GradeReport: each must parse as what it claims to
+// be, keep hidden checks hidden, and carry student output (which may hold anything) safely escaped.
+#include "catch.hpp"
+#include "test_support.h"
+
+#include "common/error.h"
+#include "common/image.h"
+#include "common/json.h"
+#include "grader/grade_result.h"
+#include "grader/report.h"
+#include "grader/report_format.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <set>
+#include <sstream>
+#include <string>
+
+using namespace gsv;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kHostileOutput = "line 1\n<script>alert(1)</script> & \"quotes\" 'single'\x01 end\xff\n";
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+std::size_t count(const std::string& text, const std::string& part) {
+    std::size_t n = 0;
+    for (auto at = text.find(part); at != std::string::npos; at = text.find(part, at + part.size())) ++n;
+    return n;
+}
+
+Image solid(int w, int h, std::uint8_t r, std::uint8_t g, std::uint8_t b) {
+    Image image(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            std::uint8_t* p = image.at(x, y);
+            p[0] = r, p[1] = g, p[2] = b, p[3] = 255;
+        }
+    return image;
+}
+
+CaseResult make_case(const std::string& lab, const std::string& name, const std::string& todo, double points,
+                     double max_points, CaseStatus status) {
+    CaseResult r;
+    r.lab = lab;
+    r.name = name;
+    r.todo = todo;
+    r.points = points;
+    r.max_points = max_points;
+    r.status = status;
+    r.reference = "live";
+    r.seconds = 0.25;
+    return r;
+}
+
+// Five checks over two labs, images written under out_dir: score 5 of 19.
+GradeReport sample_report(const fs::path& out_dir) {
+    GradeReport report;
+    report.submission = "/submissions/alice";
+    report.mode = "instructor";
+    report.seed = 12345678901234567890ull;  // above 2^53: a double would change it
+    report.hidden_included = true;
+    report.timing_included = true;
+    report.sandbox = "user namespaces, no network";
+    report.seconds = 12.5;
+    report.builds.push_back({"lab01", true, "", 3.0});
+    report.builds.push_back({"lab02", false, "[1/3] compiling\nlab02/main.cpp:12:5: error: expected ';'\nmore", 1.0});
+
+    CaseResult phong = make_case("lab01", "phong", "L01-T3", 5, 5, CaseStatus::Passed);
+    phong.description = "Phong shading of a sphere";
+    phong.settings = {"shininess=32"};
+    phong.detail = "max diff 1, 0 of 4 px differ (0.00%), PSNR inf dB, SSIM 1.000";
+    phong.image.done = true;
+    phong.image.tolerance = {2, 0.001};
+    phong.image.total_pixels = 4;
+    phong.image.psnr = std::numeric_limits<double>::infinity();
+    phong.image.ssim = 1.0;
+    phong.actual_png = "lab01/phong/actual.png";
+    phong.expected_png = "lab01/phong/expected.png";
+
+    CaseResult shadow = make_case("lab01", "shadow", "L01-T4", 0, 5, CaseStatus::WrongImage);
+    shadow.visibility = "hidden";
+    shadow.detail = "max diff 200, 3 of 4 px differ (75.00%) " + std::string(200, 'x');
+    shadow.output = kHostileOutput;
+    shadow.image.done = true;
+    shadow.image.tolerance = {2, 0.001};
+    shadow.image.max_channel_diff = 200;
+    shadow.image.differing_pixels = 3;
+    shadow.image.total_pixels = 4;
+    shadow.image.psnr = 9.5;
+    shadow.image.ssim = 0.25;
+    shadow.image.diff_x0 = 0, shadow.image.diff_y0 = 0, shadow.image.diff_x1 = 1, shadow.image.diff_y1 = 1;
+    shadow.actual_png = "lab01/shadow/actual.png";
+    shadow.expected_png = "lab01/shadow/expected.png";
+    shadow.diff_png = "lab01/shadow/diff.png";  // never written: the report must say so, not throw
+
+    CaseResult slow = make_case("lab01", "phong", "L01-T3", 0, 2, CaseStatus::TooSlow);
+    slow.kind = "timing";
+    slow.detail = "1.80x the reference (allowed 1.50x)";
+    slow.timing = {true, 9.0, 5.0, 1.8, 1.5, 7, true};
+
+    CaseResult build = make_case("lab02", "basic", "L02-T1", 0, 4, CaseStatus::BuildError);
+    build.detail = "lab02/main.cpp:12:5: error: expected ';'";
+    build.output = report.builds[1].log;
+    CaseResult reference = make_case("lab02", "fancy", "L02-T2", 0, 3, CaseStatus::ReferenceFailed);
+    reference.detail = "the reference solution failed: crash";
+
+    report.results = {phong, shadow, slow, build, reference};
+
+    write_png(out_dir / phong.actual_png, solid(2, 2, 200, 10, 10));
+    write_png(out_dir / phong.expected_png, solid(2, 2, 200, 10, 10));
+    write_png(out_dir / shadow.actual_png, solid(2, 2, 0, 0, 0));
+    write_png(out_dir / shadow.expected_png, solid(2, 2, 0, 200, 0));
+    return report;
+}
+
+// Exit status and stdout of a shell command.
+std::pair<int, std::string> run(const std::string& command) {
+    std::string output;
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe) return {-1, ""};
+    char buffer[4096];
+    while (std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) output.append(buffer, n);
+    return {pclose(pipe), output};
+}
+
+bool have_python3() { return std::system("command -v python3 >/dev/null 2>&1") == 0; }
+
+}  // namespace
+
+TEST_CASE("grader reports: status names are short, distinct and lower case but for NaN", "[grader]") {
+    std::set<std::string> names;
+    for (int s = 0; s <= static_cast<int>(CaseStatus::ReferenceFailed); ++s) names.insert(status_name(CaseStatus(s)));
+    CHECK(names.size() == static_cast<std::size_t>(CaseStatus::ReferenceFailed) + 1);
+    CHECK(std::string(status_name(CaseStatus::Passed)) == "passed");
+    CHECK(std::string(status_name(CaseStatus::ShaderCompileError)) == "shader compile error");
+    CHECK(std::string(status_name(CaseStatus::NonFinite)) == "NaN");
+    CHECK(std::string(status_name(CaseStatus::TooSlow)) == "too slow");
+    CHECK(std::string(status_name(CaseStatus::ReferenceFailed)) == "reference failed");
+}
+
+TEST_CASE("grader reports: score and max score sum the checks", "[grader]") {
+    test::TempDir dir;
+    const GradeReport report = sample_report(dir.path());
+    CHECK(report.score() == 5);
+    CHECK(report.max_score() == 19);
+    CHECK(GradeReport{}.score() == 0);
+}
+
+TEST_CASE("grader reports: text helpers", "[grader]") {
+    // RFC 4648 test vectors.
+    CHECK(base64("") == "");
+    CHECK(base64("f") == "Zg==");
+    CHECK(base64("fo") == "Zm8=");
+    CHECK(base64("foo") == "Zm9v");
+    CHECK(base64("foob") == "Zm9vYg==");
+    CHECK(base64("foobar") == "Zm9vYmFy");
+    CHECK(base64(std::string("\xff\x00\x80", 3)) == "/wCA");
+    CHECK(format_points(5) == "5");
+    CHECK(format_points(2.5) == "2.5");
+    CHECK(format_points(1.0 / 3.0) == "0.33");
+    CHECK(valid_utf8("ok \xc3\xa9 \xff \xc0\xaf \xed\xa0\x80") == "ok \xc3\xa9 \xEF\xBF\xBD \xEF\xBF\xBD\xEF\xBF\xBD "
+                                                                  "\xEF\xBF\xBD\xEF\xBF\xBD\xEF\xBF\xBD");
+    CHECK(xml_safe_text("a\x01\x1b[31m\tb\n\xef\xbf\xbe") == "a[31m\tb\n");
+    CHECK(one_line("a\nb\x1b", 10) == "a b");
+    CHECK(one_line("\xc3\xa9\xc3\xa9\xc3\xa9", 6) == "\xc3\xa9\xc3\xa9\xc3\xa9");
+    CHECK(one_line("\xc3\xa9\xc3\xa9\xc3\xa9", 5) == "\xc3\xa9...");
+    CHECK(one_line("a\xc3\xa9\xc3\xa9\xc3\xa9", 5) == "a...");  // cut before, never inside, a character
+    CHECK(first_error_line("\n[1/2] cc\nx.cpp:3: Error: bad\n") == "x.cpp:3: Error: bad");
+    CHECK(first_error_line("\n  \nwarning only\n") == "warning only");
+}
+
+TEST_CASE("grader reports: Gradescope results.json", "[grader]") {
+    test::TempDir dir;
+    const GradeReport report = sample_report(dir.path());
+    const std::string text = gradescope_json(report);
+    const Json json = parse_json(text, "results.json");
+    CHECK(json.number_at("score") == 5);
+    CHECK(json.string_at("output") == "1 of 4 public checks passed; did not build: lab02; some checks could not be "
+                                      "graded (the reference failed), tell the course staff.");
+    const Json& tests = json.array_at("tests");
+    REQUIRE(tests.size() == 5);
+
+    const Json& phong = tests.at(0);
+    CHECK(phong.string_at("name") == "lab01/phong (L01-T3)");
+    CHECK(phong.number_at("score") == 5);
+    CHECK(phong.number_at("max_score") == 5);
+    CHECK(phong.string_at("status") == "passed");
+    CHECK(phong.string_at("visibility") == "visible");
+    REQUIRE(phong.array_at("tags").size() == 1);
+    CHECK(phong.array_at("tags").at(0).as_string() == "L01-T3");
+
+    const Json& shadow = tests.at(1);
+    CHECK(shadow.string_at("name") == "lab01/shadow (L01-T4)");
+    CHECK(shadow.string_at("status") == "failed");
+    CHECK(shadow.string_at("visibility") == "after_due_date");
+    CHECK(shadow.number_at("max_score") == 5);
+    const std::string output = shadow.string_at("output");
+    CHECK(output.rfind("wrong image: max diff 200", 0) == 0);
+    CHECK(contains(output, "\nline 1\n<script>alert(1)</script> & \"quotes\""));
+    CHECK(contains(output, "\x01 end"));  // JSON escapes it as \u0001 and parsing gives it back
+    CHECK_FALSE(contains(text, "\xff"));  // invalid UTF-8 never reaches the file
+
+    CHECK(tests.at(2).string_at("name") == "lab01/phong [time] (L01-T3)");
+    CHECK(tests.at(2).string_at("status") == "failed");
+    CHECK(tests.at(3).string_at("output").rfind("build error: lab02/main.cpp:12:5", 0) == 0);
+    CHECK(tests.at(4).string_at("output").rfind("reference failed:", 0) == 0);
+
+    // A misspelt visibility hides the check rather than showing it.
+    GradeReport typo = report;
+    typo.results[0].visibility = "Hidden";
+    const Json typo_json = parse_json(gradescope_json(typo), "results.json");
+    CHECK(typo_json.array_at("tests").at(0).string_at("visibility") == "after_due_date");
+    CHECK(contains(typo_json.string_at("output"), "0 of 3 public checks passed"));
+}
+
+TEST_CASE("grader reports: report.json carries every measurement", "[grader]") {
+    test::TempDir dir;
+    const GradeReport report = sample_report(dir.path());
+    const Json json = parse_json(report_json(report), "report.json");
+    CHECK(json.string_at("mode") == "instructor");
+    CHECK(json.string_at("seed") == "12345678901234567890");
+    CHECK(json.string_at("sandbox") == "user namespaces, no network");
+    CHECK(json.number_at("seconds") == 12.5);
+    CHECK(json.number_at("max_score") == 19);
+    REQUIRE(json.array_at("builds").size() == 2);
+    CHECK_FALSE(json.array_at("builds").at(1).bool_at("ok"));
+    CHECK(contains(json.array_at("builds").at(1).string_at("log"), "expected ';'"));
+
+    const Json& results = json.array_at("results");
+    REQUIRE(results.size() == 5);
+    const Json& phong = results.at(0);
+    CHECK(phong.object_at("image").find("psnr")->is_null());  // +inf: identical
+    CHECK(phong.object_at("image").number_at("ssim") == 1.0);
+    CHECK(phong.object_at("image").find("diff_box")->is_null());
+    CHECK(phong.string_at("actual_png") == "lab01/phong/actual.png");
+    CHECK(phong.array_at("settings").at(0).as_string() == "shininess=32");
+    CHECK(phong.string_at("description") == "Phong shading of a sphere");
+
+    const Json& shadow = results.at(1);
+    CHECK(shadow.string_at("status") == "wrong image");
+    CHECK(shadow.string_at("visibility") == "hidden");
+    CHECK(shadow.object_at("image").number_at("ssim") == 0.25);
+    CHECK(shadow.object_at("image").number_at("psnr") == 9.5);
+    CHECK(shadow.object_at("image").int_at("differing_pixels") == 3);
+    CHECK(shadow.object_at("image").object_at("tolerance").number_at("max_differing_fraction") == 0.001);
+    CHECK(shadow.object_at("image").object_at("diff_box").int_at("x1") == 1);
+    CHECK(shadow.string_at("diff_png") == "lab01/shadow/diff.png");
+
+    const Json& slow = results.at(2);
+    CHECK(slow.string_at("kind") == "timing");
+    CHECK(slow.object_at("timing").number_at("ratio") == 1.8);
+    CHECK(slow.object_at("timing").number_at("max_ratio") == 1.5);
+    CHECK(slow.object_at("timing").int_at("rounds") == 7);
+    CHECK(slow.object_at("timing").bool_at("remeasured"));
+    CHECK(results.at(4).bool_at("kit_fault"));
+}
+
+TEST_CASE("grader reports: JUnit XML is well formed and counts failures and errors", "[grader]") {
+    test::TempDir dir;
+    const GradeReport report = sample_report(dir.path());
+    const std::string xml = junit_xml(report);
+    CHECK(contains(xml, "<testsuites name=\"gsv-grade\" tests=\"5\" failures=\"3\" errors=\"1\""));
+    CHECK(contains(xml, "<testsuite name=\"lab01\" tests=\"3\" failures=\"2\" errors=\"0\""));
+    CHECK(contains(xml, "<testsuite name=\"lab02\" tests=\"2\" failures=\"1\" errors=\"1\""));
+    CHECK(contains(xml, "<failure message=\"wrong image: max diff 200"));
+    CHECK(contains(xml, "type=\"wrong image\""));
+    CHECK(contains(xml, "<error message=\"reference failed: the reference solution failed: crash\" "
+                        "type=\"reference failed\">"));
+    CHECK(contains(xml, "&lt;script&gt;alert(1)&lt;/script&gt; &amp; \"quotes\""));
+    CHECK(contains(xml, "name=\"phong [time] (L01-T3)\" classname=\"lab01\""));
+    CHECK_FALSE(contains(xml, "<script>"));
+    CHECK_FALSE(contains(xml, "\x01"));
+    CHECK_FALSE(contains(xml, "\xff"));
+
+    if (!have_python3()) {
+        WARN("python3 is not on PATH: the JUnit XML was not parsed by a real XML parser");
+        return;
+    }
+    const fs::path file = dir.write("junit.xml", xml);
+    const auto [status, out] =
+        run("python3 -c \"import xml.etree.ElementTree as E,sys; r=E.parse(sys.argv[1]).getroot(); "
+            "print(len(r.findall('testsuite')), len(list(r.iter('testcase'))), len(list(r.iter('failure'))), "
+            "len(list(r.iter('error'))), r.find('testsuite/testcase[2]/failure').text.count('<script>'))\" '" +
+            file.string() + "' 2>&1");
+    INFO(out);
+    CHECK(status == 0);
+    CHECK(out == "2 5 3 1 1\n");  // the student's text survives the round trip, unescaped
+}
+
+TEST_CASE("grader reports: HTML is self-contained and escapes student output", "[grader]") {
+    test::TempDir dir;
+    const GradeReport report = sample_report(dir.path());
+    std::string page;
+    REQUIRE_NOTHROW(page = html_report(report, dir.path()));
+    CHECK_FALSE(contains(page, "<script"));
+    CHECK(contains(page, "&lt;script&gt;alert(1)&lt;/script&gt; &amp; &quot;quotes&quot;"));
+    CHECK_FALSE(contains(page, "\x01"));
+    // Four images were written (phong's two, shadow's two); each is embedded, starting with the PNG
+    // signature in base64.
+    CHECK(count(page, "src=\"data:image/png;base64,iVBORw0KGgo") == 4);
+    CHECK(count(page, "src=\"") == 4);  // and nothing else is loaded
+    CHECK_FALSE(contains(page, "src=\"http"));
+    CHECK_FALSE(contains(page, "href=\"http"));
+    CHECK_FALSE(contains(page, "<link"));
+    CHECK(contains(page, "lab01/shadow/diff.png is missing"));
+    CHECK(contains(page, "<details><summary>images</summary>"));
+    CHECK(contains(page, "12345678901234567890"));
+    CHECK(contains(page, "5 / 19"));
+    CHECK(contains(page, "user namespaces, no network"));
+    CHECK(contains(page, "<th>SSIM</th><td>0.2500</td>"));
+    CHECK(contains(page, "<th>PSNR</th><td>9.50 dB</td>"));
+    CHECK(contains(page, "x 0&ndash;1, y 0&ndash;1"));
+    CHECK(contains(page, "<td class=\"status\">too slow</td>"));
+
+    // With no images at all (a folder that does not exist) every figure is a note.
+    std::string bare;
+    REQUIRE_NOTHROW(bare = html_report(report, dir.path("nowhere")));
+    CHECK(count(bare, "data:image/png") == 0);
+    CHECK(contains(bare, "lab01/phong/actual.png is missing"));
+
+    // A file that is not a PNG is not embedded either.
+    dir.write("lab01/phong/actual.png", "<svg onload=alert(1)>");
+    const std::string fake = html_report(report, dir.path());
+    CHECK(contains(fake, "lab01/phong/actual.png is not a PNG file"));
+    CHECK(count(fake, "data:image/png;base64,") == 3);
+}
+
+TEST_CASE("grader reports: score table has rows, per-lab totals and the run's setup", "[grader]") {
+    test::TempDir dir;
+    const GradeReport report = sample_report(dir.path());
+    const std::string table = score_table(report);
+    INFO(table);
+    std::istringstream lines(table);
+    std::string header;
+    std::getline(lines, header);
+    CHECK(header.rfind("lab    check         todo    status            points  detail", 0) == 0);
+    CHECK(contains(table, "lab01  phong [time]  L01-T3  too slow             0/2  1.80x the reference"));
+    CHECK(contains(table, "lab02  fancy         L02-T2  reference failed     0/3"));
+    // The long detail is cut to 90 bytes, "..." included.
+    const std::string cut = "max diff 200, 3 of 4 px differ (75.00%) " + std::string(47, 'x') + "...\n";
+    CHECK(contains(table, cut));
+    CHECK_FALSE(contains(table, std::string(48, 'x')));
+    CHECK(contains(table, "  lab01       5 / 12      1 of 3 checks passed\n"));
+    CHECK(contains(table, "  lab02       0 / 7       0 of 2 checks passed\n"));
+    CHECK(contains(table, "builds that failed\n  lab02: lab02/main.cpp:12:5: error: expected ';'\n"));
+    CHECK(contains(table, "total         5 / 19  (26%)\n"));
+    CHECK(contains(table, "mode     instructor, hidden cases, timing\n"));
+    CHECK(contains(table, "seed     12345678901234567890"));
+    CHECK(contains(table, "sandbox  user namespaces, no network\n"));
+    CHECK_FALSE(contains(table, "\x01"));
+
+    GradeReport self_check = report;
+    self_check.hidden_included = false;
+    CHECK_FALSE(contains(score_table(self_check), "seed"));
+}
+
+TEST_CASE("grader reports: write_reports writes four files and names the one it cannot write", "[grader]") {
+    test::TempDir dir;
+    const GradeReport report = sample_report(dir.path());
+    const fs::path out = dir.path("reports/nested");
+    write_reports(report, out);
+    for (const char* name : {"results.json", "report.json", "junit.xml", "report.html"}) {
+        INFO(name);
+        CHECK(fs::file_size(out / name) > 100);
+    }
+    CHECK(parse_json(test::read_text(out / "results.json"), "results.json").number_at("score") == 5);
+    CHECK(test::read_text(out / "junit.xml") == junit_xml(report));
+
+    // A folder where results.json should go: even root cannot open it as a file.
+    const fs::path blocked = dir.path("blocked");
+    fs::create_directories(blocked / "results.json");
+    const std::string message = test::gsv_error_message([&] { write_reports(report, blocked); });
+    CHECK(contains(message, "results.json"));
+    CHECK(contains(message, "cannot write report"));
+
+    // The output folder is a file.
+    const fs::path file = dir.write("plain-file", "x");
+    CHECK(contains(test::gsv_error_message([&] { write_reports(report, file); }), "plain-file"));
+}

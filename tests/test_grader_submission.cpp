@@ -1,0 +1,134 @@
+// Proof that the grader works on C++ submissions: the grader builds each lab of a submission against the
+// kit, so a compile error is that lab's build error, and faults in student C++ (a crash, a memory bomb,
+// a flood of output, a copied golden image) each get their own status while the rest is graded.
+#include "grader_fixture.h"
+
+#include "grader/batch.h"
+#include "grader/report.h"
+
+#include <unistd.h>
+
+using namespace gsv;
+
+namespace {
+
+std::string probe_value(const std::string& output, const std::string& key) {
+    const auto at = output.find("probe " + key + "=");
+    if (at == std::string::npos) return "<not printed>";
+    const auto from = at + 7 + key.size();
+    return output.substr(from, output.find('\n', from) - from);
+}
+
+}  // namespace
+
+TEST_CASE("grader: C++ faults in a submission each get their own status; the sandbox holds", "[grader][submission]") {
+    const Json spec = test::mutant_spec("lab01");
+    const Json& faults = spec.object_at("cpp_faults");
+    test::Submission submission(spec.string_at("lab_dir"), &faults);
+    GradeOptions options = test::instructor_options("lab01", submission.out());
+    options.submission = submission.path();
+    options.hidden = false;
+    options.timing = false;
+    options.timeout_s = 30;
+    const GradeReport report = grade(options);
+    REQUIRE(report.builds.size() == 1);
+    INFO(report.builds[0].log);
+    REQUIRE(report.builds[0].ok);
+    const auto results = test::by_name(report);
+    for (const auto& [name, status] : faults.object_at("expect").as_object()) {
+        REQUIRE(results.count(name) == 1);
+        const CaseResult& r = results.at(name);
+        INFO("case " << name << ": " << r.detail << "\n" << r.output.substr(0, 400));
+        CHECK(std::string(status_name(r.status)) == status.as_string());
+    }
+    CHECK(results.at("per-vertex").output.size() < 80 * 1024);  // the flood was capped
+
+    // What the lab saw from inside the sandbox (case "renormalize").
+    const std::string seen = results.at("renormalize").output;
+    INFO("sandbox: " << report.sandbox << "\n" << seen);
+    if (report.sandbox.find("namespaces (") != std::string::npos) {
+        CHECK(probe_value(seen, "solutions") == "hidden");
+        CHECK(probe_value(seen, "network") == "unreachable");
+    } else {
+        WARN("this platform refuses unshare: the namespace walls are not tested here");
+    }
+    if (geteuid() == 0 && report.sandbox.find("runs as nobody") != std::string::npos) CHECK(probe_value(seen, "uid") == "65534");
+    CHECK(probe_value(seen, "home").find("gsv-case-") != std::string::npos);  // a fresh working folder
+}
+
+TEST_CASE("grader: a submission that hands in a golden image is caught", "[grader][submission]") {
+    const Json spec = test::mutant_spec("lab01");
+    const Json& fault = spec.object_at("copy_fault");
+    test::Submission submission(spec.string_at("lab_dir"), &fault);
+    GradeOptions options = test::instructor_options("lab01", submission.out());
+    options.submission = submission.path();
+    options.timing = false;
+    const GradeReport report = grade(options);
+    REQUIRE(report.builds.at(0).ok);
+    int hidden = 0;
+    for (const auto& r : report.results) {
+        INFO(r.name << ": " << status_name(r.status) << " " << r.detail);
+        bool may_pass = false;
+        for (const Json& p : fault.array_at("passes").as_array()) may_pass = may_pass || p.as_string() == r.name;
+        if (may_pass) continue;
+        // Every other case, and above all every hidden one drawn from the seed, fails as a copy.
+        CHECK(std::string(status_name(r.status)) == fault.string_at("status"));
+        hidden += r.visibility == "hidden";
+    }
+    CHECK(hidden >= 3);
+}
+
+TEST_CASE("grader: a compile error is the lab's build error, with the file and line", "[grader][submission]") {
+    const Json spec = test::mutant_spec("lab01");
+    const Json& fault = spec.object_at("build_error");
+    test::Submission submission(spec.string_at("lab_dir"), &fault);
+    GradeOptions options = test::instructor_options("lab01", submission.out());
+    options.submission = submission.path();
+    const GradeReport report = grade(options);
+    REQUIRE(report.builds.size() == 1);
+    CHECK_FALSE(report.builds[0].ok);
+    REQUIRE(!report.results.empty());
+    for (const auto& r : report.results) {
+        INFO(r.name << " " << r.kind << ": " << r.detail);
+        CHECK(std::string(status_name(r.status)) == fault.string_at("status"));
+        if (r.kind == "image") CHECK(r.detail.find(fault.string_at("error_mentions")) != std::string::npos);
+        CHECK(r.points == 0);
+    }
+    // Results are written even when nothing built.
+    write_reports(report, submission.out());
+    CHECK(std::filesystem::exists(submission.out() / "results.json"));
+}
+
+TEST_CASE("grader: a folder of submissions graded by parallel workers, one class table", "[grader][submission]") {
+    test::TempDir dir;
+    const auto lab_dir = test::mutant_spec("lab01").string_at("lab_dir");
+    // One complete submission, one that is the starter, one without labs/.
+    std::filesystem::create_directories(dir.path("class/ada/labs"));
+    std::filesystem::copy(test::source_root() / "solutions" / lab_dir, dir.path("class/ada/labs") / lab_dir,
+                          std::filesystem::copy_options::recursive);
+    std::filesystem::create_directories(dir.path("class/bob/labs"));
+    std::filesystem::copy(test::source_root() / "labs" / lab_dir, dir.path("class/bob/labs") / lab_dir,
+                          std::filesystem::copy_options::recursive);
+    std::filesystem::create_directories(dir.path("class/cy/empty"));
+    BatchOptions options;
+    options.grader = test::bin_dir() / "gsv-grade";
+    options.submissions = dir.path("class");
+    options.out_dir = dir.path("out");
+    options.workers = 2;
+    options.seed = 5;
+    options.pass_through = {"--labs", "lab01", "--no-timing"};
+    const auto entries = grade_batch(options, nullptr);
+    REQUIRE(entries.size() == 3);
+    CHECK(entries[0].name == "ada");
+    CHECK(entries[0].graded);
+    CHECK(entries[0].max_score > 0);
+    CHECK(entries[0].score == entries[0].max_score);
+    CHECK(entries[1].graded);
+    CHECK(entries[1].score < entries[1].max_score / 4);
+    CHECK_FALSE(entries[2].graded);
+    CHECK(entries[2].problem.find("labs/") != std::string::npos);
+    CHECK(std::filesystem::exists(dir.path("out/ada/report.html")));
+    const std::string csv = class_csv(entries);
+    CHECK(csv.find("\"ada\",yes,") != std::string::npos);
+    CHECK(csv.find("\"cy\",no,") != std::string::npos);
+}
