@@ -246,6 +246,7 @@ void Grading::grade_case(const LabCases& lab, const GradeCase& c, bool live, con
     // The student first: this case's expected image does not exist yet while student code runs.
     const LabRun student = student_.render(lab.lab, lab, c, false, limits(lab, true));
     r.seconds = student.process.seconds;
+    r.frame_ms = student.median_ms;
     r.output = student.process.output;
     r.status = student.status;
     r.detail = student.detail;
@@ -253,6 +254,7 @@ void Grading::grade_case(const LabCases& lab, const GradeCase& c, bool live, con
     Image expected;
     if (live) {
         const LabRun reference = reference_.render(lab.lab + "_solution", lab, c, false, limits(lab, false));
+        r.reference_seconds = reference.process.seconds;
         if (reference.status != CaseStatus::Passed) {
             r.status = CaseStatus::ReferenceFailed;
             r.detail = "the reference solution failed (" + std::string(status_name(reference.status)) + "): " + reference.detail;

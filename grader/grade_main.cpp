@@ -2,6 +2,7 @@
 // reports; or grades a folder of submissions with N workers.
 #include "common/assets.h"
 #include "common/error.h"
+#include "common/json.h"
 #include "grader/batch.h"
 #include "grader/draw.h"
 #include "grader/grade.h"
@@ -51,6 +52,16 @@ void print_progress(const gsv::GradeProgress& p) {
 void print_batch_progress(const gsv::BatchEntry& e, int done, int total) {
     std::fprintf(stderr, "[%2d/%2d] %-24s %s\n", done, total, e.name.c_str(),
                  e.graded ? (std::to_string(e.score) + " / " + std::to_string(e.max_score)).c_str() : e.problem.c_str());
+}
+
+void write_failure_results(const std::filesystem::path& out_dir, const std::string& why) {
+    std::error_code ec;
+    std::filesystem::create_directories(out_dir, ec);
+    gsv::Json root = gsv::Json::object();
+    root["score"] = 0;
+    root["output"] = "The submission could not be graded: " + why;
+    root["tests"] = gsv::Json::array();
+    std::ofstream(out_dir / "results.json") << root.dump(2) << "\n";
 }
 
 std::uint64_t parse_seed(const std::string& text) {
@@ -157,6 +168,9 @@ int main(int argc, char** argv) {
         return 0;
     } catch (const gsv::Error& e) {
         std::fprintf(stderr, "gsv-grade: %s\n", e.what());
+        // A submission that could not be graded at all still gets a results.json saying why (Gradescope
+        // shows it to the student); an internal error leaves one for the instructor too.
+        if (!options.submission.empty() && batch.empty()) write_failure_results(options.out_dir, e.what());
         return 2;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "gsv-grade: internal error: %s\n", e.what());

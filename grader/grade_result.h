@@ -60,6 +60,8 @@ struct CaseResult {
     std::string output;     // what helps the student: compiler messages, the lab's own output
     std::string reference;  // "live" (rendered in this run) or "golden" (committed image)
     double seconds = 0;     // wall time of the student's process
+    double reference_seconds = 0;  // wall time of the live reference's process
+    double frame_ms = 0;           // the student's own frame time inside that process (the rest is start-up)
     ImageCheck image;
     TimingCheck timing;
     // Relative to the output folder; empty when there is none.

@@ -83,6 +83,8 @@ Json result_json(const CaseResult& r) {
     j["output"] = text(r.output);
     j["reference"] = text(r.reference);
     j["seconds"] = number_or_null(r.seconds);
+    j["reference_seconds"] = number_or_null(r.reference_seconds);
+    j["frame_ms"] = number_or_null(r.frame_ms);
     j["image"] = image_json(r.image);
     j["timing"] = timing_json(r.timing);
     j["actual_png"] = text(r.actual_png);

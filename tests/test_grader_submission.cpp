@@ -127,6 +127,8 @@ TEST_CASE("grader: a folder of submissions graded by parallel workers, one class
     CHECK(entries[1].score < entries[1].max_score / 4);
     CHECK_FALSE(entries[2].graded);
     CHECK(entries[2].problem.find("labs/") != std::string::npos);
+    // Even an ungradable submission leaves a results.json that says why (what Gradescope shows the student).
+    CHECK(read_json_file(dir.path("out/cy/results.json")).string_at("output").find("no labs/ folder") != std::string::npos);
     CHECK(std::filesystem::exists(dir.path("out/ada/report.html")));
     const std::string csv = class_csv(entries);
     CHECK(csv.find("\"ada\",yes,") != std::string::npos);

@@ -105,17 +105,18 @@ TEST_CASE("lab01: core and compat profiles, EGL and OSMesa backends give the sam
     }
 }
 
-TEST_CASE("lab01: the solution scores full marks against the goldens and live; the starter fails every TODO", "[labs]") {
-    // A bin folder whose "student" lab01 is the reference solution.
-    const auto bin = test::temp_dir("grade-bin");
-    // Copies, not links: the sandbox covers <bin>/lab01_solution, and a link would cover its target.
-    fs::copy_file(test::bin_dir() / "lab01_solution", bin / "lab01");
-    fs::copy_file(test::bin_dir() / "lab01_solution", bin / "lab01_solution");
+// Tagged [timing] (ctest runs it alone): live grading times the solution against itself.
+TEST_CASE("lab01: the solution scores full marks against the goldens and live, and the starter fails every TODO", "[labs][timing]") {
+    // A submission whose labs/ are the reference solution, built by the grader like any other.
+    const auto submission = test::temp_dir("grade-solution-submission");
+    fs::create_directories(submission / "labs");
+    fs::copy(test::source_root() / "solutions" / "lab01_gooch", submission / "labs" / "lab01_gooch", fs::copy_options::recursive);
     GradeOptions options;
     options.kit_root = test::source_root();
+    options.bin_dir = test::bin_dir();
     options.labs = {"lab01"};
     for (bool self_check : {true, false}) {
-        options.bin_dir = bin;
+        options.submission = submission;
         options.self_check = self_check;
         // Relative, as `scripts/kit grade` passes it: the lab processes run in per-case folders.
         const fs::path out = test::temp_dir(self_check ? "grade-golden" : "grade-live");
@@ -136,7 +137,7 @@ TEST_CASE("lab01: the solution scores full marks against the goldens and live; t
         CHECK(report.score() == report.max_score());
     }
     // The shipped starter: it builds and runs, and every TODO's check fails.
-    options.bin_dir = test::bin_dir();
+    options.submission.clear();
     options.self_check = false;
     options.out_dir = test::temp_dir("grade-starter");
     options.timing = false;
