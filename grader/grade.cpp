@@ -103,11 +103,12 @@ void Grading::load_labs() {
 void Grading::set_up_sandbox(const fs::path& student_bin, const fs::path& student_root) {
     // What student code must not read: the reference, the goldens, hidden cases, other results.
     policy_.hidden = {kit_ / "solutions", kit_ / "grader" / "golden", kit_ / "grader" / "hidden", kit_ / "tests"};
+    // A submission's binaries are built elsewhere: the kit's bin/ can go whole.
+    if (student_bin != bin_) policy_.hidden.push_back(bin_);
     for (const auto& lab : labs_) {
         fs::create_directories(out_ / lab.lab);
         policy_.hidden.push_back(out_ / lab.lab);
-        if (student_bin != bin_) policy_.hidden.push_back(bin_);
-        else if (fs::exists(bin_ / (lab.lab + "_solution"))) policy_.hidden.push_back(bin_ / (lab.lab + "_solution"));
+        if (student_bin == bin_ && fs::exists(bin_ / (lab.lab + "_solution"))) policy_.hidden.push_back(bin_ / (lab.lab + "_solution"));
     }
 #if defined(__SANITIZE_ADDRESS__)
     policy_.address_space_bytes = 0;  // the labs of a sanitizer build reserve terabytes of shadow memory
