@@ -6,6 +6,7 @@
 #include "grader/cases.h"
 #include "grader/draw.h"
 #include "grader/process.h"
+#include "grader/report_format.h"
 #include "grader/run_lab.h"
 #include "grader/submission.h"
 
@@ -238,7 +239,7 @@ void Grading::grade_case(const LabCases& lab, const GradeCase& c, bool live, con
 
     if (build && !build->ok) {
         r.status = CaseStatus::BuildError;
-        r.detail = first_build_error(build->log);
+        r.detail = first_error_line(build->log);
         r.output = build->log;
         record(r);
         timing_row_like(report_.results.back());

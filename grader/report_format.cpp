@@ -131,6 +131,27 @@ std::string xml_safe_text(std::string_view text) {
     return out;
 }
 
+std::string escape_markup(std::string_view raw, MarkupPlace place) {
+    const std::string text = xml_safe_text(raw);
+    const bool attribute = place == MarkupPlace::Attribute;
+    std::string out;
+    out.reserve(text.size());
+    for (const char c : text) {
+        switch (c) {
+        case '&': out += "&amp;"; break;
+        case '<': out += "&lt;"; break;
+        case '>': out += "&gt;"; break;
+        case '"': out += "&quot;"; break;
+        case '\'': out += "&#39;"; break;
+        case '\r': out += "&#13;"; break;  // a bare CR would be read back as LF
+        case '\t': out += attribute ? "&#9;" : "\t"; break;
+        case '\n': out += attribute ? "&#10;" : "\n"; break;
+        default: out += c;
+        }
+    }
+    return out;
+}
+
 std::string one_line(std::string_view text, std::size_t max_bytes) {
     std::string flat;
     flat.reserve(text.size());

@@ -34,6 +34,10 @@ std::string valid_utf8(std::string_view text);
 // valid_utf8, without the characters XML 1.0 forbids (controls other than tab, LF and CR; U+FFFE,
 // U+FFFF). HTML forbids the same controls, so both escapers use it.
 std::string xml_safe_text(std::string_view text);
+// Escapes xml_safe_text for markup (XML and HTML): & < > " ' and CR always; in an attribute also tab and
+// LF, which a parser would otherwise turn into spaces (attribute-value normalisation).
+enum class MarkupPlace { Text, Attribute };
+std::string escape_markup(std::string_view raw, MarkupPlace place);
 // One line for a table: valid UTF-8, every control character (newlines, ESC of terminal colour codes)
 // a space, cut at a character boundary to at most max_bytes with "..." marking the cut.
 std::string one_line(std::string_view text, std::size_t max_bytes);

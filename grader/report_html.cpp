@@ -17,22 +17,7 @@ namespace {
 // Larger files are left out so one huge render cannot make the report too big to open.
 constexpr std::uintmax_t kMaxEmbeddedBytes = 16u << 20;
 
-std::string html(std::string_view raw) {
-    const std::string text = xml_safe_text(raw);
-    std::string out;
-    out.reserve(text.size());
-    for (const char c : text) {
-        switch (c) {
-        case '&': out += "&amp;"; break;
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '"': out += "&quot;"; break;
-        case '\'': out += "&#39;"; break;
-        default: out += c;
-        }
-    }
-    return out;
-}
+std::string html(std::string_view raw) { return escape_markup(raw, MarkupPlace::Text); }
 
 const char* status_class(CaseStatus status) {
     if (status == CaseStatus::Passed) return "pass";

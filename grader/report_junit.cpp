@@ -9,44 +9,10 @@
 namespace gsv {
 namespace {
 
-// Escapes for both text and attribute values. Tab, LF and CR are written as references because an
-// XML parser turns them into spaces inside an attribute (attribute-value normalisation).
-std::string xml(std::string_view raw) {
-    const std::string text = xml_safe_text(raw);
-    std::string out;
-    out.reserve(text.size());
-    for (const char c : text) {
-        switch (c) {
-        case '&': out += "&amp;"; break;
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '"': out += "&quot;"; break;
-        case '\'': out += "&apos;"; break;
-        case '\t': out += "&#9;"; break;
-        case '\n': out += "&#10;"; break;
-        case '\r': out += "&#13;"; break;
-        default: out += c;
-        }
-    }
-    return out;
-}
+std::string xml(std::string_view raw) { return escape_markup(raw, MarkupPlace::Attribute); }
 
-// Element text keeps its newlines readable; only markup characters are escaped.
-std::string xml_text(std::string_view raw) {
-    const std::string text = xml_safe_text(raw);
-    std::string out;
-    out.reserve(text.size());
-    for (const char c : text) {
-        switch (c) {
-        case '&': out += "&amp;"; break;
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '\r': out += "&#13;"; break;  // a bare CR would be read back as LF
-        default: out += c;
-        }
-    }
-    return out;
-}
+// Element text keeps its newlines readable.
+std::string xml_text(std::string_view raw) { return escape_markup(raw, MarkupPlace::Text); }
 
 std::string seconds(double s) { return fixed(std::isfinite(s) && s > 0 ? s : 0.0, 3); }
 

@@ -38,16 +38,6 @@ std::string cmake_generator(const fs::path& kit_build) {
 
 }  // namespace
 
-std::string first_build_error(const std::string& log) {
-    std::istringstream lines(log);
-    std::string last;
-    for (std::string line; std::getline(lines, line);) {
-        if (line.find("error:") != std::string::npos || line.find("error ") == 0) return line;
-        if (!line.empty()) last = line;
-    }
-    return last;
-}
-
 SubmissionBuild build_submission(const fs::path& submission, const fs::path& kit_root, const fs::path& kit_build,
                                  const std::vector<std::string>& labs, const fs::path& work_dir,
                                  const ProcessLimits& limits) {

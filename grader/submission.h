@@ -22,7 +22,4 @@ SubmissionBuild build_submission(const std::filesystem::path& submission, const 
                                  const std::filesystem::path& kit_build, const std::vector<std::string>& labs,
                                  const std::filesystem::path& work_dir, const ProcessLimits& limits);
 
-// The first compiler error of a build log ("file:line:col: error: ..."), or its last line.
-std::string first_build_error(const std::string& log);
-
 }  // namespace gsv

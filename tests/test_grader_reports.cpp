@@ -270,7 +270,7 @@ TEST_CASE("grader reports: JUnit XML is well formed and counts failures and erro
     CHECK(contains(xml, "type=\"wrong image\""));
     CHECK(contains(xml, "<error message=\"reference failed: the reference solution failed: crash\" "
                         "type=\"reference failed\">"));
-    CHECK(contains(xml, "&lt;script&gt;alert(1)&lt;/script&gt; &amp; \"quotes\""));
+    CHECK(contains(xml, "&lt;script&gt;alert(1)&lt;/script&gt; &amp; &quot;quotes&quot;"));
     CHECK(contains(xml, "name=\"phong [time] (L01-T3)\" classname=\"lab01\""));
     CHECK_FALSE(contains(xml, "<script>"));
     CHECK_FALSE(contains(xml, "\x01"));
