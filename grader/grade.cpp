@@ -27,6 +27,19 @@ double median(std::vector<double> v) {
     return n == 0 ? 0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
+// A result row for a case, before anything ran.
+CaseResult result_for(const LabCases& lab, const GradeCase& c) {
+    CaseResult r;
+    r.lab = lab.lab;
+    r.name = c.name;
+    r.todo = c.todo;
+    r.description = c.description;
+    r.visibility = c.visibility;
+    r.settings = c.settings;
+    r.max_points = c.points;
+    return r;
+}
+
 // Everything one grading run needs, built once.
 class Grading {
 public:
@@ -182,11 +195,7 @@ void Grading::grade_lab(const LabCases& lab, bool live, const LabBuild* build) {
             grade_case(lab, c, live, build);
         } catch (const std::exception& e) {
             // One case's trouble never stops the rest.
-            CaseResult r;
-            r.lab = lab.lab;
-            r.name = c.name;
-            r.todo = c.todo;
-            r.max_points = c.points;
+            CaseResult r = result_for(lab, c);
             r.status = CaseStatus::Error;
             r.detail = std::string("grader: ") + e.what();
             record(r);
@@ -195,10 +204,7 @@ void Grading::grade_lab(const LabCases& lab, bool live, const LabBuild* build) {
 }
 
 void Grading::update_golden(const LabCases& lab, const GradeCase& c) {
-    CaseResult r;
-    r.lab = lab.lab;
-    r.name = c.name;
-    r.todo = c.todo;
+    CaseResult r = result_for(lab, c);
     const LabRun ref = reference_.render(lab.lab + "_solution", lab, c, false, limits(lab, false));
     r.status = ref.status;
     r.output = ref.process.output;
@@ -213,14 +219,7 @@ void Grading::update_golden(const LabCases& lab, const GradeCase& c) {
 }
 
 void Grading::grade_case(const LabCases& lab, const GradeCase& c, bool live, const LabBuild* build) {
-    CaseResult r;
-    r.lab = lab.lab;
-    r.name = c.name;
-    r.todo = c.todo;
-    r.description = c.description;
-    r.visibility = c.visibility;
-    r.settings = c.settings;
-    r.max_points = c.points;
+    CaseResult r = result_for(lab, c);
     r.reference = live ? "live" : "golden";
     const bool timed = live && options_.timing && c.timing.points > 0;
     auto timing_row_like = [&](const CaseResult& image_row) {
