@@ -68,32 +68,40 @@ const float* ImageF::at(int x, int y) const {
 
 // The file is read through a C++ stream rather than stbi_load's fopen so that std::filesystem
 // paths work unchanged on every platform (fopen takes narrow strings only on Windows).
-Image read_png(const std::filesystem::path& path) {
+namespace {
+
+Image decode_file(const std::filesystem::path& path, const std::string& what) {
     std::ifstream in(path, std::ios::binary);
     if (!in) {
         std::error_code ec;
         const bool exists = std::filesystem::exists(path, ec);
-        throw Error("cannot read PNG " + quoted(path) + ": " + (exists ? "cannot open file" : "no such file"));
+        throw Error("cannot read " + what + " " + quoted(path) + ": " + (exists ? "cannot open file" : "no such file"));
     }
     const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
                                            std::istreambuf_iterator<char>());
-    if (in.bad()) throw Error("cannot read PNG " + quoted(path) + ": read error");
-    if (bytes.empty()) throw Error("cannot read PNG " + quoted(path) + ": file is empty");
+    if (in.bad()) throw Error("cannot read " + what + " " + quoted(path) + ": read error");
+    if (bytes.empty()) throw Error("cannot read " + what + " " + quoted(path) + ": file is empty");
     if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
-        throw Error("cannot read PNG " + quoted(path) + ": file is larger than 2 GiB");
+        throw Error("cannot read " + what + " " + quoted(path) + ": file is larger than 2 GiB");
 
     int w = 0, h = 0, channels_in_file = 0;
     stbi_uc* pixels = stbi_load_from_memory(bytes.data(), static_cast<int>(bytes.size()), &w, &h,
                                             &channels_in_file, 4);
     if (!pixels) {
         const char* reason = stbi_failure_reason();
-        throw Error("cannot read PNG " + quoted(path) + ": " + (reason ? reason : "unknown error"));
+        throw Error("cannot read " + what + " " + quoted(path) + ": " + (reason ? reason : "unknown error"));
     }
     Image image(w, h);
     std::copy(pixels, pixels + image.rgba.size(), image.rgba.begin());
     stbi_image_free(pixels);
     return image;
 }
+
+}  // namespace
+
+Image read_png(const std::filesystem::path& path) { return decode_file(path, "PNG"); }
+
+Image read_image(const std::filesystem::path& path) { return decode_file(path, "image"); }
 
 namespace {
 

@@ -37,6 +37,8 @@ struct ImageF {
 // Always returns RGBA whatever the file stores (gray, RGB, 16-bit, palette).
 // Throws gsv::Error "cannot read PNG '<path>': <reason>" on a missing, corrupt or truncated file.
 Image read_png(const std::filesystem::path& path);
+// The same for any format stb_image reads (PNG, JPEG, ...): photographs in data/.
+Image read_image(const std::filesystem::path& path);
 
 // Creates missing parent directories. Throws gsv::Error naming the path on failure.
 void write_png(const std::filesystem::path& path, const Image& image);

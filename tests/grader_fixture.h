@@ -9,10 +9,20 @@
 #include "common/json.h"
 #include "grader/grade.h"
 
+#include <algorithm>
 #include <fstream>
 #include <map>
 
 namespace gsv::test {
+
+// Labs with a tests/mutants/<lab>.json, in order.
+inline std::vector<std::string> labs_with_mutants() {
+    std::vector<std::string> labs;
+    for (const auto& e : std::filesystem::directory_iterator(source_root() / "tests" / "mutants"))
+        if (e.path().extension() == ".json") labs.push_back(e.path().stem().string());
+    std::sort(labs.begin(), labs.end());
+    return labs;
+}
 
 inline Json mutant_spec(const std::string& lab) { return read_json_file(source_root() / "tests" / "mutants" / (lab + ".json")); }
 

@@ -1,0 +1,113 @@
+// Lab 02: line integral convolution (LIC) in a fragment shader.
+// Seed: Bailey, "Using GPU Shaders for Visualization, Part 2"; Cabral and Leedom, "Imaging Vector Fields
+// Using Line Integral Convolution" (SIGGRAPH 1993).
+// The lesson is in the shaders (lic.frag, streamline.glsl); this file makes the two textures LIC reads
+// (white noise or a photograph, and the flow in texels per step) and draws one full-screen quad.
+#include "common/app.h"
+#include "common/flow_field.h"
+#include "common/gl.h"
+#include "common/gpu_mesh.h"
+#include "common/image.h"
+#include "common/mesh_data.h"
+#include "common/noise.h"
+#include "common/texture.h"
+
+#include <vector>
+
+namespace {
+
+class LicLab final : public gsv::Lab {
+public:
+    gsv::LabInfo info() const override { return {"lab02", "Line integral convolution", {4, 1}, "the kit's baseline"}; }
+
+    void declare(gsv::Params& p, std::vector<gsv::RenderCase>& cases) override {
+        p.add_choice("field", "rotation", {"rotation", "saddle", "source", "double_gyre", "vortices", "swirl"},
+                     "the flow: analytic fields, and a swirl confined to a disc for the photograph");
+        p.add_choice("input", "noise", {"noise", "photo"}, "what LIC smears: white noise, or a photograph");
+        p.add_int("length", 25, 0, 200, "steps each way along the streamline")
+            .accuracy_knob({"1", "2", "5", "10", "25", "50", "100"});
+        p.add_choice("step", "euler", {"euler", "midpoint"}, "first-order (Euler) or second-order (midpoint) steps")
+            .at_compile_time()
+            .series();
+        p.add_effect("normalized", false, "unit steps along the flow, whatever its speed");
+        p.add_float("speed", 1.0, 0, 4, "the field's largest speed, in texels per step").with_step(0.1);
+        p.add_int("seed", 1, 0, 1000000, "the white noise and the vortices");
+        p.add_float("time", 0, 0, 10, "the double gyre's time").with_step(0.5);
+        p.add_float("swirl_radius", 0.28, 0.05, 0.7, "radius of the swirl around the photograph's face").with_step(0.02);
+
+        cases = {
+            {"rotation", "circles: the rotation (-y, x)", {}},
+            {"saddle", "a saddle: streamlines come in along one axis and leave along the other", {"field=saddle"}},
+            {"source", "a source: a zero at the centre, streamlines leaving the field", {"field=source", "length=40"}},
+            {"gyre", "the double gyre at t = 2.5", {"field=double_gyre", "time=2.5"}},
+            {"vortices", "six vortices drawn from the seed", {"field=vortices", "seed=7"}},
+            {"normalized", "unit steps: slow regions streak as long as fast ones", {"field=source", "normalized=on"}},
+            {"midpoint", "second-order steps keep long circles closed", {"step=midpoint", "length=80"}},
+            {"photo", "photographic LIC: a swirl around Grace Hopper's face", {"input=photo", "field=swirl", "length=30"}},
+        };
+    }
+
+    void setup(gsv::LabKit& kit) override {
+        lic_ = &kit.program("lic", {"quad.vert", "lic.frag"});
+        quad_ = gsv::GpuMesh(gsv::make_fullscreen_quad(), kit.profile());
+        photo_ = gsv::read_image(kit.assets().data_file("images/grace_hopper.jpg"));
+    }
+
+    void params_changed(gsv::LabKit&) override { stale_ = true; }
+
+    void render(gsv::LabKit& kit, const gsv::Frame& frame) override {
+        if (stale_ || frame.width != flow_.width() || frame.height != flow_.height()) make_textures(kit, frame);
+        glDisable(GL_DEPTH_TEST);
+        const gsv::ShaderProgram& program = kit.use(*lic_);
+        input_.bind(0);
+        flow_.bind(1);
+        program.set("uInput", 0);
+        program.set("uFlow", 1);
+        quad_.draw();
+    }
+
+    std::vector<std::string> sweep_reference() const override { return {"length=200"}; }
+
+private:
+    // One flow texel per pixel: a step of one texel is a step of one pixel.
+    void make_textures(gsv::LabKit& kit, const gsv::Frame& frame) {
+        const auto& p = kit.params();
+        const std::string field = p.get_choice("field");
+        const double speed = p.get_float("speed");
+        const gsv::FlowField flow =
+            field == "swirl" ? gsv::make_photo_swirl(frame.width, frame.height, speed, 0.5, 0.62, p.get_float("swirl_radius"))
+                             : gsv::make_flow(gsv::flow_kind_from_name(field), frame.width, frame.height, speed,
+                                              p.get_float("time"), static_cast<std::uint64_t>(p.get_int("seed")));
+        flow_ = gsv::Texture::create_2d(flow.width, flow.height, gsv::TexelFormat::RG32F, flow.velocity.data());
+        if (p.get_choice("input") == "photo") {
+            input_ = gsv::Texture::create_2d(photo_.width, photo_.height, gsv::TexelFormat::RGBA8, flipped(photo_).data());
+        } else {
+            // Grey noise in all three channels, in float: a texel's value is exactly what the CPU drew.
+            const std::vector<float> noise = gsv::white_noise(frame.width, frame.height, static_cast<std::uint64_t>(p.get_int("seed")));
+            std::vector<float> rgb(noise.size() * 3);
+            for (std::size_t i = 0; i < noise.size(); ++i) rgb[3 * i] = rgb[3 * i + 1] = rgb[3 * i + 2] = noise[i];
+            input_ = gsv::Texture::create_2d(frame.width, frame.height, gsv::TexelFormat::RGB32F, rgb.data());
+        }
+        stale_ = false;
+    }
+
+    // Images are stored top row first; GL textures bottom row first.
+    static std::vector<std::uint8_t> flipped(const gsv::Image& image) {
+        std::vector<std::uint8_t> rows(image.rgba.size());
+        const std::size_t row = static_cast<std::size_t>(image.width) * 4;
+        for (int y = 0; y < image.height; ++y)
+            std::copy_n(image.rgba.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(y)), row,
+                        rows.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(image.height - 1 - y)));
+        return rows;
+    }
+
+    const gsv::ShaderLibrary::Entry* lic_ = nullptr;
+    gsv::GpuMesh quad_;
+    gsv::Image photo_;
+    gsv::Texture input_, flow_;
+    bool stale_ = true;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) { return gsv::run_lab<LicLab>(argc, argv); }
