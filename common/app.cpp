@@ -22,7 +22,7 @@ LabKit::LabKit(Context& context, Params& params, const Assets& assets, Profile p
 const ShaderLibrary::Entry& LabKit::program(const std::string& name, const std::vector<std::string>& files) {
     ProgramSpec spec;
     spec.name = name;
-    for (const auto& f : files) spec.files.push_back(assets_.lab_file(f));
+    for (const auto& f : files) spec.files.push_back(assets_.shader_file(f));
     return shaders_.add(std::move(spec), params_.defines());
 }
 
@@ -134,6 +134,7 @@ int run_lab(std::unique_ptr<Lab> lab, const char* lab_dir, const char* variant, 
         try {
             session.options = parse_cli(argc, argv);
             session.apply_command_line_settings();
+            if (session.options.mode == RunMode::Animate && !session.options.help) check_animate_command(session);
         } catch (const Error& e) {
             std::fprintf(stderr, "%s: %s\n", session.info.id.c_str(), e.what());
             return kExitUsage;
@@ -153,6 +154,7 @@ int run_lab(std::unique_ptr<Lab> lab, const char* lab_dir, const char* variant, 
         case RunMode::Window: return run_window(session);
         case RunMode::Render: return run_render(session);
         case RunMode::Sweep: return run_sweep(session);
+        case RunMode::Animate: return run_animate(session);
         case RunMode::List: break;
         }
         return kExitOk;

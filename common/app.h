@@ -46,7 +46,8 @@ public:
     virtual void declare(Params& params, std::vector<RenderCase>& cases) = 0;
     virtual void setup(LabKit& kit) = 0;
     virtual void render(LabKit& kit, const Frame& frame) = 0;
-    // A parameter changed (window keys, the next sweep point): rebuild what depends on it, e.g. a mesh.
+    // A parameter changed (window keys, the next sweep point or animation frame): rebuild what depends on it,
+    // e.g. a mesh.
     virtual void params_changed(LabKit&) {}
     // The settings of the converged reference a sweep measures error against; empty: the knob's last value.
     virtual std::vector<std::string> sweep_reference() const { return {}; }

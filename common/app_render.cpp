@@ -45,6 +45,11 @@ Json timing_json(const TimingStats& t, int warmup) {
     return j;
 }
 
+Readback read_back(const Framebuffer& float_target) {
+    const ImageF pixels = float_target.read_rgba32f();
+    return {to_rgba8(pixels), float_stats(pixels)};
+}
+
 int run_render(Session& s) {
     const Backend backend = s.options.backend.value_or(Backend::Egl);
     s.open(backend);
@@ -62,9 +67,9 @@ int run_render(Session& s) {
     }, warmup, frames);
     check_gl_error("rendering the frame");
 
-    const ImageF pixels = target.read_rgba32f();
-    const FloatStats stats = float_stats(pixels);
-    const Image image = to_rgba8(pixels);
+    const Readback shot = read_back(target);
+    const Image& image = shot.image;
+    const FloatStats& stats = shot.stats;
 
     std::string png = s.options.out;
     if (png.empty()) png = s.info.id + (s.options.case_name.empty() ? "" : "-" + s.options.case_name) + ".png";
@@ -90,7 +95,7 @@ int run_render(Session& s) {
 
     std::printf("%s: wrote %s (%dx%d), median %.2f ms/frame over %d frames\n", s.info.id.c_str(), png.c_str(), width,
                 height, timing.median_ms, timing.frames);
-    if (stats.nan_count > 0 || stats.inf_count > 0) {
+    if (shot.non_finite()) {
         std::fprintf(stderr, "%s: the image has %ld NaN and %ld Inf pixel values (painted magenta in %s)\n",
                      s.info.id.c_str(), stats.nan_count, stats.inf_count, png.c_str());
         return kExitNonFinite;

@@ -1,7 +1,9 @@
 #pragma once
-// One run of a lab binary: what the three modes share (internal to the framework).
+// One run of a lab binary: what the modes share (internal to the framework).
 #include "common/app.h"
 #include "common/cli.h"
+#include "common/framebuffer.h"
+#include "common/image_compare.h"
 
 #include <memory>
 #include <string>
@@ -39,8 +41,19 @@ private:
     std::string compiled_signature_;
 };
 
+// A float target read back: the 8-bit image (NaN painted magenta) and how many values were NaN or Inf.
+struct Readback {
+    Image image;
+    FloatStats stats;
+    bool non_finite() const { return stats.nan_count > 0 || stats.inf_count > 0; }
+};
+Readback read_back(const Framebuffer& float_target);
+
 int run_window(Session& session);
 int run_render(Session& session);
 int run_sweep(Session& session);
+// Throws the one-line usage error (exit 2) for an animate command this lab cannot run, before any GL.
+void check_animate_command(const Session& session);
+int run_animate(Session& session);
 
 }  // namespace gsv

@@ -10,6 +10,8 @@
 
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -18,7 +20,8 @@ namespace {
 
 const char* kControls =
     "keys: Tab/Down next parameter, Shift+Tab/Up previous, Left/Right change it (Shift: x10),\n"
-    "      C next case, D defaults, R reload shaders, S screenshot, P print the command line, H help, Esc quit\n"
+    "      C next case, D defaults, R reload shaders, S screenshot, P print the command line, H help, Esc quit,\n"
+    "      Space play/pause the animated parameter (labs that have one)\n"
     "mouse: drag to orbit, scroll to zoom (3D labs)\n";
 
 struct WindowInput {
@@ -27,6 +30,7 @@ struct WindowInput {
     int selected = 0;
     int case_index = -1;
     bool params_changed = false;
+    bool playing = false;  // off at start, so a window screenshot is the same picture every run
     bool screenshot = false;
     bool reload = false;
     bool dragging = false;
@@ -42,6 +46,29 @@ bool has_param(const Params& params, const std::string& name) {
 void adjust(Params& params, const std::string& name, double delta) {
     const ParamSpec& s = params.spec(name);
     params.set(name, std::to_string(std::clamp(params.get_float(name) + delta, s.min, s.max)));
+}
+
+// Wall time, not frames, drives playback: one sweep of the range takes 8 s on llvmpipe and on a GPU alike.
+void play(Params& params, double seconds) {
+    const ParamSpec* axis = params.animation_axis();
+    if (!axis || !(axis->max > axis->min)) return;
+    const double span = axis->max - axis->min;
+    double v = params.get_float(axis->name) + span / 8 * seconds;
+    if (v > axis->max) v = axis->min + std::fmod(v - axis->min, span);
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", std::clamp(v, axis->min, axis->max));
+    params.set(axis->name, text);
+}
+
+void toggle_play(WindowInput& in) {
+    const ParamSpec* axis = in.session->params.animation_axis();
+    if (!axis) {
+        std::printf("%s has no animated parameter to play\n", in.session->info.id.c_str());
+        return;
+    }
+    in.playing = !in.playing;
+    std::printf("%s %s = %s\n", in.playing ? "playing" : "paused", axis->name.c_str(),
+                in.session->params.get_text(axis->name).c_str());
 }
 
 std::string command_line(const Session& s) {
@@ -89,6 +116,9 @@ void on_key(GLFWwindow* window, int key, int, int action, int mods) {
     case GLFW_KEY_R: in->reload = true; break;
     case GLFW_KEY_S: in->screenshot = true; break;
     case GLFW_KEY_P: std::printf("%s\n", command_line(s).c_str()); break;
+    case GLFW_KEY_SPACE:
+        if (action == GLFW_PRESS) toggle_play(*in);  // held down, it would flicker between play and pause
+        break;
     default: break;
     }
     std::fflush(stdout);
@@ -150,11 +180,17 @@ int run_window(Session& s) {
     FrameClock clock;
     const double start = now_seconds();
     double last_reload_check = start;
+    double last_frame = start;
     int frame_index = 0;
     int screenshot_count = 0;
     while (!glfwWindowShouldClose(window)) {
         glfwPollEvents();
         const double now = now_seconds();
+        if (input.playing) {
+            play(s.params, now - last_frame);
+            input.params_changed = true;
+        }
+        last_frame = now;
         if (input.reload || now - last_reload_check > 0.25) {
             last_reload_check = now;
             std::optional<std::string> error = input.reload ? s.kit->shaders().rebuild_all(s.params.defines())
@@ -206,6 +242,7 @@ int run_window(Session& s) {
         clock.tick();
         panel_state.frame_ms = clock.smoothed_ms();
         if (s.options.quit_after > 0 && frame_index >= s.options.quit_after) break;
+        if (s.options.quit_after_s > 0 && now_seconds() - start >= s.options.quit_after_s) break;
     }
     check_gl_error("the window loop");
     return kExitOk;

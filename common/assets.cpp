@@ -48,10 +48,27 @@ fs::path Assets::lab_file(const std::string& relative) const {
     return p;
 }
 
+fs::path Assets::shader_file(const std::string& relative) const {
+    std::error_code ec;
+    if (fs::exists(lab_dir() / relative, ec)) return lab_dir() / relative;
+    if (fs::exists(shaders_dir() / relative, ec)) return shaders_dir() / relative;
+    throw Error("cannot find shader '" + relative + "' in " + lab_dir().string() + " or " + shaders_dir().string());
+}
+
 fs::path Assets::data_file(const std::string& relative) const {
     const fs::path p = root_ / "data" / relative;
     if (!fs::exists(p)) throw Error("cannot find data file '" + p.string() + "'");
     return p;
+}
+
+fs::path Assets::user_file(const std::string& typed) const {
+    const fs::path path(typed);
+    std::error_code ec;
+    if (path.is_absolute() || fs::exists(path, ec)) return path;
+    const fs::path in_data = root_ / "data" / path;
+    if (fs::exists(in_data, ec)) return in_data;
+    throw Error("cannot find file '" + typed + "' (looked in " + fs::current_path(ec).string() + " and " +
+                (root_ / "data").string() + ")");
 }
 
 fs::path Assets::executable_path(const char* argv0) {

@@ -20,6 +20,12 @@ public:
     // A file in the lab's folder (shaders) or in data/; throws naming the file and where it looked.
     std::filesystem::path lab_file(const std::string& relative) const;
     std::filesystem::path data_file(const std::string& relative) const;
+    // A shader stage file: the lab's folder first, then the shared shaders/ ("gsv/fullscreen.vert").
+    std::filesystem::path shader_file(const std::string& relative) const;
+    // A path the user typed (a File parameter): absolute, or relative to the working directory where
+    // the command was typed, or else relative to data/ ("flows/vortex_street.flow" works from anywhere).
+    // Throws one line naming the path and both places looked.
+    std::filesystem::path user_file(const std::string& typed) const;
 
     static std::vector<std::filesystem::path> candidate_roots(const std::filesystem::path& executable);
     static std::filesystem::path executable_path(const char* argv0);

@@ -2,6 +2,7 @@
 
 #include "common/error.h"
 
+#include <cmath>
 #include <regex>
 
 namespace gsv {
@@ -22,6 +23,19 @@ int parse_count(const std::string& option, const std::string& text, int min, int
     return static_cast<int>(v);
 }
 
+double parse_real(const std::string& option, const std::string& text) {
+    std::size_t used = 0;
+    double v = 0;
+    try {
+        v = std::stod(text, &used);
+    } catch (...) {
+        used = 0;
+    }
+    if (used == 0 || used != text.size() || !std::isfinite(v))
+        throw Error("option " + option + " needs a number, got '" + text + "'");
+    return v;
+}
+
 }  // namespace
 
 CliOptions parse_cli(int argc, const char* const* argv) {
@@ -32,8 +46,9 @@ CliOptions parse_cli(int argc, const char* const* argv) {
         if (mode == "window") o.mode = RunMode::Window;
         else if (mode == "render") o.mode = RunMode::Render;
         else if (mode == "sweep") o.mode = RunMode::Sweep;
+        else if (mode == "animate") o.mode = RunMode::Animate;
         else if (mode == "list") o.mode = RunMode::List;
-        else throw Error("unknown mode '" + mode + "' (expected window, render, sweep or list; see --help)");
+        else throw Error("unknown mode '" + mode + "' (expected window, render, sweep, animate or list; see --help)");
     }
     auto value = [&](const std::string& option) -> std::string {
         if (i + 1 >= argc) throw Error("option " + option + " needs a value");
@@ -67,33 +82,55 @@ CliOptions parse_cli(int argc, const char* const* argv) {
         } else if (arg == "--out" || arg == "-o") o.out = next();
         else if (arg == "--json") o.json = next();
         else if (arg == "--out-dir") o.out_dir = next();
+        else if (arg == "--count") o.count = parse_count(arg, next(), 1, 9999);
+        else if (arg == "--fps") {
+            const std::string text = next();
+            o.fps = parse_real(arg, text);
+            if (o.fps < 0.1 || o.fps > 1000) throw Error("option --fps = " + text + " is out of range [0.1, 1000]");
+        } else if (arg == "--from") o.from = parse_real(arg, next());
+        else if (arg == "--to") o.to = parse_real(arg, next());
         else if (arg == "--frames") o.frames = parse_count(arg, next(), 1, 100000);
         else if (arg == "--warmup") o.warmup = parse_count(arg, next(), 0, 100000);
         else if (arg == "--screenshot-after") o.screenshot_after = parse_count(arg, next(), 1, 1000000);
-        else if (arg == "--quit-after") o.quit_after = parse_count(arg, next(), 1, 1000000);
+        else if (arg == "--quit-after") {
+            // N frames, or "Ns" seconds of wall time: tests wait the same while a lab's frames take 2 or 100 ms.
+            const std::string text = next();
+            if (!text.empty() && text.back() == 's') {
+                o.quit_after_s = parse_real(arg, text.substr(0, text.size() - 1));
+                if (!(o.quit_after_s > 0 && o.quit_after_s <= 3600))
+                    throw Error("option --quit-after = " + text + " is out of range (0s, 3600s]");
+            } else {
+                o.quit_after = parse_count(arg, text, 1, 1000000);
+            }
+        }
         else throw Error("unknown option '" + arg + "' (see --help)");
     }
     return o;
 }
 
 std::string cli_usage(const std::string& program) {
-    return "usage: " + program + " [window|render|sweep|list] [options]\n"
+    return "usage: " + program + " [window|render|sweep|animate|list] [options]\n"
            "  window (default)    interactive: every parameter on keys or sliders, frame time on screen\n"
            "  render              headless: one case to PNG plus a JSON of timings and GL info\n"
            "  sweep               headless: vary the accuracy knob; CSV, table and plot of error against time\n"
+           "  animate             headless: step the animated parameter; a PNG per frame plus a looping APNG\n"
            "  list                the lab's parameters and cases\n"
            "options:\n"
            "  --case NAME         start from a named case (see list)\n"
            "  --set NAME=VALUE    set a parameter (repeatable); out-of-range values are refused\n"
-           "  --size WxH          image size for render and sweep (default 512x512)\n"
+           "  --size WxH          image size for render, sweep and animate (default 512x512)\n"
            "  --out FILE          render: the PNG (default <lab>.png); window: screenshot file\n"
            "  --json FILE         render: the JSON report (default: the PNG's name with .json)\n"
-           "  --out-dir DIR       sweep: where the CSV and plot go (default sweep-<lab>)\n"
+           "  --out-dir DIR       sweep: where the CSV and plot go (default sweep-<lab>);\n"
+           "                      animate: where frame_0000.png... and animation.png go (default animate-<lab>)\n"
+           "  --count N           animate: frames over the range (default 48); --fps F its playback rate (default 20)\n"
+           "  --from A --to B     animate: the range to step (default the parameter's); B itself is not drawn, so\n"
+           "                      a periodic parameter loops seamlessly\n"
            "  --frames N          timed frames (median reported); --warmup N untimed frames first\n"
            "  --backend B         egl (headless default), osmesa (where built), window\n"
            "  --profile P         core (default) or compat: the seeds' gl_ModelViewProjectionMatrix, gl_Vertex...\n"
            "  --gl X.Y            the OpenGL version to hold to (default: what the lab needs, at least 4.1)\n"
-           "  --screenshot-after N, --quit-after N   window: save a screenshot / quit after N frames\n"
+           "  --screenshot-after N, --quit-after N|Ns   window: save a screenshot / quit after N frames or N seconds\n"
            "exit status: 0 ok, 1 error, 2 bad command line, 3 GL feature not available, 4 NaN/Inf in the image\n";
 }
 

@@ -8,7 +8,7 @@
 
 namespace gsv {
 
-enum class RunMode { Window, Render, Sweep, List };
+enum class RunMode { Window, Render, Sweep, Animate, List };
 
 struct CliOptions {
     RunMode mode = RunMode::Window;
@@ -20,10 +20,14 @@ struct CliOptions {
     int width = 512, height = 512;
     std::string out;                     // render: PNG path; window: screenshot path
     std::string json;                    // render: JSON path (default: the PNG's with .json)
-    std::string out_dir;                 // sweep: folder for CSV and plot
+    std::string out_dir;                 // sweep: folder for CSV and plot; animate: for frames and APNG
+    int count = 48;                      // animate: frames over the animated parameter's range
+    double fps = 20;                     // animate: the APNG's playback rate
+    std::optional<double> from, to;      // animate: the range stepped (default: the parameter's min and max)
     int frames = -1, warmup = -1;        // -1: the mode's default
     int screenshot_after = -1;           // window: save a screenshot after N frames...
     int quit_after = -1;                 // ...and quit after N frames (Xvfb tests)
+    double quit_after_s = 0;             // ...or after this many seconds ("--quit-after 8s")
     bool help = false;
 };
 

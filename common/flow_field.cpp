@@ -1,6 +1,7 @@
 #include "common/flow_field.h"
 
 #include "common/error.h"
+#include "common/flow_sampling.h"
 #include "common/splitmix64.h"
 
 #include <glm/gtc/constants.hpp>
@@ -8,14 +9,17 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <sstream>
 #include <string>
-#include <utility>
 
 namespace gsv {
+
+using flow_detail::check_grid;
+using flow_detail::DoubleField;
+using flow_detail::fmt;
+using flow_detail::sample_square;
+
 namespace {
 
-constexpr int kMaxSide = 8192;
 constexpr double kPi = glm::pi<double>();
 
 struct NamedKind {
@@ -27,75 +31,6 @@ constexpr NamedKind kKinds[] = {{FlowKind::Rotation, "rotation"},
                                 {FlowKind::Source, "source"},
                                 {FlowKind::DoubleGyre, "double_gyre"},
                                 {FlowKind::Vortices, "vortices"}};
-
-// Shortest-readable form for messages: std::to_string would print 1e-9 as 0.000000.
-std::string fmt(double value) {
-    std::ostringstream text;
-    text << value;
-    return text.str();
-}
-
-void check_grid(const char* who, int width, int height, double max_texels_per_step) {
-    for (const auto& [name, value] : {std::pair<const char*, int>{"width", width}, {"height", height}})
-        if (value < 1 || value > kMaxSide)
-            throw Error(std::string(who) + ": " + name + " must be 1.." + std::to_string(kMaxSide) + ", got " +
-                        std::to_string(value));
-    if (!std::isfinite(max_texels_per_step) || max_texels_per_step < 0)
-        throw Error(std::string(who) + ": max_texels_per_step must be finite and >= 0, got " +
-                    fmt(max_texels_per_step));
-}
-
-// A field being built: velocities in texels per step, in double until the final scaling so that the
-// rounding to float happens once.
-struct DoubleField {
-    int width, height;
-    std::vector<double> velocity;
-
-    DoubleField(int w, int h) : width(w), height(h), velocity(2 * static_cast<std::size_t>(w) * h, 0.0) {}
-
-    // Calls velocity_at(x, y) with texel indices and stores what it returns.
-    template <typename VelocityAt>
-    void fill(VelocityAt velocity_at) {
-        std::size_t i = 0;
-        for (int y = 0; y < height; ++y)
-            for (int x = 0; x < width; ++x) {
-                const glm::dvec2 v = velocity_at(x, y);
-                velocity[i++] = v.x;
-                velocity[i++] = v.y;
-            }
-    }
-
-    // Scaled so the largest speed is max_texels_per_step; a zero field is left zero, not divided by 0.
-    FlowField scaled_to(double max_texels_per_step) const {
-        double largest = 0.0;
-        for (std::size_t i = 0; i < velocity.size(); i += 2)
-            largest = std::max(largest, std::hypot(velocity[i], velocity[i + 1]));
-        const double scale = largest > 0.0 ? max_texels_per_step / largest : 0.0;
-        FlowField field;
-        field.width = width;
-        field.height = height;
-        field.velocity.resize(velocity.size());
-        for (std::size_t i = 0; i < velocity.size(); ++i)
-            field.velocity[i] = static_cast<float>(velocity[i] * scale);
-        return field;
-    }
-};
-
-// Texel centre i of n mapped onto [-1, 1]. Written as (2i + 1 - n) / n so that both the numerator and
-// the result are exact where it matters: texels i and n-1-i land on exactly opposite points, and the
-// middle texel of an odd n on exactly 0.
-double centred(int i, int n) { return (2.0 * i + 1.0 - n) / n; }
-
-// Analytic fields on [-1,1]^2, carried into texels: one domain unit spans n/2 texels along each axis.
-template <typename Analytic>
-DoubleField sample_square(int width, int height, Analytic analytic) {
-    DoubleField field(width, height);
-    field.fill([&](int x, int y) {
-        const glm::dvec2 v = analytic(glm::dvec2(centred(x, width), centred(y, height)));
-        return glm::dvec2(v.x * 0.5 * width, v.y * 0.5 * height);
-    });
-    return field;
-}
 
 // The double gyre of Shadden, Lekien and Marsden, "Definition and properties of Lagrangian coherent
 // structures from finite-time Lyapunov exponents in two-dimensional aperiodic flows", Physica D 212
@@ -112,24 +47,11 @@ glm::dvec2 double_gyre(glm::dvec2 p, double t) {
             kPi * A * std::cos(kPi * f) * std::sin(kPi * p.y) * df_dx};
 }
 
-DoubleField sample_double_gyre(int width, int height, double time) {
-    DoubleField field(width, height);
-    field.fill([&](int x, int y) {
-        // Texel centres on [0,2] x [0,1]: 2 domain units across width texels, 1 unit up height texels.
-        const glm::dvec2 p((2.0 * x + 1.0) / width, (2.0 * y + 1.0) / (2.0 * height));
-        const glm::dvec2 v = double_gyre(p, time);
-        return glm::dvec2(v.x * 0.5 * width, v.y * height);
-    });
-    return field;
-}
-
-// Smoothstep of t already mapped to [0, 1]: 0 and 1 with zero slope at both ends.
-double smoothstep01(double t) {
-    t = std::clamp(t, 0.0, 1.0);
-    return t * t * (3.0 - 2.0 * t);
-}
-
 }  // namespace
+
+DoubleField flow_detail::sample_double_gyre(int width, int height, double time) {
+    return sample_wide(width, height, [&](glm::dvec2 p) { return double_gyre(p, time); });
+}
 
 glm::vec2 FlowField::at(int x, int y) const {
     if (x < 0 || x >= width || y < 0 || y >= height)
@@ -179,7 +101,7 @@ FlowField make_flow(FlowKind kind, int width, int height, double max_texels_per_
         case FlowKind::Source:
             return sample_square(width, height, [](glm::dvec2 p) { return p; }).scaled_to(max_texels_per_step);
         case FlowKind::DoubleGyre:
-            return sample_double_gyre(width, height, time).scaled_to(max_texels_per_step);
+            return flow_detail::sample_double_gyre(width, height, time).scaled_to(max_texels_per_step);
         case FlowKind::Vortices:
             return make_vortex_flow(vortices_from_seed(seed), width, height, max_texels_per_step);
     }
@@ -245,7 +167,7 @@ FlowField make_photo_swirl(int width, int height, double max_texels_per_step, do
         const double r = std::sqrt(d.x * d.x + d.y * d.y);
         // Tested as r < outer (not via smoothstep alone) so the fade is exactly zero from `radius` on,
         // and a zero radius never divides by zero.
-        const double weight = r < outer ? 1.0 - smoothstep01((r - 0.5 * outer) / (0.5 * outer)) : 0.0;
+        const double weight = r < outer ? 1.0 - flow_detail::smoothstep01((r - 0.5 * outer) / (0.5 * outer)) : 0.0;
         return weight * glm::dvec2(-d.y, d.x);
     });
     return field.scaled_to(max_texels_per_step);

@@ -11,9 +11,13 @@
 // largest speed is exactly max_texels_per_step (a field that is zero everywhere stays zero).
 //
 // The .flow file format (also described in data/README.md):
-//   an ASCII line  "GSVFLOW 1 <width> <height>\n"  (magic, format version 1, decimal sizes 1..8192),
-//   then width*height*2 little-endian IEEE 754 float32 values (vx, vy) in texels per step, row-major,
-//   row 0 = the BOTTOM row (GL texture order), and nothing after them. Every value must be finite.
+//   an ASCII line  "GSVFLOW 1 <width> <height>\n"  (magic, format version 1, decimal sizes 1..8192) for one
+//   field, or  "GSVFLOW 1 <width> <height> <frames>\n"  (frames 1..4096) for a time-varying flow,
+//   then frames*width*height*2 little-endian IEEE 754 float32 values (vx, vy) in texels per step, frame
+//   after frame (a header without <frames> means one), each frame row-major with row 0 = the BOTTOM row
+//   (GL texture order), and nothing after them. Every value must be finite, and the values may take at
+//   most kMaxFlowBytes (1 GiB). The optional fourth field keeps version 1: every file written before
+//   sequences existed still reads the same.
 #include <glm/glm.hpp>
 
 #include <cstdint>
@@ -33,6 +37,23 @@ struct FlowField {
     // The largest speed |v| over all texels; 0 for an empty or all-zero field.
     float max_speed() const;
 };
+
+// A time-varying flow for lab 03: frames sampled at equal steps of time, all width x height, scaled
+// together (one factor for all frames, so a slower frame stays slower).
+struct FlowSequence {
+    int width = 0, height = 0;
+    std::vector<FlowField> frames;
+
+    // The largest speed over all frames; 0 for no frames or an all-zero sequence.
+    float max_speed() const;
+};
+
+// The limits of a field and of a .flow file: sides of 8192 texels, 4096 frames and 1 GiB of velocities (32
+// frames of 2048x2048). Far above what a lab uploads as a texture array, but a bound, so that a corrupt
+// header is refused before anything is allocated for it rather than after gigabytes of it.
+inline constexpr int kMaxFlowSide = 8192;
+inline constexpr int kMaxFlowFrames = 4096;
+inline constexpr std::uint64_t kMaxFlowBytes = std::uint64_t(1) << 30;
 
 enum class FlowKind { Rotation, Saddle, Source, DoubleGyre, Vortices };
 
@@ -86,14 +107,67 @@ FlowField make_vortex_flow(const std::vector<Vortex>& vortices, int width, int h
 FlowField make_photo_swirl(int width, int height, double max_texels_per_step, double cx, double cy,
                            double radius);
 
-// Reads a .flow file (format above). Throws gsv::Error with one line naming the file for: a missing or
-// unreadable file, bad magic or version, a size outside 1..8192, too few bytes of velocities ("expected
-// N bytes of velocities, found M"), bytes after them, or a NaN or infinite value (naming its texel).
+// A von Karman vortex street on [0,2]x[0,1] (formulas and sources in vortex_street.cpp): a uniform stream
+// to the right plus two staggered rows of counter-rotating Lamb-Oseen vortices (vortex_velocity) that
+// drift downstream, slower than the stream. `phase` is time in periods: after one period the pattern has
+// drifted exactly one vortex spacing and is the same again, so phase and phase + 1 give the same velocity
+// (to rounding) at every point. Velocity in domain units; throws gsv::Error for a non-finite phase.
+glm::dvec2 vortex_street_velocity(glm::dvec2 p, double phase);
+
+// `frames` frames of the vortex street, frame k at phase k / frames: one period, so the sequence loops
+// seamlessly (the frame after the last would be frame 0 again). All frames share one scale factor that
+// makes the largest speed over the whole sequence max_texels_per_step. Throws gsv::Error for sizes or
+// scale make_flow refuses, frames outside 1..kMaxFlowFrames, or a sequence over kMaxFlowBytes.
+FlowSequence make_vortex_street(int width, int height, int frames, double max_texels_per_step);
+
+// `frames` frames of the double gyre, frame k at time 10 k / frames: one period, so this sequence loops
+// too. Scaled like make_vortex_street, with one factor for all frames: frame k is
+// make_flow(DoubleGyre, width, height, max_texels_per_step, 10 k / frames) times a ratio <= 1, the same
+// for every texel of the frame. Throws as make_vortex_street does.
+FlowSequence make_double_gyre_sequence(int width, int height, int frames, double max_texels_per_step);
+
+// The time-varying flows, each periodic with period 10 (the double gyre's; one vortex spacing of drift
+// for the street).
+enum class UnsteadyKind { DoubleGyre, VortexStreet };
+inline constexpr double kUnsteadyPeriod = 10.0;
+inline constexpr int kUnsteadyScaleTimes = 64;
+
+// "double_gyre", "vortex_street"; any other name throws gsv::Error listing these.
+UnsteadyKind unsteady_kind_from_name(const std::string& name);
+
+// Frames at the given times, scaled by ONE factor that depends on the flow and the grid only, not on the
+// times asked for: the one that makes the largest speed over kUnsteadyScaleTimes evenly spaced times of
+// the period max_texels_per_step. So sequences made for different sets of times agree wherever their
+// times coincide (lab 03's T slices against its 256-slice reference), which make_double_gyre_sequence's
+// scale over the requested frames does not promise. Throws as make_vortex_street does, and for a
+// non-finite time.
+FlowSequence make_unsteady_flow(UnsteadyKind kind, int width, int height, const std::vector<double>& times,
+                                double max_texels_per_step);
+
+// Reads a .flow file (format above) that holds one field. Throws gsv::Error with one line naming the file
+// for: a missing or unreadable file, bad magic or version, a size outside 1..8192, frames outside
+// 1..4096 or more than one frame ("holds N frames; a single field is needed (lab 03 reads sequences)"),
+// too few bytes of velocities ("expected N bytes of velocities, found M"), bytes after them, or a NaN or
+// infinite value (naming its texel).
 FlowField load_flow(const std::filesystem::path& path);
 
-// Writes `field` as a .flow file, byte-for-byte the same on every host. Throws gsv::Error for a field
-// load_flow would refuse (bad size, velocity count not 2*width*height, a non-finite value) or a file that
-// cannot be written.
+// Reads a .flow file with any number of frames (a file with the three-field header is one frame). Throws
+// as load_flow does, except that many frames are welcome; a short file says in which frame the bytes ran
+// out ("expected N bytes of velocities for F frames, found M: ..."), a non-finite value names its frame
+// and texel (frames count from 0, like texels), and a header promising more than kMaxFlowBytes of
+// velocities is refused before any is read.
+FlowSequence load_flow_sequence(const std::filesystem::path& path);
+
+// Writes `field` as a .flow file with the three-field header, byte-for-byte the same on every host.
+// Throws gsv::Error for a field load_flow would refuse (bad size, velocity count not 2*width*height, a
+// non-finite value) or a file that cannot be written.
 void save_flow(const std::filesystem::path& path, const FlowField& field);
+
+// Writes `sequence` with the four-field header (even for one frame, so the file says it is a sequence).
+// Throws gsv::Error, before creating the file, for a sequence load_flow_sequence would refuse: a bad size
+// or frame count, a frame whose size differs from the sequence's (naming the frame), a wrong velocity
+// count, a non-finite value (naming frame and texel), or more than kMaxFlowBytes; or if the file cannot
+// be written.
+void save_flow_sequence(const std::filesystem::path& path, const FlowSequence& sequence);
 
 }  // namespace gsv

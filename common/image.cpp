@@ -109,18 +109,28 @@ void append_to_stream(void* context, void* data, int size) {
     static_cast<std::ofstream*>(context)->write(static_cast<const char*>(data), size);
 }
 
+// Why `image` cannot be encoded, or empty when it can.
+std::string unencodable(const Image& image) {
+    if (image.empty())
+        return "image is empty (" + std::to_string(image.width) + "x" + std::to_string(image.height) + ")";
+    if (image.rgba.size() != checked_pixel_count(image.width, image.height) * 4)
+        return "pixel buffer holds " + std::to_string(image.rgba.size()) + " bytes, " +
+               std::to_string(image.width) + "x" + std::to_string(image.height) + " RGBA needs " +
+               std::to_string(checked_pixel_count(image.width, image.height) * 4);
+    return "";
+}
+
+void append_to_vector(void* context, void* data, int size) {
+    const auto* bytes = static_cast<const std::uint8_t*>(data);
+    auto* out = static_cast<std::vector<std::uint8_t>*>(context);
+    out->insert(out->end(), bytes, bytes + size);
+}
+
 }  // namespace
 
 void write_png(const std::filesystem::path& path, const Image& image) {
-    if (image.empty())
-        throw Error("cannot write PNG " + quoted(path) + ": image is empty (" +
-                    std::to_string(image.width) + "x" + std::to_string(image.height) + ")");
-    if (image.rgba.size() != checked_pixel_count(image.width, image.height) * 4)
-        throw Error("cannot write PNG " + quoted(path) + ": pixel buffer holds " +
-                    std::to_string(image.rgba.size()) + " bytes, " +
-                    std::to_string(image.width) + "x" + std::to_string(image.height) +
-                    " RGBA needs " +
-                    std::to_string(checked_pixel_count(image.width, image.height) * 4));
+    if (const std::string why = unencodable(image); !why.empty())
+        throw Error("cannot write PNG " + quoted(path) + ": " + why);
 
     if (path.has_parent_path()) {
         std::error_code ec;
@@ -136,6 +146,15 @@ void write_png(const std::filesystem::path& path, const Image& image) {
     out.close();
     if (!ok) throw Error("cannot write PNG " + quoted(path) + ": PNG encoding failed");
     if (!out) throw Error("cannot write PNG " + quoted(path) + ": write error (disk full?)");
+}
+
+std::vector<std::uint8_t> encode_png(const Image& image) {
+    if (const std::string why = unencodable(image); !why.empty()) throw Error("cannot encode PNG: " + why);
+    std::vector<std::uint8_t> bytes;
+    if (!stbi_write_png_to_func(append_to_vector, &bytes, image.width, image.height, 4, image.rgba.data(),
+                                image.width * 4))
+        throw Error("cannot encode PNG: encoding failed");
+    return bytes;
 }
 
 Image to_rgba8(const ImageF& image) {

@@ -42,6 +42,8 @@ Image read_image(const std::filesystem::path& path);
 
 // Creates missing parent directories. Throws gsv::Error naming the path on failure.
 void write_png(const std::filesystem::path& path, const Image& image);
+// The bytes write_png would store: for containers built from PNG chunks (animated PNG).
+std::vector<std::uint8_t> encode_png(const Image& image);
 
 // Clamps to [0,1] and rounds to the nearest of 256 levels. A pixel with a NaN in any channel
 // becomes opaque magenta, so a shader bug shows up in the PNG instead of being clamped away.

@@ -121,6 +121,14 @@ ParamSpec& Params::add_vec3(const std::string& name, glm::vec3 value, double min
     return add(std::move(s), v);
 }
 
+ParamSpec& Params::add_file(const std::string& name, const std::string& value, const std::string& help) {
+    ParamSpec s;
+    s.name = name, s.type = ParamType::File, s.help = help;
+    Value v;
+    v.choice = value;
+    return add(std::move(s), v);
+}
+
 ParamSpec& Params::add_effect(const std::string& name, bool on, const std::string& help) {
     ParamSpec& s = add_bool(name, on, help);
     s.effect = true;
@@ -168,6 +176,10 @@ void Params::set(const std::string& name, const std::string& text) {
         v.number = static_cast<double>(it - s.choices.begin());
         break;
     }
+    case ParamType::File:
+        if (text.empty()) throw Error("parameter '" + name + "' needs a file path");
+        v.choice = text;
+        break;
     case ParamType::Vec3: {
         std::string t = text;
         std::replace(t.begin(), t.end(), ';', ',');
@@ -204,7 +216,8 @@ std::string Params::get_text(const std::string& name) const {
     case ParamType::Float: return format_number(v.number);
     case ParamType::Int: return std::to_string(static_cast<long>(v.number));
     case ParamType::Bool: return v.number != 0 ? "on" : "off";
-    case ParamType::Choice: return v.choice;
+    case ParamType::Choice:
+    case ParamType::File: return v.choice;
     case ParamType::Vec3: return format_number(v.vec.x) + "," + format_number(v.vec.y) + "," + format_number(v.vec.z);
     }
     return "";
@@ -215,12 +228,14 @@ int Params::get_int(const std::string& name) const { return static_cast<int>(val
 bool Params::get_bool(const std::string& name) const { return values_[index_of(name)].number != 0; }
 const std::string& Params::get_choice(const std::string& name) const { return values_[index_of(name)].choice; }
 glm::vec3 Params::get_vec3(const std::string& name) const { return values_[index_of(name)].vec; }
+const std::string& Params::get_file(const std::string& name) const { return values_[index_of(name)].choice; }
 
 void Params::nudge(const std::string& name, int steps) {
     const std::size_t i = index_of(name);
     const ParamSpec& s = specs_[i];
     Value& v = values_[i];
     switch (s.type) {
+    case ParamType::File: break;  // no sensible next file; typed on the command line
     case ParamType::Bool: v.number = v.number != 0 ? 0 : 1; break;
     case ParamType::Choice: {
         const int n = static_cast<int>(s.choices.size());
@@ -265,6 +280,7 @@ std::vector<ShaderDefine> Params::defines() const {
         case ParamType::Int: out.push_back({s.define, std::to_string(static_cast<long>(v.number))}); break;
         case ParamType::Float: out.push_back({s.define, format_number(v.number)}); break;
         case ParamType::Vec3: out.push_back({s.define, "vec3(" + get_text(s.name) + ")"}); break;
+        case ParamType::File: break;
         }
     }
     return out;
@@ -287,6 +303,7 @@ void Params::apply_uniforms(const ShaderProgram& program) const {
         case ParamType::Bool:
         case ParamType::Choice: program.set(s.uniform, static_cast<int>(v.number)); break;
         case ParamType::Vec3: program.set(s.uniform, v.vec); break;
+        case ParamType::File: break;
         }
     }
 }
@@ -294,6 +311,12 @@ void Params::apply_uniforms(const ShaderProgram& program) const {
 const ParamSpec* Params::knob() const {
     for (const auto& s : specs_)
         if (!s.sweep_values.empty()) return &s;
+    return nullptr;
+}
+
+const ParamSpec* Params::animation_axis() const {
+    for (const auto& s : specs_)
+        if (s.animation_axis) return &s;
     return nullptr;
 }
 
@@ -318,8 +341,10 @@ std::string Params::describe() const {
             break;
         }
         case ParamType::Vec3: out << "x,y,z each in " << range_text(s); break;
+        case ParamType::File: out << "file path"; break;
         }
-        if (s.compile_time) out << ", compiled in as " << s.define;
+        if (s.type == ParamType::File) out << ", read by the lab";
+        else if (s.compile_time) out << ", compiled in as " << s.define;
         else out << ", uniform " << s.uniform;
         if (!s.sweep_values.empty()) out << ", ACCURACY KNOB";
         out << "\n      " << s.help << "\n";

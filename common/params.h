@@ -12,7 +12,7 @@ namespace gsv {
 
 class ShaderProgram;
 
-enum class ParamType { Float, Int, Bool, Choice, Vec3 };
+enum class ParamType { Float, Int, Bool, Choice, Vec3, File };
 
 struct ParamSpec {
     std::string name;   // as typed on the command line: "alpha", "mesh_resolution"
@@ -27,6 +27,7 @@ struct ParamSpec {
     std::string define;                // compile-time parameters through this macro
     std::vector<std::string> sweep_values;  // set on the accuracy knob: its values, least accurate first
     bool sweep_series = false;         // a Choice swept as separate curves beside the knob
+    bool animation_axis = false;       // a Float that window mode plays and `animate` steps through
 
     // Chainable refinements for declarations that read like a table.
     ParamSpec& at_compile_time(std::string macro = "");
@@ -34,6 +35,7 @@ struct ParamSpec {
     ParamSpec& with_step(double s) { step = s; return *this; }
     ParamSpec& accuracy_knob(std::vector<std::string> values_least_accurate_first);
     ParamSpec& series() { sweep_series = true; return *this; }
+    ParamSpec& animated() { animation_axis = true; return *this; }
 };
 
 class Params {
@@ -44,6 +46,9 @@ public:
     ParamSpec& add_choice(const std::string& name, const std::string& value, std::vector<std::string> choices,
                           const std::string& help);
     ParamSpec& add_vec3(const std::string& name, glm::vec3 value, double min, double max, const std::string& help);
+    // A path typed by the user (a data file). Never a uniform or a define; the lab resolves it with
+    // Assets::user_file, which gives one-line errors naming the path.
+    ParamSpec& add_file(const std::string& name, const std::string& value, const std::string& help);
     // A compile-time switch named EFFECT_<NAME> in GLSL.
     ParamSpec& add_effect(const std::string& name, bool on, const std::string& help);
 
@@ -58,6 +63,7 @@ public:
     bool get_bool(const std::string& name) const;
     const std::string& get_choice(const std::string& name) const;
     glm::vec3 get_vec3(const std::string& name) const;
+    const std::string& get_file(const std::string& name) const;
 
     // Window controls: move a parameter by `steps` increments (Bool toggles, Choice cycles), clamped.
     void nudge(const std::string& name, int steps);
@@ -71,6 +77,7 @@ public:
     const ParamSpec& spec(const std::string& name) const;  // throws naming the unknown parameter and the known ones
     const ParamSpec* knob() const;
     const ParamSpec* series() const;
+    const ParamSpec* animation_axis() const;
     std::string describe() const;  // one line per parameter: name, type, range, default, help
 
 private:

@@ -53,7 +53,8 @@ std::string SweepReport::table() const {
                       r.median_ms, base_ms > 0 ? r.median_ms / base_ms : 0.0, r.rmse, r.max_diff);
         out << line;
         for (const auto& [name, value] : r.extra) {
-            std::snprintf(line, sizeof line, " %*.4f", static_cast<int>(std::max<std::size_t>(14, name.size())), value);
+            // %g: an error of 3e-8 must not print as 0.0000.
+            std::snprintf(line, sizeof line, " %*.4g", static_cast<int>(std::max<std::size_t>(14, name.size())), value);
             out << line;
         }
         out << "\n";
@@ -70,7 +71,11 @@ std::string SweepReport::csv() const {
     for (const auto& r : rows) {
         out << (r.series.empty() ? "-" : r.series) << "," << r.knob << "," << fixed(r.median_ms, 4) << ","
             << fixed(r.min_ms, 4) << "," << fixed(r.rmse, 4) << "," << r.max_diff;
-        for (const auto& [name, value] : r.extra) out << "," << fixed(value, 6);
+        for (const auto& [name, value] : r.extra) {
+            char number[32];
+            std::snprintf(number, sizeof number, "%.6g", value);
+            out << "," << number;
+        }
         out << "\n";
     }
     return out.str();

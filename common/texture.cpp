@@ -115,7 +115,8 @@ void Texture::set_sampling(const Sampling& sampling) {
     glTexParameteri(target_, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(sampling.mag_filter));
     glTexParameteri(target_, GL_TEXTURE_WRAP_S, static_cast<GLint>(sampling.wrap));
     glTexParameteri(target_, GL_TEXTURE_WRAP_T, static_cast<GLint>(sampling.wrap));
-    if (target_ != GL_TEXTURE_2D) glTexParameteri(target_, GL_TEXTURE_WRAP_R, static_cast<GLint>(sampling.wrap));
+    if (target_ != GL_TEXTURE_2D)
+        glTexParameteri(target_, GL_TEXTURE_WRAP_R, static_cast<GLint>(sampling.wrap_r ? sampling.wrap_r : sampling.wrap));
     if (uses_mipmaps(sampling.min_filter)) glGenerateMipmap(target_);
     check_gl_error("setting texture sampling");
 }

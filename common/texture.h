@@ -10,7 +10,8 @@ enum class TexelFormat { R8, RG8, RGBA8, R32F, RG32F, RGB32F, RGBA32F };
 struct Sampling {
     GLenum min_filter = GL_LINEAR;   // GL_LINEAR_MIPMAP_LINEAR etc. builds the mipmap chain
     GLenum mag_filter = GL_LINEAR;
-    GLenum wrap = GL_CLAMP_TO_EDGE;  // s, t and r alike; GL_REPEAT on a time axis bleeds the last frame into the first
+    GLenum wrap = GL_CLAMP_TO_EDGE;  // s and t, and r unless wrap_r is set
+    GLenum wrap_r = 0;               // 0: as wrap. GL_REPEAT on a time axis bleeds the last frame into the first
 };
 
 bool uses_mipmaps(GLenum min_filter);

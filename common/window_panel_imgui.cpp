@@ -89,6 +89,9 @@ public:
                 }
                 break;
             }
+            case ParamType::File:
+                ImGui::Text("%s: %s", label.c_str(), params.get_file(spec.name).c_str());
+                break;
             case ParamType::Vec3: {
                 glm::vec3 v = params.get_vec3(spec.name);
                 if (ImGui::SliderFloat3(label.c_str(), &v.x, static_cast<float>(spec.min), static_cast<float>(spec.max))) {

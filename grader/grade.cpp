@@ -58,7 +58,8 @@ private:
     void check_image(const LabCases& lab, const GradeCase& c, const LabRun& student, const Image& expected, bool live,
                      CaseResult& r);
     CaseResult check_timing(const LabCases& lab, const GradeCase& c, const CaseResult& image);
-    bool is_copy_of_golden(const std::string& lab, const std::string& case_name, const Image& image);
+    // The public case whose committed golden `image` is pixel for pixel; empty if none.
+    std::string golden_copied(const std::string& lab, const std::string& case_name, const Image& image);
     void record(CaseResult r);
     ProcessLimits limits(const LabCases& lab, bool student) const;
 
@@ -99,6 +100,13 @@ void Grading::load_labs() {
             add_hidden_cases(lab, hidden, report_.seed);
             report_.hidden_included = true;
         }
+        if (!options_.cases.empty())
+            lab.cases.erase(std::remove_if(lab.cases.begin(), lab.cases.end(),
+                                           [&](const GradeCase& c) {
+                                               return std::find(options_.cases.begin(), options_.cases.end(), c.name) ==
+                                                      options_.cases.end();
+                                           }),
+                            lab.cases.end());
         if (live && options_.timing)
             for (const auto& c : lab.cases) report_.timing_included = report_.timing_included || c.timing.points > 0;
         labs_.push_back(std::move(lab));
@@ -110,6 +118,12 @@ void Grading::load_labs() {
             for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
             throw Error("no grading cases for lab '" + wanted + "' (grader/cases/" + wanted + ".json); labs with cases: " + list);
         }
+    for (const auto& wanted : options_.cases) {
+        bool found = false;
+        for (const auto& lab : labs_)
+            for (const auto& c : lab.cases) found = found || c.name == wanted;
+        if (!found) throw Error("no case named '" + wanted + "' in the labs being graded (`<lab> list` and grader/cases/<lab>.json name them)");
+    }
     for (std::size_t i = 0; i < labs_.size(); ++i)
         for (const auto& c : labs_[i].cases) total_ += 1 + (live_[i] && options_.timing && c.timing.points > 0 ? 1 : 0);
 }
@@ -165,10 +179,15 @@ GradeReport Grading::run() {
             build_submission(options_.submission, kit_, bin_.parent_path(), lab_ids, work, build_limits);
         report_.builds = built.builds;
     } else {
+        if (!options_.student_bin_dir.empty()) {
+            student_bin = fs::absolute(options_.student_bin_dir);
+            student_root = fs::absolute(options_.student_root);
+        }
         set_up_sandbox(student_bin, student_root);
     }
     // The kit's own labs find their files as they would when a student runs them (GSV_ROOT included).
-    student_ = LabRunner{student_bin, options_.submission.empty() ? fs::path() : student_root, true};
+    const bool own_labs = options_.submission.empty() && options_.student_bin_dir.empty();
+    student_ = LabRunner{student_bin, own_labs ? fs::path() : student_root, true};
     reference_ = LabRunner{bin_, "", false};
     for (std::size_t i = 0; i < labs_.size(); ++i) {
         const LabBuild* build = nullptr;
@@ -325,16 +344,22 @@ void Grading::check_image(const LabCases& lab, const GradeCase& c, const LabRun&
     }
     if (is_blank(actual) && !is_blank(expected)) {
         r.status = CaseStatus::BlankImage;
-        r.detail = "one flat colour where the reference has a picture (is anything drawn?)";
-    } else if (is_copy_of_golden(lab.lab, c.name, actual)) {
+        const std::uint8_t* p = actual.at(0, 0);
+        // shaders/gsv/not_done.glsl's kNotDone: the starter's own "this TODO is open" colour.
+        r.detail = p[0] == 255 && p[1] == 0 && p[2] == 255
+                       ? "all magenta, the starter's 'not done' colour: this case's TODO (or one it needs) is still open"
+                       : "one flat colour where the reference has a picture (is anything drawn?)";
+    } else if (const std::string copied = golden_copied(lab.lab, c.name, actual); !copied.empty()) {
         r.status = CaseStatus::CopiedImage;
-        r.detail = "pixel for pixel a committed golden image, not a rendering of this case's parameters";
+        // A bug that ignores what sets this case apart can land on another case's image too: say both.
+        r.detail = "pixel for pixel the committed golden image of case '" + copied +
+                   "': copied, or this case's own settings are ignored";
     } else {
         r.status = CaseStatus::WrongImage;
     }
 }
 
-bool Grading::is_copy_of_golden(const std::string& lab, const std::string& case_name, const Image& image) {
+std::string Grading::golden_copied(const std::string& lab, const std::string& case_name, const Image& image) {
     auto& goldens = goldens_[lab];
     if (goldens.empty()) {
         const fs::path dir = kit_ / "grader" / "golden" / lab;
@@ -344,8 +369,8 @@ bool Grading::is_copy_of_golden(const std::string& lab, const std::string& case_
     }
     for (const auto& [name, golden] : goldens)
         if (name != case_name && golden.width == image.width && golden.height == image.height && golden.rgba == image.rgba)
-            return true;
-    return false;
+            return name;
+    return "";
 }
 
 CaseResult Grading::check_timing(const LabCases& lab, const GradeCase& c, const CaseResult& image) {

@@ -18,7 +18,12 @@ struct GradeOptions {
     std::filesystem::path bin_dir;      // the kit's build: <lab>_solution, and <lab> when no submission is given
     std::filesystem::path submission;   // empty: grade the kit's own labs/ (as built in bin_dir)
     std::filesystem::path out_dir;      // images and reports
+    // Labs built elsewhere, graded as the student's (the tests grade mutants of the solution this way):
+    // <lab> in student_bin_dir, run with GSV_ROOT=student_root. Empty: the kit's own build; unused with
+    // a submission.
+    std::filesystem::path student_bin_dir, student_root;
     std::vector<std::string> labs;      // empty: every lab with a case file
+    std::vector<std::string> cases;     // empty: every case; else only these names (an unknown one is an error)
     bool self_check = false;            // golden images only, public cases only, even when solutions are built
     bool update_goldens = false;        // render grader/golden/<lab>/<case>.png with the references instead
     bool timing = true;                 // instructor mode: time the cases that declare a timing band

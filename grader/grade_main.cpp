@@ -18,13 +18,14 @@ namespace {
 
 const char* kUsage =
     "usage: gsv-grade [--kit DIR] [--bin DIR] [--submission DIR | --batch DIR [--workers N]] [--out DIR]\n"
-    "                 [--labs lab01,lab02] [--seed N] [--self-check] [--no-timing] [--public-only]\n"
+    "                 [--labs lab01,lab02] [--cases gyre,wrap] [--seed N] [--self-check] [--no-timing] [--public-only]\n"
     "                 [--timeout S] [--fail-under F] [--update-goldens] [--no-sandbox] [--quiet]\n"
     "  --kit DIR         the kit (cases, goldens, hidden cases, solutions); default: the one this was built from\n"
     "  --bin DIR         the kit's built labs and <lab>_solution; default: this build's bin/\n"
     "  --submission DIR  a copy of the kit whose labs/ hold a student's work: built against this kit, then graded\n"
     "  --batch DIR       every folder in DIR is a submission; --workers N grade N at a time (default 2)\n"
     "  --out DIR         images and reports: results.json (Gradescope), report.json, junit.xml, report.html\n"
+    "  --cases A,B       only these cases (public or hidden names) of the chosen labs: re-check one fix quickly\n"
     "  --seed N          draws the hidden cases; the same seed gives the same cases (default: a fresh one, printed)\n"
     "  --self-check      golden images and public cases only, even where the solutions are built\n"
     "  --no-timing       skip the frame-time checks\n"
@@ -113,6 +114,11 @@ int main(int argc, char** argv) {
                 pass_through.insert(pass_through.end(), {a, list});
                 std::stringstream items(list);
                 for (std::string lab; std::getline(items, lab, ',');) options.labs.push_back(lab);
+            } else if (a == "--cases") {
+                const std::string list = value();
+                pass_through.insert(pass_through.end(), {a, list});
+                std::stringstream items(list);
+                for (std::string name; std::getline(items, name, ',');) options.cases.push_back(name);
             } else if (a == "--seed") options.seed = parse_seed(value());
             else if (a == "--self-check") { options.self_check = true; pass_through.push_back(a); }
             else if (a == "--no-timing") { options.timing = false; pass_through.push_back(a); }

@@ -2,8 +2,11 @@
 # Exports the student edition of the kit into DEST: everything a student needs to do the labs and self-check
 # them against the committed golden images, and nothing that gives answers away.
 #
-#   scripts/export-student.sh [--include-untracked] DEST      (also: scripts/kit export-student ...)
+#   scripts/export-student.sh [--include-untracked] [--labs lab01,lab02] DEST   (also: scripts/kit export-student ...)
 #
+# --labs releases only those labs (their labs/ folder, case file and golden images); a course that hands
+# labs out week by week exports again as each opens. Later labs give earlier answers away: lab 03's
+# shaders trace lab 02's LIC streamlines.
 # Left out: solutions/, tests/ (they need the solutions), grader/hidden/ (hidden grading cases), .github/ (the
 # instructor's workflows), build*/ folders, grade-results/, .git, and whatever git ignores. In a git checkout
 # only the files git tracks are exported (their working-tree content); --include-untracked adds the untracked
@@ -15,14 +18,16 @@
 set -euo pipefail
 
 die() { echo "export-student: $*" >&2; exit 1; }
-usage() { echo "usage: scripts/export-student.sh [--include-untracked] DEST" >&2; exit 2; }
+usage() { echo "usage: scripts/export-student.sh [--include-untracked] [--labs lab01,lab02] DEST" >&2; exit 2; }
 
 include_untracked=0
+release_labs=""
 dest=""
 while [ $# -gt 0 ]; do
   case "$1" in
     --include-untracked) include_untracked=1 ;;
-    -h|--help) sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --labs) [ $# -ge 2 ] || usage; release_labs=$2; shift ;;
+    -h|--help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "export-student: unknown option '$1'" >&2; usage ;;
     *) [ -z "$dest" ] || usage; dest=$1 ;;
   esac
@@ -55,8 +60,28 @@ case "$dest_abs/" in
 esac
 [ -f "$root/grader/ci/github-classroom.yml" ] || die "grader/ci/github-classroom.yml is missing from the kit"
 
+# The labs not released (--labs): their folders, case files and golden images stay behind.
+withheld=()
+if [ -n "$release_labs" ]; then
+  known=$(sed -n 's/^set(GSV_LAB_LIST \(.*\))$/\1/p' "$root/cmake/labs.cmake")
+  [ -n "$known" ] || die "cannot read the lab list from cmake/labs.cmake"
+  IFS=, read -r -a wanted <<<"$release_labs"
+  for lab in "${wanted[@]}"; do
+    case " $known " in *" $lab:"*) ;; *) die "--labs: unknown lab '$lab' (the kit has: $(echo "$known" | sed 's/:[^ ]*//g'))" ;; esac
+  done
+  for entry in $known; do
+    lab=${entry%%:*} dir=${entry#*:}
+    case ",$release_labs," in *",$lab,"*) continue ;; esac
+    withheld+=("labs/$dir/" "grader/cases/$lab.json" "grader/golden/$lab/")
+  done
+fi
+
 # What never goes to students, whichever way the file list is made.
 excluded() {
+  local w
+  for w in ${withheld[@]+"${withheld[@]}"}; do
+    case "$1" in "$w"*) return 0 ;; esac
+  done
   case "$1" in
     solutions|solutions/*|tests|tests/*|grader/hidden|grader/hidden/*|.github/*) return 0 ;;
     build*/*|*/build*/*) return 0 ;;

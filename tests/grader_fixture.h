@@ -47,25 +47,42 @@ inline void apply_edits(const std::filesystem::path& lab_folder, const Json& edi
     std::ofstream(file, std::ios::binary) << text;
 }
 
-// A kit whose labs/<lab_dir> is the solution with edits: GSV_ROOT points the kit's built <lab> binary at
-// it, so shader edits need no build. The reference reads the untouched solution copied beside it.
+inline GradeOptions instructor_options(const std::string& lab, const std::filesystem::path& out) {
+    GradeOptions options;
+    options.kit_root = source_root();
+    options.bin_dir = bin_dir();
+    options.out_dir = out;
+    options.labs = {lab};
+    options.seed = 20261122;
+    return options;
+}
+
+// A kit whose solutions/<lab_dir> has edits, and a copy of the built <lab>_solution to run it as the
+// student's <lab>: so shader edits need no build, and labs with C++ TODOs run the solution's C++. The
+// reference reads the untouched solution in the source tree.
 class EditedKit {
 public:
-    EditedKit(const std::string& lab_dir, const Json& edit) {
+    EditedKit(const std::string& lab, const std::string& lab_dir, const Json& edit) : lab_(lab) {
         const auto root = dir_.path("kit");
         std::filesystem::create_directories(root / "solutions");
-        std::filesystem::create_directories(root / "labs");
         std::filesystem::copy(source_root() / "shaders", root / "shaders", std::filesystem::copy_options::recursive);
         std::filesystem::copy(source_root() / "data", root / "data", std::filesystem::copy_options::recursive);
         std::filesystem::copy(source_root() / "solutions" / lab_dir, root / "solutions" / lab_dir, std::filesystem::copy_options::recursive);
-        std::filesystem::copy(source_root() / "solutions" / lab_dir, root / "labs" / lab_dir, std::filesystem::copy_options::recursive);
-        apply_edits(root / "labs" / lab_dir, edit);
-        setenv("GSV_ROOT", root.c_str(), 1);
+        apply_edits(root / "solutions" / lab_dir, edit);
+        std::filesystem::create_directories(dir_.path("bin"));
+        std::filesystem::copy_file(bin_dir() / (lab + "_solution"), dir_.path("bin") / lab);
     }
-    ~EditedKit() { unsetenv("GSV_ROOT"); }
     std::filesystem::path out() const { return dir_.path("out"); }
 
+    GradeOptions options() const {
+        GradeOptions options = instructor_options(lab_, out());
+        options.student_bin_dir = dir_.path("bin");
+        options.student_root = dir_.path("kit");
+        return options;
+    }
+
 private:
+    std::string lab_;
     TempDir dir_;
 };
 
@@ -88,16 +105,6 @@ public:
 private:
     TempDir dir_;
 };
-
-inline GradeOptions instructor_options(const std::string& lab, const std::filesystem::path& out) {
-    GradeOptions options;
-    options.kit_root = source_root();
-    options.bin_dir = bin_dir();
-    options.out_dir = out;
-    options.labs = {lab};
-    options.seed = 20261122;
-    return options;
-}
 
 inline std::map<std::string, CaseResult> by_name(const GradeReport& report, const std::string& kind = "image") {
     std::map<std::string, CaseResult> results;

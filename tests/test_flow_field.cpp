@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <utility>
 #include <limits>
 #include <string>
@@ -387,4 +388,283 @@ TEST_CASE("save_flow refuses fields load_flow would refuse", "[flow]") {
     CHECK(contains(gsv_error_message([&] { gsv::save_flow(dir.path("c.flow"), field); }), "size 0x2 is not in 1..8192"));
     CHECK(contains(gsv_error_message([&] { gsv::save_flow(dir.path("no/such/dir/d.flow"), FlowField{1, 1, {0.0f, 0.0f}}); }),
                    "cannot write flow file"));
+}
+
+// Time-varying flows: sequences, their files, the vortex street and the double gyre over time.
+
+namespace {
+
+// A sequence of `frames` frames of width x height whose values are all distinct, so a frame or texel in the
+// wrong place shows.
+gsv::FlowSequence numbered_sequence(int width, int height, int frames) {
+    gsv::FlowSequence sequence{width, height, {}};
+    float next = 0.0f;
+    for (int f = 0; f < frames; ++f) {
+        FlowField frame{width, height, {}};
+        for (int i = 0; i < 2 * width * height; ++i) frame.velocity.push_back(next += 0.25f);
+        sequence.frames.push_back(frame);
+    }
+    return sequence;
+}
+
+std::filesystem::path committed_flow(const std::string& name) {
+#ifdef GSV_SOURCE_ROOT
+    return std::filesystem::path(GSV_SOURCE_ROOT) / "data" / "flows" / name;
+#else
+    return std::filesystem::path(__FILE__).parent_path().parent_path() / "data" / "flows" / name;
+#endif
+}
+
+// The vortex street's domain velocity at the centre of texel (x, y) of a width x height grid on [0,2]x[0,1],
+// carried into texels as make_vortex_street does (2 units across, 1 up).
+glm::dvec2 street_texel_velocity(int x, int y, int width, int height, double phase) {
+    const glm::dvec2 p((2.0 * x + 1.0) / width, (2.0 * y + 1.0) / (2.0 * height));
+    const glm::dvec2 v = gsv::vortex_street_velocity(p, phase);
+    return {v.x * 0.5 * width, v.y * height};
+}
+
+}  // namespace
+
+TEST_CASE("sequences are frames after a four-field header and round-trip bit for bit", "[flow]") {
+    TempDir dir;
+    gsv::FlowSequence sequence = numbered_sequence(3, 2, 4);
+    sequence.frames[2].velocity[5] = -0.0f;
+    sequence.frames[3].velocity[0] = std::numeric_limits<float>::denorm_min();
+    gsv::save_flow_sequence(dir.path("s.flow"), sequence);
+    const std::string bytes = gsv::test::read_text(dir.path("s.flow"));
+    CHECK(bytes.substr(0, 16) == "GSVFLOW 1 3 2 4\n");
+    REQUIRE(bytes.size() == 16 + 4 * 3 * 2 * 8);
+    // Frame after frame: frame 1 starts right after frame 0's 12 values.
+    CHECK(bytes.substr(16 + 12 * 4, 4) == le(sequence.frames[1].velocity[0]));
+
+    const gsv::FlowSequence loaded = gsv::load_flow_sequence(dir.path("s.flow"));
+    CHECK(loaded.width == 3);
+    CHECK(loaded.height == 2);
+    REQUIRE(loaded.frames.size() == 4);
+    for (std::size_t f = 0; f < 4; ++f) {
+        CHECK(loaded.frames[f].width == 3);
+        CHECK(loaded.frames[f].height == 2);
+        REQUIRE(loaded.frames[f].velocity.size() == 12);
+        const std::size_t bytes = 12 * sizeof(float);  // bit for bit: -0.0f and denormals too
+        CHECK(std::memcmp(loaded.frames[f].velocity.data(), sequence.frames[f].velocity.data(), bytes) == 0);
+    }
+    CHECK(loaded.max_speed() == sequence.frames[3].max_speed());
+    CHECK(gsv::FlowSequence{}.max_speed() == 0.0f);
+
+    // Even one frame gets the four-field header, and load_flow still reads it.
+    gsv::save_flow_sequence(dir.path("one.flow"), numbered_sequence(1, 1, 1));
+    CHECK(gsv::test::read_text(dir.path("one.flow")).substr(0, 16) == "GSVFLOW 1 1 1 1\n");
+    CHECK(gsv::load_flow(dir.path("one.flow")).velocity == std::vector<float>{0.25f, 0.5f});
+}
+
+TEST_CASE("one-frame files read both ways, and load_flow refuses a sequence in one line", "[flow]") {
+    TempDir dir;
+    const auto single = dir.write("single.flow", "GSVFLOW 1 1 1\n" + le(1.0f) + le(2.0f));
+    const auto four = dir.write("four.flow", "GSVFLOW 1 1 1 1\n" + le(1.0f) + le(2.0f));
+    CHECK(gsv::load_flow(single).velocity == std::vector<float>{1.0f, 2.0f});
+    CHECK(gsv::load_flow(four).velocity == std::vector<float>{1.0f, 2.0f});
+    const gsv::FlowSequence as_sequence = gsv::load_flow_sequence(single);
+    REQUIRE(as_sequence.frames.size() == 1);
+    CHECK(as_sequence.frames[0].velocity == std::vector<float>{1.0f, 2.0f});
+
+    const auto three = dir.write("three.flow", "GSVFLOW 1 2 2 3\n" + floats(24, 0.5f));
+    CHECK(gsv_error_message([&] { gsv::load_flow(three); }) ==
+          "flow file '" + three.string() + "': holds 3 frames; a single field is needed (lab 03 reads sequences)");
+    CHECK(gsv::load_flow_sequence(three).frames.size() == 3);
+}
+
+TEST_CASE("load_flow_sequence names the frame and the fault in one line", "[flow]") {
+    TempDir dir;
+    const auto message = [&](const std::string& name, const std::string& content) {
+        const auto path = dir.write(name, content);
+        return gsv_error_message([&] { gsv::load_flow_sequence(path); });
+    };
+    const std::string header = "GSVFLOW 1 2 2 3\n";  // 3 frames of 2x2 texels: 32 bytes each, 96 in all
+
+    CHECK(contains(message("zero.flow", "GSVFLOW 1 2 2 0\n"), "zero.flow': frames '0' is not in 1..4096"));
+    CHECK(contains(message("many.flow", "GSVFLOW 1 2 2 5000\n"), "frames '5000' is not in 1..4096"));
+    CHECK(contains(message("word.flow", "GSVFLOW 1 2 2 three\n"), "frames 'three' is not in 1..4096"));
+    CHECK(contains(message("fields.flow", "GSVFLOW 1 2 2 3 4\n"),
+                   "header 'GSVFLOW 1 2 2 3 4' is not 'GSVFLOW 1 <width> <height>' or "
+                   "'GSVFLOW 1 <width> <height> <frames>'"));
+    // 16 frames of 8192x8192 would be 8 GiB: refused from the header alone, before any allocation.
+    CHECK(contains(message("big.flow", "GSVFLOW 1 8192 8192 16\n" + floats(8, 0.0f)),
+                   "big.flow': 16 frames of 8192x8192 texels need 8589934592 bytes of velocities, more than the "
+                   "1073741824 (1 GiB) a .flow file may hold"));
+
+    CHECK(contains(message("cut2.flow", header + floats(2 * 8 + 3, 0.5f)),
+                   "cut2.flow': expected 96 bytes of velocities for 3 frames, found 76: they end in frame 2, after "
+                   "12 of its 32 bytes (frames count from 0; 2x2 texels, 8 bytes each)"));
+    CHECK(contains(message("before2.flow", header + floats(2 * 8, 0.5f)),
+                   "expected 96 bytes of velocities for 3 frames, found 64: they end before frame 2 "));
+    CHECK(contains(message("trailing.flow", header + floats(24, 0.5f) + "x"),
+                   "1 trailing bytes after the 96 bytes of velocities"));
+
+    // Value 5 of frame 1 is vy of texel 2, which is (0, 1) on a 2x2 grid.
+    CHECK(contains(message("nan.flow", header + floats(8 + 5, 0.5f) + le(std::nanf("")) + floats(10, 0.5f)),
+                   "nan.flow': vy at texel (0, 1) of frame 1 is NaN"));
+    CHECK(contains(message("inf.flow", header + floats(16, 0.5f) + le(std::numeric_limits<float>::infinity()) +
+                                           floats(7, 0.5f)),
+                   "vx at texel (0, 0) of frame 2 is infinite"));
+    CHECK(!contains(message("one_line.flow", header + "\n\n"), "\n"));
+}
+
+TEST_CASE("save_flow_sequence refuses sequences load_flow_sequence would refuse, before writing", "[flow]") {
+    TempDir dir;
+    const auto refusal = [&](const gsv::FlowSequence& sequence) {
+        const std::string message = gsv_error_message([&] { gsv::save_flow_sequence(dir.path("s.flow"), sequence); });
+        CHECK(!std::filesystem::exists(dir.path("s.flow")));
+        return message;
+    };
+    gsv::FlowSequence sequence = numbered_sequence(2, 2, 3);
+    sequence.frames[2] = numbered_sequence(4, 2, 1).frames[0];
+    CHECK(refusal(sequence) == "save_flow_sequence '" + dir.path("s.flow").string() +
+                                   "': frame 2 is 4x2, not the sequence's 2x2");
+    sequence = numbered_sequence(2, 2, 3);
+    sequence.frames[1].velocity.pop_back();
+    CHECK(contains(refusal(sequence), "frame 1 has 7 velocity values for 2x2 texels, which need 8"));
+    sequence = numbered_sequence(2, 2, 3);
+    sequence.frames[1].velocity[3] = -std::numeric_limits<float>::infinity();
+    CHECK(contains(refusal(sequence), "vy at texel (1, 0) of frame 1 is infinite"));
+    CHECK(contains(refusal(gsv::FlowSequence{2, 2, {}}), "holds 0 frames; a .flow file holds 1..4096"));
+    CHECK(contains(refusal(gsv::FlowSequence{0, 2, {}}), "holds 0 frames"));
+    CHECK(contains(refusal(gsv::FlowSequence{0, 2, {FlowField{0, 2, {}}}}), "size 0x2 is not in 1..8192 each way"));
+    // 2 frames of 8192x8192 are exactly 1 GiB; 3 are over, refused before the missing velocities are looked at.
+    const gsv::FlowSequence huge{8192, 8192, std::vector<FlowField>(3)};
+    CHECK(contains(refusal(huge), "3 frames of 8192x8192 texels need 1610612736 bytes of velocities"));
+}
+
+TEST_CASE("the vortex street repeats after one period and moves within it", "[flow]") {
+    double largest_difference = 0.0;
+    for (double phase : {0.0, 0.3, 0.75})
+        for (double x = 0.05; x < 2.0; x += 0.1)
+            for (double y = 0.05; y < 1.0; y += 0.1) {
+                const glm::dvec2 now = gsv::vortex_street_velocity({x, y}, phase);
+                for (int periods : {1, 2, -1}) {
+                    const glm::dvec2 later = gsv::vortex_street_velocity({x, y}, phase + periods);
+                    REQUIRE(glm::length(later - now) <= 1e-6 * glm::length(now));
+                }
+                largest_difference = std::max(
+                    largest_difference, glm::length(gsv::vortex_street_velocity({x, y}, phase + 0.5) - now));
+            }
+    CHECK(largest_difference > 0.1);  // the stream is 1; the vortices move by half a spacing
+
+    // The pattern drifts one spacing (0.5, vortex_street.cpp) per period: a sixteenth of a period later the
+    // flow at x + 0.5/16 is what it was at x, up to the strength ramps far outside the domain (the stream
+    // is 1; the vortices reach about 1.4).
+    for (double x = 0.0; x < 1.95; x += 0.05)
+        for (double y = 0.0; y < 1.0; y += 0.02) {
+            const glm::dvec2 before = gsv::vortex_street_velocity({x, y}, 0.2);
+            const glm::dvec2 after = gsv::vortex_street_velocity({x + 0.5 / 16, y}, 0.2 + 1.0 / 16);
+            REQUIRE(glm::length(after - before) <= 1e-3);
+        }
+    CHECK(contains(gsv_error_message([] { gsv::vortex_street_velocity({0, 0}, std::nan("")); }),
+                   "vortex_street_velocity: phase must be finite"));
+}
+
+TEST_CASE("the vortex street is a stream with two rows of opposite vortices about y = 1/2", "[flow]") {
+    // Far above and below the street the stream dominates: everything moves right.
+    for (double x = 0.0; x <= 2.0; x += 0.05) {
+        CHECK(gsv::vortex_street_velocity({x, 0.02}, 0.0).x > 0.9);
+        CHECK(gsv::vortex_street_velocity({x, 0.98}, 0.0).x > 0.9);
+    }
+    // Circulation around a small square about a vortex of each row: clockwise above, counter-clockwise below.
+    // At phase 0 the upper row's vortices sit at x = -2 + 0.5 s for whole s (vortex_street.cpp), so one at
+    // x = 1, and the lower row's half a spacing downstream, one at x = 1.25.
+    const double half_gap = 0.5 * 0.5 * std::log(1.0 + std::sqrt(2.0)) / std::acos(-1.0);
+    const auto circulation = [](glm::dvec2 c) {
+        double sum = 0;
+        const double r = 0.03, step = 0.001;
+        for (double t = -r; t < r; t += step) {
+            sum += gsv::vortex_street_velocity({c.x + t, c.y - r}, 0.0).x * step;
+            sum += gsv::vortex_street_velocity({c.x + r, c.y + t}, 0.0).y * step;
+            sum -= gsv::vortex_street_velocity({c.x + t, c.y + r}, 0.0).x * step;
+            sum -= gsv::vortex_street_velocity({c.x - r, c.y + t}, 0.0).y * step;
+        }
+        return sum;
+    };
+    CHECK(circulation({1.0, 0.5 + half_gap}) < -0.05);
+    CHECK(circulation({1.25, 0.5 - half_gap}) > 0.05);
+    CHECK(std::abs(circulation({1.125, 0.5})) < 0.01);
+}
+
+TEST_CASE("make_vortex_street scales every frame by one factor to the requested top speed", "[flow]") {
+    const int width = 50, height = 30, frames = 5;
+    const gsv::FlowSequence street = gsv::make_vortex_street(width, height, frames, 1.5);
+    CHECK(street.width == width);
+    CHECK(street.height == height);
+    REQUIRE(street.frames.size() == static_cast<std::size_t>(frames));
+    CHECK(std::abs(street.max_speed() - 1.5f) <= 1.5e-6f);
+    bool some_frame_slower = false;
+    for (const FlowField& frame : street.frames) {
+        REQUIRE(all_finite(frame));
+        some_frame_slower = some_frame_slower || frame.max_speed() < 1.5f - 1e-4f;
+    }
+    CHECK(some_frame_slower);
+    CHECK(street.frames[0].velocity != street.frames[1].velocity);
+
+    // Frame k is the street at phase k / frames times one factor, the same for every frame and texel.
+    const double scale = street.frames[0].at(7, 11).x / street_texel_velocity(7, 11, width, height, 0.0).x;
+    for (int k = 0; k < frames; ++k)
+        for (int y = 0; y < height; y += 3)
+            for (int x = 0; x < width; x += 3) {
+                const glm::dvec2 expected = scale * street_texel_velocity(x, y, width, height, double(k) / frames);
+                const glm::vec2 got = street.frames[k].at(x, y);
+                REQUIRE(std::abs(got.x - expected.x) <= 1e-5);
+                REQUIRE(std::abs(got.y - expected.y) <= 1e-5);
+            }
+    // The frame after the last would be frame 0 again: phase 1 is phase 0.
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const glm::dvec2 wrapped = scale * street_texel_velocity(x, y, width, height, 1.0);
+            const glm::vec2 first = street.frames[0].at(x, y);
+            REQUIRE(std::abs(wrapped.x - first.x) <= 1e-6);
+            REQUIRE(std::abs(wrapped.y - first.y) <= 1e-6);
+        }
+}
+
+TEST_CASE("make_double_gyre_sequence is one period of make_flow's double gyre under one scale", "[flow]") {
+    const int width = 64, height = 32, frames = 8;
+    const gsv::FlowSequence gyre = gsv::make_double_gyre_sequence(width, height, frames, 2.0);
+    REQUIRE(gyre.frames.size() == static_cast<std::size_t>(frames));
+    CHECK(std::abs(gyre.max_speed() - 2.0f) <= 2e-6f);
+    // At t = 0 the gyre is at its slowest (df/dx = 1 everywhere): frame 0 is slower than the sequence's top.
+    CHECK(gyre.frames[0].max_speed() < 1.9f);
+    for (int k = 0; k < frames; ++k) {
+        const FlowField alone = gsv::make_flow(FlowKind::DoubleGyre, width, height, 2.0, 10.0 * k / frames);
+        // make_flow scales the frame alone to 2; in the sequence it is slower by the common factor's ratio.
+        const float ratio = gyre.frames[k].max_speed() / 2.0f;
+        INFO("frame " << k);
+        for (std::size_t i = 0; i < alone.velocity.size(); ++i)
+            REQUIRE(std::abs(gyre.frames[k].velocity[i] - ratio * alone.velocity[i]) <= 4e-6f);
+    }
+}
+
+TEST_CASE("sequence generators refuse bad arguments with one clear line", "[flow]") {
+    CHECK(gsv_error_message([] { gsv::make_vortex_street(16, 8, 0, 1.0); }) ==
+          "make_vortex_street: frames must be 1..4096, got 0");
+    CHECK(gsv_error_message([] { gsv::make_vortex_street(16, 8, 5000, 1.0); }) ==
+          "make_vortex_street: frames must be 1..4096, got 5000");
+    CHECK(gsv_error_message([] { gsv::make_double_gyre_sequence(16, 8, -1, 1.0); }) ==
+          "make_double_gyre_sequence: frames must be 1..4096, got -1");
+    CHECK(gsv_error_message([] { gsv::make_vortex_street(0, 8, 4, 1.0); }) ==
+          "make_vortex_street: width must be 1..8192, got 0");
+    CHECK(gsv_error_message([] { gsv::make_double_gyre_sequence(8, 8, 4, -2.0); }) ==
+          "make_double_gyre_sequence: max_texels_per_step must be finite and >= 0, got -2");
+    CHECK(gsv_error_message([] { gsv::make_vortex_street(8192, 8192, 3, 1.0); }) ==
+          "make_vortex_street: 3 frames of 8192x8192 texels need 1610612736 bytes of velocities, more than the "
+          "1073741824 (1 GiB) a .flow file may hold");
+    const gsv::FlowSequence still = gsv::make_vortex_street(8, 4, 2, 0.0);
+    for (const FlowField& frame : still.frames) CHECK(all_zero(frame));
+}
+
+TEST_CASE("data/flows/vortex_street.flow is the generator's 128x64, 16-frame street", "[flow]") {
+    // tests/check_flow_data.sh compares the file with gsv-flow's output byte for byte; this says what it holds.
+    const gsv::FlowSequence committed = gsv::load_flow_sequence(committed_flow("vortex_street.flow"));
+    CHECK(committed.width == 128);
+    CHECK(committed.height == 64);
+    REQUIRE(committed.frames.size() == 16);
+    CHECK(committed.max_speed() == 1.0f);
+    const gsv::FlowSequence generated = gsv::make_vortex_street(128, 64, 16, 1.0);
+    for (std::size_t f = 0; f < 16; ++f) REQUIRE(committed.frames[f].velocity == generated.frames[f].velocity);
 }

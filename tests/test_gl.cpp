@@ -141,7 +141,7 @@ TEST_CASE("framebuffer: float readback keeps NaN that an 8-bit target would hide
     CHECK(int(shown.at(3, 3)[2]) == 255);
 }
 
-TEST_CASE("texture: a 2D array returns exactly its layer; a 3D texture blends neighbours", "[gl]") {
+TEST_CASE("texture: a 2D array returns exactly its layer, a 3D texture blends neighbours", "[gl]") {
     auto context = test::headless_context();
     const int w = 4, h = 4, layers = 3;
     std::vector<float> texels(static_cast<std::size_t>(w * h * layers));
@@ -199,7 +199,7 @@ TEST_CASE("texture: mipmaps, wrap and 8-bit rows that are not 4-byte aligned", "
     check_gl_error("texture round trip");
 }
 
-TEST_CASE("buffer: map with invalidate, write, read back; storage buffers need 4.3", "[gl]") {
+TEST_CASE("buffer: map with invalidate, write, read back, storage buffers need 4.3", "[gl]") {
     {
         auto context = test::headless_context(Profile::Core, {4, 5});
         Buffer ssbo = Buffer::create(GL_SHADER_STORAGE_BUFFER, 1024 * sizeof(float), nullptr, GL_DYNAMIC_DRAW);

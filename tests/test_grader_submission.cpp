@@ -21,7 +21,7 @@ std::string probe_value(const std::string& output, const std::string& key) {
 
 }  // namespace
 
-TEST_CASE("grader: C++ faults in a submission each get their own status; the sandbox holds", "[grader][submission]") {
+TEST_CASE("grader: C++ faults in a submission each get their own status, the sandbox holds", "[grader][submission]") {
     const Json spec = test::mutant_spec("lab01");
     const Json& faults = spec.object_at("cpp_faults");
     test::Submission submission(spec.string_at("lab_dir"), &faults);

@@ -64,7 +64,7 @@ TEST_CASE("white noise is deterministic and depends on the seed", "[noise][flow]
     CHECK(same < 5);
 }
 
-TEST_CASE("white noise is uniform on [0, 1) with independent neighbours", "[noise][flow]") {
+TEST_CASE("white noise is uniform on the unit interval with independent neighbours", "[noise][flow]") {
     const int side = 256;
     const std::vector<float> noise = gsv::white_noise(side, side, 1);
     double sum = 0.0, sum_sq = 0.0;

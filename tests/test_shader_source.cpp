@@ -268,7 +268,7 @@ TEST_CASE("shader_source: an include cycle is reported with the whole chain") {
                                               dir.path("self.frag").string()) != std::string::npos);
 }
 
-TEST_CASE("shader_source: #pragma once includes a file once; without it a repeated include is inserted again") {
+TEST_CASE("shader_source: #pragma once includes a file once, and without it a repeated include is inserted again") {
     TempDir dir;
     dir.write("once.glsl", "#pragma once\nconst float ONCE_MARKER = 1.0;\n");
     dir.write("twice.glsl", "const float TWICE_MARKER = 1.0;\n");

@@ -21,7 +21,7 @@ cd "$out"
 export GSV_ROOT="$out/kit"
 xvfb-run -a -s "-screen 0 800x600x24" bash -c '
   victim=$1
-  "$0" window --size 640x480 --screenshot-after 10 --quit-after 1000 --out own.png > lab.log 2>&1 &
+  "$0" window --size 640x480 --screenshot-after 10 --quit-after 10s --out own.png > lab.log 2>&1 &
   pid=$!
   for i in $(seq 1 300); do [ -s own.png ] && break; sleep 0.1; done
   sleep 0.5

@@ -12,6 +12,7 @@
 #include "common/noise.h"
 #include "common/texture.h"
 
+#include <algorithm>
 #include <vector>
 
 namespace {
@@ -21,8 +22,10 @@ public:
     gsv::LabInfo info() const override { return {"lab02", "Line integral convolution", {4, 1}, "the kit's baseline"}; }
 
     void declare(gsv::Params& p, std::vector<gsv::RenderCase>& cases) override {
-        p.add_choice("field", "rotation", {"rotation", "saddle", "source", "double_gyre", "vortices", "swirl"},
-                     "the flow: analytic fields, and a swirl confined to a disc for the photograph");
+        p.add_choice("field", "rotation", {"rotation", "saddle", "source", "double_gyre", "vortices", "swirl", "file"},
+                     "the flow: analytic fields, a swirl confined to a disc for the photograph, or field_file");
+        p.add_file("field_file", "flows/vortex_street.flow",
+                   "a .flow file (format in data/README.md) for field=file; of a sequence, the frame at `time`");
         p.add_choice("input", "noise", {"noise", "photo"}, "what LIC smears: white noise, or a photograph");
         p.add_int("length", 25, 0, 200, "steps each way along the streamline")
             .accuracy_knob({"1", "2", "5", "10", "25", "50", "100"});
@@ -43,12 +46,13 @@ public:
             {"vortices", "six vortices drawn from the seed", {"field=vortices", "seed=7"}},
             {"normalized", "unit steps: slow regions streak as long as fast ones", {"field=source", "normalized=on"}},
             {"midpoint", "second-order steps keep long circles closed", {"step=midpoint", "length=80"}},
+            {"file", "a field read from a .flow file: one frame of a von Karman vortex street", {"field=file", "time=5"}},
             {"photo", "photographic LIC: a swirl around Grace Hopper's face", {"input=photo", "field=swirl", "length=30"}},
         };
     }
 
     void setup(gsv::LabKit& kit) override {
-        lic_ = &kit.program("lic", {"quad.vert", "lic.frag"});
+        lic_ = &kit.program("lic", {"gsv/fullscreen.vert", "lic.frag"});
         quad_ = gsv::GpuMesh(gsv::make_fullscreen_quad(), kit.profile());
         photo_ = gsv::read_image(kit.assets().data_file("images/grace_hopper.jpg"));
     }
@@ -75,9 +79,10 @@ private:
         const std::string field = p.get_choice("field");
         const double speed = p.get_float("speed");
         const gsv::FlowField flow =
-            field == "swirl" ? gsv::make_photo_swirl(frame.width, frame.height, speed, 0.5, 0.62, p.get_float("swirl_radius"))
-                             : gsv::make_flow(gsv::flow_kind_from_name(field), frame.width, frame.height, speed,
-                                              p.get_float("time"), static_cast<std::uint64_t>(p.get_int("seed")));
+            field == "file"    ? field_from_file(kit, speed)
+            : field == "swirl" ? gsv::make_photo_swirl(frame.width, frame.height, speed, 0.5, 0.62, p.get_float("swirl_radius"))
+                               : gsv::make_flow(gsv::flow_kind_from_name(field), frame.width, frame.height, speed,
+                                                p.get_float("time"), static_cast<std::uint64_t>(p.get_int("seed")));
         flow_ = gsv::Texture::create_2d(flow.width, flow.height, gsv::TexelFormat::RG32F, flow.velocity.data());
         if (p.get_choice("input") == "photo") {
             input_ = gsv::Texture::create_2d(photo_.width, photo_.height, gsv::TexelFormat::RGBA8, flipped(photo_).data());
@@ -89,6 +94,21 @@ private:
             input_ = gsv::Texture::create_2d(frame.width, frame.height, gsv::TexelFormat::RGB32F, rgb.data());
         }
         stale_ = false;
+    }
+
+    // A file's field keeps its own grid (the shader steps in flow texels) and is rescaled like the
+    // analytic ones, so `speed` means the same for every field. Of a sequence, `time` in [0, 10] picks a
+    // frame, as it moves the double gyre through its period.
+    static gsv::FlowField field_from_file(gsv::LabKit& kit, double speed) {
+        const auto& p = kit.params();
+        gsv::FlowSequence sequence = gsv::load_flow_sequence(kit.assets().user_file(p.get_file("field_file")));
+        const int frames = static_cast<int>(sequence.frames.size());
+        const int index = std::min(frames - 1, static_cast<int>(p.get_float("time") / 10.0 * frames));
+        gsv::FlowField field = std::move(sequence.frames[static_cast<std::size_t>(index)]);
+        const float fastest = field.max_speed();
+        if (fastest > 0)
+            for (float& v : field.velocity) v = static_cast<float>(v * (speed / fastest));
+        return field;
     }
 
     // Images are stored top row first; GL textures bottom row first.

@@ -1,0 +1,19 @@
+#pragma once
+// Which stored time slices make up the flow at a playhead, in double precision: the CPU reference of
+// lab 03's slice_coordinate / nearest_slice / next_slice (solutions/lab03_texture_arrays/flow_time.glsl).
+// T slices cover one period; slice k was sampled at time k * period / T.
+namespace gsv {
+
+enum class TimeWrap { Repeat, Clamp };  // a periodic flow wraps: after slice T - 1 comes slice 0
+enum class TimeBlend { Nearest, Linear };
+
+struct SliceMix {
+    int first = 0, second = 0;  // slice indices in [0, T)
+    double weight = 0;          // of `second`: flow = (1 - weight) * first + weight * second
+};
+
+// Throws gsv::Error unless slices >= 1, period > 0 and time are finite.
+double slice_coordinate(double time, double period, int slices, TimeWrap wrap);
+SliceMix slice_mix(double time, double period, int slices, TimeWrap wrap, TimeBlend blend);
+
+}  // namespace gsv

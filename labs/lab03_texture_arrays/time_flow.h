@@ -1,0 +1,34 @@
+#pragma once
+// Lab 03's support code, not part of the lesson: the time slices to upload, the GL limits each
+// storage runs into, and the sweep's measurements of what the GPU sampled.
+#include "common/app.h"
+#include "common/flow_field.h"
+#include "common/gpu_mesh.h"
+
+#include <functional>
+#include <string>
+
+namespace lab03 {
+
+// Everything the uploaded slices depend on; the playhead is not in it, so playing costs no upload.
+std::string flow_signature(const gsv::Params& params);
+
+// T slices over one period, T = the `slices` parameter: the analytic flows sampled at times
+// k * 10 / T, or a file's frames (slice k = frame floor(k * F / T)). Velocities in flow texels per
+// step; an analytic flow's scale does not depend on T, so slices of any T agree where they coincide.
+gsv::FlowSequence make_time_flow(gsv::LabKit& kit);
+
+// One line and gsv::UnsupportedError when this context cannot hold the slices in the chosen storage:
+// more layers than GL_MAX_ARRAY_TEXTURE_LAYERS, a depth over GL_MAX_3D_TEXTURE_SIZE, more separate
+// textures than free texture units; gsv::Error over 1 GiB of slices.
+void check_storage_limits(const gsv::Params& params);
+
+// The sweep's columns: the largest difference between the flow the GPU sampled at the playhead and the
+// CPU's (double precision) mix of the same slices ("sample err": exactly 0 for an array; a 3D
+// texture's filter shows here); the temporal error of T slices against the flow itself (analytic, or a
+// file's frames blended linearly), RMS over 37 playheads of the period; and the slices' memory.
+gsv::SweepMetrics measure_sampling(gsv::LabKit& kit, const gsv::ShaderLibrary::Entry& probe, const gsv::GpuMesh& quad,
+                                   const gsv::FlowSequence& flow,
+                                   const std::function<void(const gsv::ShaderProgram&)>& bind_flow);
+
+}  // namespace lab03

@@ -1,0 +1,158 @@
+// Lab 03: time-varying line integral convolution with a 2D texture array.
+// Seed: Bailey, "Using GPU Shaders for Visualization, Part 2" (texture arrays for time-varying data).
+// T time slices of a flow go into ONE texture array; the fragment stage picks the slice of the
+// playhead with a vec3 lookup whose third component is the layer. Beside it the same slices in a 3D
+// texture (filtering runs across slices) and in T separate textures (one texture unit each).
+#include "common/app.h"
+#include "common/flow_field.h"
+#include "common/framebuffer.h"
+#include "common/gl.h"
+#include "common/gpu_mesh.h"
+#include "common/mesh_data.h"
+#include "common/noise.h"
+#include "common/texture.h"
+#include "time_flow.h"
+
+
+#include <string>
+#include <vector>
+
+namespace {
+
+class TextureArrayLab final : public gsv::Lab {
+public:
+    gsv::LabInfo info() const override { return {"lab03", "Texture arrays: time-varying LIC", {4, 1}, "the kit's baseline"}; }
+
+    void declare(gsv::Params& p, std::vector<gsv::RenderCase>& cases) override {
+        p.add_choice("field", "double_gyre", {"double_gyre", "vortex_street", "file"},
+                     "the time-varying flow: analytic, or the sequence in field_file");
+        p.add_file("field_file", "flows/vortex_street.flow", "a .flow sequence (data/README.md) for field=file");
+        p.add_int("slices", 16, 1, 4096, "T: time slices stored over one period (for a file, T of its frames)")
+            .at_compile_time()
+            .accuracy_knob({"1", "2", "4", "8", "16", "32", "64"});
+        p.add_choice("blend", "nearest", {"nearest", "linear"}, "the nearest slice, or linear in time between two")
+            .at_compile_time()
+            .series();
+        p.add_choice("storage", "array", {"array", "volume", "separate"},
+                     "one 2D texture array, one 3D texture, or T separate 2D textures")
+            .at_compile_time();
+        p.add_choice("time_wrap", "repeat", {"repeat", "clamp"}, "a periodic flow wraps; any other stops at the last slice")
+            .at_compile_time();
+        p.add_float("time", 3.3f, 0, 10, "the playhead over one period").with_step(0.1).animated();
+        p.add_int("length", 20, 0, 200, "LIC steps each way");
+        p.add_int("grid", 256, 16, 1024, "flow texels across (the domain is twice as wide as high)");
+        p.add_float("speed", 1.0, 0, 4, "largest speed, in flow texels per step").with_step(0.1);
+        p.add_int("seed", 1, 0, 1000000, "the white noise");
+
+        cases = {
+            {"gyre", "the double gyre at t = 3.3, 16 slices in a texture array", {}},
+            {"wrap", "near the end of the period the nearest slice is slice 0 again", {"time=9.8"}},
+            {"linear", "linear in time between two layers", {"blend=linear"}},
+            {"volume", "the same slices in a 3D texture, slice centres at (k + 0.5) / T", {"storage=volume"}},
+            {"volume-linear", "the 3D texture's filter blends time for free", {"storage=volume", "blend=linear"}},
+            {"separate", "8 separate textures, one unit each", {"storage=separate", "slices=8"}},
+            {"street", "a vortex street loaded from a file", {"field=file", "time=2"}},
+        };
+    }
+
+    void setup(gsv::LabKit& kit) override {
+        check_limits(kit);
+        lic_ = &kit.program("lic", {"gsv/fullscreen.vert", "lic_time.frag"});
+        probe_ = &kit.program("probe", {"gsv/fullscreen.vert", "probe.frag"});
+        quad_ = gsv::GpuMesh(gsv::make_fullscreen_quad(), kit.profile());
+    }
+
+    void params_changed(gsv::LabKit& kit) override { check_limits(kit); }
+
+    void render(gsv::LabKit& kit, const gsv::Frame& frame) override {
+        upload_if_changed(kit, frame);
+        glDisable(GL_DEPTH_TEST);
+        const gsv::ShaderProgram& program = kit.use(*lic_);
+        noise_.bind(0);
+        program.set("uNoise", 0);
+        bind_flow(program);
+        program.set("uFlowTexel", glm::vec2(1.0f / float(flow_.width), 1.0f / float(flow_.height)));
+        quad_.draw();
+    }
+
+    std::vector<std::string> sweep_reference() const override { return {"slices=256", "blend=linear"}; }
+
+    gsv::SweepMetrics sweep_metrics(gsv::LabKit& kit, const gsv::Frame&) override {
+        return lab03::measure_sampling(kit, *probe_, quad_, flow_, [&](const gsv::ShaderProgram& p) { bind_flow(p); });
+    }
+
+private:
+    void check_limits(gsv::LabKit& kit) const { lab03::check_storage_limits(kit.params()); }
+
+    void upload_if_changed(gsv::LabKit& kit, const gsv::Frame& frame) {
+        const auto& p = kit.params();
+        const std::string signature = lab03::flow_signature(p) + " " + std::to_string(frame.width) + "x" +
+                                      std::to_string(frame.height) + " " + p.get_text("seed");
+        if (signature == uploaded_) return;
+        flow_ = lab03::make_time_flow(kit);
+        upload(p);
+        noise_ = gsv::Texture::create_2d(frame.width, frame.height, gsv::TexelFormat::R32F,
+                                         gsv::white_noise(frame.width, frame.height,
+                                                          static_cast<std::uint64_t>(p.get_int("seed"))).data());
+        uploaded_ = signature;
+    }
+
+    void upload(const gsv::Params& p) {
+        const int slices = static_cast<int>(flow_.frames.size());
+        const int w = flow_.width, h = flow_.height;
+        // TODO(L03-T1): one buffer with all T slices, slice k straight after slice k - 1 (at
+        // k * w * h * 2 floats): the layout glTexImage3D takes for an array and for a 3D texture alike.
+        std::vector<float> packed;
+//@solution L03-T1
+        packed.reserve(static_cast<std::size_t>(slices) * static_cast<std::size_t>(w * h * 2));
+        for (const gsv::FlowField& slice : flow_.frames)
+            packed.insert(packed.end(), slice.velocity.begin(), slice.velocity.end());
+//@starter
+//        packed.assign(static_cast<std::size_t>(slices) * static_cast<std::size_t>(w * h * 2), 0.0f);
+//        std::copy(flow_.frames[0].velocity.begin(), flow_.frames[0].velocity.end(), packed.begin());
+//@end
+        const std::string storage = p.get_choice("storage");
+        array_ = gsv::Texture();
+        volume_ = gsv::Texture();
+        separate_.clear();
+        gsv::Sampling sampling;  // linear in s and t, clamped at the borders of the domain
+        if (storage == "array") {
+            array_ = gsv::Texture::create_2d_array(w, h, slices, gsv::TexelFormat::RG32F, packed.data(), sampling);
+        } else if (storage == "volume") {
+            sampling.wrap_r = p.get_choice("time_wrap") == "repeat" ? GL_REPEAT : GL_CLAMP_TO_EDGE;
+            volume_ = gsv::Texture::create_3d(w, h, slices, gsv::TexelFormat::RG32F, packed.data(), sampling);
+        } else {
+            for (const gsv::FlowField& slice : flow_.frames)
+                separate_.push_back(gsv::Texture::create_2d(w, h, gsv::TexelFormat::RG32F, slice.velocity.data(), sampling));
+        }
+    }
+
+    // Units from 1 up; unit 0 is the noise. T separate textures are bound every frame: the cost (and
+    // the unit limit) the array removes.
+    void bind_flow(const gsv::ShaderProgram& program) const {
+        if (array_.id()) {
+            array_.bind(1);
+            program.set("uFlowArray", 1);
+        } else if (volume_.id()) {
+            volume_.bind(1);
+            program.set("uFlowVolume", 1);
+        } else {
+            for (std::size_t k = 0; k < separate_.size(); ++k) {
+                separate_[k].bind(static_cast<int>(k) + 1);
+                program.set("uFlowSlices[" + std::to_string(k) + "]", static_cast<int>(k) + 1);
+            }
+        }
+    }
+
+    const gsv::ShaderLibrary::Entry* lic_ = nullptr;
+    const gsv::ShaderLibrary::Entry* probe_ = nullptr;
+    gsv::GpuMesh quad_;
+    gsv::FlowSequence flow_;
+    gsv::Texture noise_, array_, volume_;
+    std::vector<gsv::Texture> separate_;
+    std::string uploaded_;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) { return gsv::run_lab<TextureArrayLab>(argc, argv); }
