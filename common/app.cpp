@@ -98,13 +98,15 @@ void Session::render_frame(const Frame& frame) {
 }
 
 std::optional<std::string> Session::sync_params() {
+    // The lab first: it may refuse the new values (a GL limit) with a clearer line than the shader
+    // compiler would give for them.
+    lab->params_changed(*kit);
     std::optional<std::string> error;
     const std::string signature = params.compile_signature();
     if (signature != compiled_signature_) {
         error = kit->shaders().rebuild_all(params.defines());
         compiled_signature_ = signature;
     }
-    lab->params_changed(*kit);
     return error;
 }
 

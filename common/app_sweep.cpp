@@ -72,7 +72,16 @@ int run_sweep(Session& s) {
         for (const auto& knob_value : knob_values) {
             std::vector<std::string> settings{knob_name + "=" + knob_value};
             if (!series_name.empty()) settings.push_back(series_name + "=" + series_value);
-            const Rendered r = render_with(settings, frames);
+            Rendered r;
+            try {
+                r = render_with(settings, frames);
+            } catch (const UnsupportedError& e) {
+                // A point this GPU cannot draw (lab 03's separate textures past the unit limit) is left out,
+                // said once, and the rest of the sweep goes on.
+                std::fprintf(stderr, "  %s=%s %s=%s: left out: %s\n", series_name.c_str(), series_value.c_str(),
+                             knob_name.c_str(), knob_value.c_str(), e.what());
+                continue;
+            }
             const ImageDiff diff = compare_images(r.image, reference, ImageTolerance{});
             SweepRow row;
             row.series = series_value;

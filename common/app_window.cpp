@@ -183,6 +183,7 @@ int run_window(Session& s) {
     double last_frame = start;
     int frame_index = 0;
     int screenshot_count = 0;
+    Params last_good = s.params;
     while (!glfwWindowShouldClose(window)) {
         glfwPollEvents();
         const double now = now_seconds();
@@ -204,11 +205,23 @@ int run_window(Session& s) {
             }
             input.reload = false;
         }
+        // A value the lab refuses (a GL limit, a missing file) must not end a live demo: say why and go back
+        // to the last values that drew.
+        auto refuse = [&](const std::exception& e) {
+            panel_state.status = e.what();
+            std::fprintf(stderr, "%s\n", e.what());
+            s.params = last_good;
+            if (auto error = s.sync_params()) std::fprintf(stderr, "%s\n", error->c_str());
+        };
         if (input.params_changed) {
             input.params_changed = false;
-            if (auto error = s.sync_params()) {
-                panel_state.status = *error;
-                std::fprintf(stderr, "%s\n", error->c_str());
+            try {
+                if (auto error = s.sync_params()) {
+                    panel_state.status = *error;
+                    std::fprintf(stderr, "%s\n", error->c_str());
+                }
+            } catch (const Error& e) {
+                refuse(e);
             }
         }
 
@@ -220,7 +233,14 @@ int run_window(Session& s) {
         }
         Framebuffer::bind_default(width, height);
         const double t0 = now_seconds();
-        s.render_frame(Frame{width, height, now - start});
+        try {
+            s.render_frame(Frame{width, height, now - start});
+            last_good = s.params;
+        } catch (const Error& e) {
+            if (frame_index == 0) throw;  // the values the lab started with: nothing good to go back to
+            refuse(e);
+            continue;
+        }
         glFinish();
         panel_state.render_ms = 1000.0 * (now_seconds() - t0);
         ++frame_index;

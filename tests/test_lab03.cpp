@@ -17,6 +17,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <sstream>
 
 using namespace gsv;
 namespace fs = std::filesystem;
@@ -318,4 +319,47 @@ TEST_CASE("lab03: animate writes the period as PNG frames and one looping APNG, 
     const auto bad = test::run_lab("lab03_solution", {"animate", "--from", "11", "--out-dir", out.string()}, dir.path());
     CHECK(bad.exit_code() == 2);
     CHECK(bad.process.output.find("--from = 11 is out of range [0, 10] of parameter 'time'") != std::string::npos);
+}
+
+TEST_CASE("lab03: the sweep measures sampling error, temporal error and memory for every slice count", "[lab03]") {
+    // Columns: blend, slices, median_ms, min_ms, rmse, max_diff, sample_err, temporal_rmse, flow_MiB.
+    auto cell = [](const std::string& row, int k) {
+        std::stringstream s(row);
+        std::string text;
+        for (int i = 0; i <= k; ++i) std::getline(s, text, ',');
+        return text;
+    };
+    for (const std::string storage : {"array", "volume"}) {
+        test::TempDir dir;
+        const auto run = test::run_lab("lab03_solution", {"sweep", "--size", "64x32", "--frames", "1", "--warmup", "0",
+                                                          "--set", "grid=32", "--set", "storage=" + storage,
+                                                          "--out-dir", dir.path().string()},
+                                       dir.path());
+        INFO(storage << ": " << run.process.output);
+        REQUIRE(run.exit_code() == 0);
+        const auto rows = test::lines_of(test::read_text(dir.path("lab03-sweep.csv")));
+        REQUIRE(rows.size() == 1 + 2 * 7);  // header, nearest and linear x 7 slice counts
+        CHECK(rows[0] == "blend,slices,median_ms,min_ms,rmse,max_diff,sample_err,temporal_rmse,flow_MiB");
+        for (std::size_t i = 1; i < rows.size(); ++i) {
+            INFO(rows[i]);
+            const double sample_err = std::stod(cell(rows[i], 6));
+            // Holding a slice, the array hands it back exactly; a 3D texture read at slice centres nearly so.
+            // A blend is exact to float rounding.
+            if (storage == "array" && cell(rows[i], 0) == "nearest") CHECK(sample_err == 0.0);
+            else CHECK(sample_err < 1e-5);
+            // 32 x 16 texels x 8 bytes per slice.
+            CHECK(std::stod(cell(rows[i], 8)) == Approx(std::stod(cell(rows[i], 1)) * 32 * 16 * 8 / 1048576.0));
+        }
+        // Temporal error: first order for the nearest slice, second order for a linear blend.
+        REQUIRE(cell(rows[5], 1) == "16");
+        REQUIRE(cell(rows[7], 1) == "64");
+        REQUIRE(cell(rows[12], 1) == "16");
+        REQUIRE(cell(rows[14], 1) == "64");
+        const double nearest16 = std::stod(cell(rows[5], 7)), nearest64 = std::stod(cell(rows[7], 7));
+        const double linear16 = std::stod(cell(rows[12], 7)), linear64 = std::stod(cell(rows[14], 7));
+        CHECK(nearest64 < 0.4 * nearest16);
+        CHECK(nearest64 > 0.1 * nearest16);
+        CHECK(linear64 < 0.1 * linear16);
+        CHECK(linear16 < nearest16);
+    }
 }

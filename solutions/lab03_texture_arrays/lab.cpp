@@ -75,7 +75,8 @@ public:
         quad_.draw();
     }
 
-    std::vector<std::string> sweep_reference() const override { return {"slices=256", "blend=linear"}; }
+    // Storage changes what an image costs, not what it shows: the reference is always the array's.
+    std::vector<std::string> sweep_reference() const override { return {"slices=256", "blend=linear", "storage=array"}; }
 
     gsv::SweepMetrics sweep_metrics(gsv::LabKit& kit, const gsv::Frame&) override {
         return lab03::measure_sampling(kit, *probe_, quad_, flow_, [&](const gsv::ShaderProgram& p) { bind_flow(p); });
