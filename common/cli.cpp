@@ -1,6 +1,7 @@
 #include "common/cli.h"
 
 #include "common/error.h"
+#include "common/number_text.h"
 
 #include <cmath>
 #include <regex>
@@ -9,31 +10,18 @@ namespace gsv {
 namespace {
 
 int parse_count(const std::string& option, const std::string& text, int min, int max) {
-    std::size_t used = 0;
-    long v = 0;
-    try {
-        v = std::stol(text, &used);
-    } catch (...) {
-        used = 0;
-    }
-    if (used == 0 || used != text.size()) throw Error("option " + option + " needs an integer, got '" + text + "'");
-    if (v < min || v > max)
+    const std::optional<double> v = parse_finite_number(text);
+    if (!v || *v != std::floor(*v)) throw Error("option " + option + " needs an integer, got '" + text + "'");
+    if (*v < min || *v > max)
         throw Error("option " + option + " = " + text + " is out of range [" + std::to_string(min) + ", " +
                     std::to_string(max) + "]");
-    return static_cast<int>(v);
+    return static_cast<int>(*v);
 }
 
 double parse_real(const std::string& option, const std::string& text) {
-    std::size_t used = 0;
-    double v = 0;
-    try {
-        v = std::stod(text, &used);
-    } catch (...) {
-        used = 0;
-    }
-    if (used == 0 || used != text.size() || !std::isfinite(v))
-        throw Error("option " + option + " needs a number, got '" + text + "'");
-    return v;
+    const std::optional<double> v = parse_finite_number(text);
+    if (!v) throw Error("option " + option + " needs a number, got '" + text + "'");
+    return *v;
 }
 
 }  // namespace

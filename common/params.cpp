@@ -1,6 +1,7 @@
 #include "common/params.h"
 
 #include "common/error.h"
+#include "common/number_text.h"
 #include "common/shader_program.h"
 
 #include <algorithm>
@@ -39,16 +40,9 @@ std::string format_number(double v) {
 }
 
 double parse_number(const std::string& name, const std::string& text) {
-    std::size_t used = 0;
-    double v = 0;
-    try {
-        v = std::stod(text, &used);
-    } catch (...) {
-        used = 0;
-    }
-    if (used == 0 || used != text.size() || !std::isfinite(v))
-        throw Error("parameter '" + name + "' = '" + text + "' is not a number");
-    return v;
+    const std::optional<double> v = parse_finite_number(text);
+    if (!v) throw Error("parameter '" + name + "' = '" + text + "' is not a number");
+    return *v;
 }
 
 std::string range_text(const ParamSpec& s) {
