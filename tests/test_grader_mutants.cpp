@@ -55,7 +55,7 @@ TEST_CASE("grader: planted shader faults each get their own status, and every ca
 }
 
 // Tagged [timing]: ctest runs it alone, so no other test's load is measured.
-TEST_CASE("grader: a shader doing eight times the work is too slow, though its images are right", "[grader][timing]") {
+TEST_CASE("grader: a shader doing sixteen times the work is too slow, though its images are right", "[grader][timing]") {
     const Json spec = test::mutant_spec("lab01");
     int timed_faults = 0;
     for (const Json& fault : spec.array_at("faults").as_array()) {
