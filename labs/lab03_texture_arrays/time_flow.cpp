@@ -36,53 +36,42 @@ glm::dvec2 mixed(const gsv::FlowSequence& sequence, const gsv::SliceMix& m, int 
     return a + m.weight * (b - a);
 }
 
-gsv::FlowSequence from_file(const gsv::FlowSequence& file, int slices) {
-    gsv::FlowSequence out;
-    out.width = file.width;
-    out.height = file.height;
-    const std::size_t frames = file.frames.size();
-    for (int k = 0; k < slices; ++k) out.frames.push_back(file.frames[static_cast<std::size_t>(k) * frames / static_cast<std::size_t>(slices)]);
-    return out;
-}
-
-// The flow to upload: T slices. For the sweep also the truth at `times`: an analytic flow sampled there
-// (the same scale as the slices), or a file's own frames blended linearly.
-struct Source {
-    gsv::FlowSequence slices, truth;
-};
-
-Source load(gsv::LabKit& kit, int slices, const std::vector<double>& times) {
+// The flow at each of `times`: an analytic flow sampled there (one scale for any set of times), or a
+// file's frames, spread over the period like slices, blended linearly in time.
+gsv::FlowSequence flow_at_times(gsv::LabKit& kit, const std::vector<double>& times) {
     const auto& p = kit.params();
     const std::string field = p.get_choice("field");
     const double speed = p.get_float("speed");
-    Source s;
-    if (field == "file") {
-        gsv::FlowSequence file = gsv::load_flow_sequence(kit.assets().user_file(p.get_file("field_file")));
-        const float fastest = file.max_speed();
-        if (fastest > 0)
-            for (auto& frame : file.frames)
-                for (float& v : frame.velocity) v = static_cast<float>(v * (speed / fastest));
-        s.slices = from_file(file, slices);
-        s.truth.width = file.width;
-        s.truth.height = file.height;
-        const int frames = static_cast<int>(file.frames.size());
-        for (double time : times) {
-            const gsv::SliceMix m = gsv::slice_mix(time, kPeriod, frames, wrap_of(p), gsv::TimeBlend::Linear);
-            gsv::FlowField blended = file.frames[static_cast<std::size_t>(m.first)];
-            const auto& next = file.frames[static_cast<std::size_t>(m.second)].velocity;
-            for (std::size_t i = 0; i < blended.velocity.size(); ++i)
-                blended.velocity[i] = static_cast<float>(blended.velocity[i] + m.weight * (next[i] - blended.velocity[i]));
-            s.truth.frames.push_back(std::move(blended));
-        }
-        return s;
+    if (field != "file") {
+        const int grid = p.get_int("grid");
+        return gsv::make_unsteady_flow(gsv::unsteady_kind_from_name(field), grid, std::max(1, grid / 2), times, speed);
     }
-    const int grid = p.get_int("grid");
-    const auto kind = gsv::unsteady_kind_from_name(field);
-    std::vector<double> slice_times;
-    for (int k = 0; k < slices; ++k) slice_times.push_back(kPeriod * k / slices);
-    s.slices = gsv::make_unsteady_flow(kind, grid, std::max(1, grid / 2), slice_times, speed);
-    if (!times.empty()) s.truth = gsv::make_unsteady_flow(kind, grid, std::max(1, grid / 2), times, speed);
-    return s;
+    const gsv::FlowSequence file = gsv::load_flow_sequence(kit.assets().user_file(p.get_file("field_file")));
+    const float fastest = file.max_speed();
+    const double scale = fastest > 0 ? speed / fastest : 0.0;
+    gsv::FlowSequence out;
+    out.width = file.width;
+    out.height = file.height;
+    for (double time : times) {
+        const gsv::SliceMix m = gsv::slice_mix(time, kPeriod, static_cast<int>(file.frames.size()), wrap_of(p),
+                                               gsv::TimeBlend::Linear);
+        gsv::FlowField frame = file.frames[static_cast<std::size_t>(m.first)];
+        for (int y = 0; y < frame.height; ++y)
+            for (int x = 0; x < frame.width; ++x) {
+                const glm::dvec2 v = mixed(file, m, x, y) * scale;
+                const std::size_t i = 2 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(frame.width) + static_cast<std::size_t>(x));
+                frame.velocity[i] = static_cast<float>(v.x);
+                frame.velocity[i + 1] = static_cast<float>(v.y);
+            }
+        out.frames.push_back(std::move(frame));
+    }
+    return out;
+}
+
+std::vector<double> slice_times(int slices) {
+    std::vector<double> times;
+    for (int k = 0; k < slices; ++k) times.push_back(kPeriod * k / slices);
+    return times;
 }
 
 }  // namespace
@@ -94,7 +83,7 @@ std::string flow_signature(const gsv::Params& p) {
     return signature;
 }
 
-gsv::FlowSequence make_time_flow(gsv::LabKit& kit) { return load(kit, kit.params().get_int("slices"), {}).slices; }
+gsv::FlowSequence make_time_flow(gsv::LabKit& kit) { return flow_at_times(kit, slice_times(kit.params().get_int("slices"))); }
 
 void check_storage_limits(const gsv::Params& p) {
     const int slices = p.get_int("slices");
@@ -153,7 +142,7 @@ gsv::SweepMetrics measure_sampling(gsv::LabKit& kit, const gsv::ShaderLibrary::E
     // are spread so that none falls on a slice of any power-of-two T.
     std::vector<double> times;
     for (int j = 0; j < kErrorTimes; ++j) times.push_back(kPeriod * (j + 0.5) / kErrorTimes);
-    const gsv::FlowSequence truth = load(kit, slices, times).truth;
+    const gsv::FlowSequence truth = flow_at_times(kit, times);
     double squared = 0;
     long count = 0;
     for (int j = 0; j < kErrorTimes; ++j) {

@@ -13,9 +13,10 @@ namespace lab03 {
 // Everything the uploaded slices depend on; the playhead is not in it, so playing costs no upload.
 std::string flow_signature(const gsv::Params& params);
 
-// T slices over one period, T = the `slices` parameter: the analytic flows sampled at times
-// k * 10 / T, or a file's frames (slice k = frame floor(k * F / T)). Velocities in flow texels per
-// step; an analytic flow's scale does not depend on T, so slices of any T agree where they coincide.
+// T slices over one period, T = the `slices` parameter, slice k at time k * 10 / T: the analytic flows
+// sampled there, or a file's F frames (spread over the period the same way) blended linearly in time.
+// Velocities in flow texels per step; the scale does not depend on T, so slices of any T agree where
+// their times coincide.
 gsv::FlowSequence make_time_flow(gsv::LabKit& kit);
 
 // One line and gsv::UnsupportedError when this context cannot hold the slices in the chosen storage:
