@@ -6,18 +6,6 @@
 #include <string>
 
 namespace gsv {
-namespace {
-
-template <class T>
-void flip_rows(std::vector<T>& pixels, int width, int height) {
-    const std::size_t row = static_cast<std::size_t>(width) * 4;
-    for (int y = 0; y < height / 2; ++y)
-        std::swap_ranges(pixels.begin() + static_cast<std::ptrdiff_t>(y * row),
-                         pixels.begin() + static_cast<std::ptrdiff_t>((y + 1) * row),
-                         pixels.begin() + static_cast<std::ptrdiff_t>((height - 1 - y) * row));
-}
-
-}  // namespace
 
 Framebuffer::Framebuffer(int width, int height, ColorFormat format, bool with_depth)
     : width_(width), height_(height), format_(format) {
@@ -67,7 +55,7 @@ ImageF Framebuffer::read_rgba32f() const {
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, image.rgba.data());
     check_gl_error("reading back a float framebuffer");
-    flip_rows(image.rgba, width_, height_);
+    flip_rows(image);
     return image;
 }
 
@@ -78,7 +66,7 @@ Image read_current_framebuffer(int width, int height) {
     glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     check_gl_error("reading back a framebuffer");
-    flip_rows(image.rgba, width, height);
+    flip_rows(image);
     return image;
 }
 

@@ -99,6 +99,22 @@ Image decode_file(const std::filesystem::path& path, const std::string& what) {
 
 }  // namespace
 
+namespace {
+
+template <class T>
+void swap_rows(std::vector<T>& pixels, int width, int height) {
+    const std::size_t row = static_cast<std::size_t>(width) * 4;
+    for (int y = 0; y < height / 2; ++y)
+        std::swap_ranges(pixels.begin() + static_cast<std::ptrdiff_t>(y * row),
+                         pixels.begin() + static_cast<std::ptrdiff_t>((y + 1) * row),
+                         pixels.begin() + static_cast<std::ptrdiff_t>((height - 1 - y) * row));
+}
+
+}  // namespace
+
+void flip_rows(Image& image) { swap_rows(image.rgba, image.width, image.height); }
+void flip_rows(ImageF& image) { swap_rows(image.rgba, image.width, image.height); }
+
 Image read_png(const std::filesystem::path& path) { return decode_file(path, "PNG"); }
 
 Image read_image(const std::filesystem::path& path) { return decode_file(path, "image"); }

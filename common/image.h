@@ -36,6 +36,11 @@ struct ImageF {
 
 // Always returns RGBA whatever the file stores (gray, RGB, 16-bit, palette).
 // Throws gsv::Error "cannot read PNG '<path>': <reason>" on a missing, corrupt or truncated file.
+// Swaps the row order in place: images are stored top row first, GL textures and readbacks bottom row
+// first.
+void flip_rows(Image& image);
+void flip_rows(ImageF& image);
+
 Image read_png(const std::filesystem::path& path);
 // The same for any format stb_image reads (PNG, JPEG, ...): photographs in data/.
 Image read_image(const std::filesystem::path& path);

@@ -85,7 +85,9 @@ private:
                                                 p.get_float("time"), static_cast<std::uint64_t>(p.get_int("seed")));
         flow_ = gsv::Texture::create_2d(flow.width, flow.height, gsv::TexelFormat::RG32F, flow.velocity.data());
         if (p.get_choice("input") == "photo") {
-            input_ = gsv::Texture::create_2d(photo_.width, photo_.height, gsv::TexelFormat::RGBA8, flipped(photo_).data());
+            gsv::Image bottom_up = photo_;
+            gsv::flip_rows(bottom_up);
+            input_ = gsv::Texture::create_2d(photo_.width, photo_.height, gsv::TexelFormat::RGBA8, bottom_up.rgba.data());
         } else {
             // Grey noise in all three channels, in float: a texel's value is exactly what the CPU drew.
             const std::vector<float> noise = gsv::white_noise(frame.width, frame.height, static_cast<std::uint64_t>(p.get_int("seed")));
@@ -109,16 +111,6 @@ private:
         if (fastest > 0)
             for (float& v : field.velocity) v = static_cast<float>(v * (speed / fastest));
         return field;
-    }
-
-    // Images are stored top row first; GL textures bottom row first.
-    static std::vector<std::uint8_t> flipped(const gsv::Image& image) {
-        std::vector<std::uint8_t> rows(image.rgba.size());
-        const std::size_t row = static_cast<std::size_t>(image.width) * 4;
-        for (int y = 0; y < image.height; ++y)
-            std::copy_n(image.rgba.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(y)), row,
-                        rows.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(image.height - 1 - y)));
-        return rows;
     }
 
     const gsv::ShaderLibrary::Entry* lic_ = nullptr;
