@@ -35,7 +35,7 @@ public:
         p.add_effect("normalized", false, "unit steps along the flow, whatever its speed");
         p.add_float("speed", 1.0, 0, 4, "the field's largest speed, in texels per step").with_step(0.1);
         p.add_int("seed", 1, 0, 1000000, "the white noise and the vortices");
-        p.add_float("time", 0, 0, 10, "the double gyre's time").with_step(0.5);
+        p.add_float("time", 0, 0, 10, "the double gyre's time; the frame of a .flow sequence").with_step(0.5).animated();
         p.add_float("swirl_radius", 0.28, 0.05, 0.7, "radius of the swirl around the photograph's face").with_step(0.02);
 
         cases = {
