@@ -1,6 +1,7 @@
 // Reading the .flow file format of common/flow_field.h: load_flow and load_flow_sequence.
 #include "common/flow_field.h"
 
+#include "common/data_file.h"
 #include "common/error.h"
 #include "common/flow_format.h"
 
@@ -18,42 +19,9 @@ namespace {
 
 using namespace flow_format;
 
-// Far longer than any valid header, short enough that a binary file is not read as one huge "line".
-constexpr std::size_t kMaxHeaderLine = 64;
+const data_file::Format kFormat{"flow", kMagic, kVersion, "GSVFLOW 1 <width> <height>", 64};
 
-[[noreturn]] void fail(const std::filesystem::path& path, const std::string& what) {
-    throw Error("flow file " + quoted(path) + ": " + what);
-}
-
-// Header text is echoed in messages, so bytes that would garble a terminal are shown as '?'.
-std::string printable(const std::string& text) {
-    std::string shown = text;
-    for (char& c : shown)
-        if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) > 0x7e) c = '?';
-    return shown;
-}
-
-std::vector<std::string> split_spaces(const std::string& line) {
-    std::vector<std::string> fields;
-    std::size_t start = 0;
-    while (true) {
-        const std::size_t space = line.find(' ', start);
-        fields.push_back(line.substr(start, space - start));
-        if (space == std::string::npos) return fields;
-        start = space + 1;
-    }
-}
-
-// A side length or frame count written as plain decimal digits; anything else (sign, blank, overflow) is
-// out of range.
-int parse_count(const std::filesystem::path& path, const char* name, const std::string& text, int max) {
-    const bool digits = !text.empty() && text.size() <= 5 &&
-                        std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
-    const int value = digits ? std::stoi(text) : -1;
-    if (value < 1 || value > max)
-        fail(path, std::string(name) + " '" + printable(text) + "' is not in 1.." + std::to_string(max));
-    return value;
-}
+[[noreturn]] void fail(const std::filesystem::path& path, const std::string& what) { data_file::fail(kFormat, path, what); }
 
 struct Header {
     int width = 0, height = 0, frames = 1;
@@ -62,41 +30,16 @@ struct Header {
 // Opens the file and reads its header line, leaving `in` at the first velocity byte. Everything the
 // header alone can show wrong, the size limit included, is refused here, before any velocity is read.
 Header read_header(const std::filesystem::path& path, std::ifstream& in) {
-    std::error_code ignored;
-    // A directory opens as a stream on Linux and would then read as an empty file.
-    if (std::filesystem::is_directory(path, ignored)) fail(path, "is a directory, not a file");
-    in.open(path, std::ios::binary);
-    if (!in) {
-        const bool exists = std::filesystem::exists(path, ignored);
-        throw Error("cannot read flow file " + quoted(path) + ": " + (exists ? "cannot open file" : "no such file"));
-    }
-
     std::string line;
-    bool terminated = false;
-    char c = 0;
-    while (line.size() < kMaxHeaderLine && in.get(c)) {
-        if (c == '\n') {
-            terminated = true;
-            break;
-        }
-        line += c;
-    }
-    if (in.bad()) fail(path, "read error");
-    if (line.empty() && !terminated) fail(path, "file is empty");
-    const std::vector<std::string> fields = split_spaces(line);
-    if (fields[0] != kMagic) fail(path, "not a .flow file (it must start with 'GSVFLOW 1 <width> <height>')");
-    if (!terminated)
-        fail(path, "header line has no newline within its first " + std::to_string(kMaxHeaderLine) + " bytes");
-    if (fields.size() >= 2 && fields[1] != kVersion)
-        fail(path, "unsupported version '" + printable(fields[1]) + "' (this kit reads version 1)");
+    const std::vector<std::string> fields = data_file::open_with_header(kFormat, path, in, &line);
     if (fields.size() != 4 && fields.size() != 5)
-        fail(path, "header '" + printable(line) +
+        fail(path, "header '" + data_file::printable(line) +
                        "' is not 'GSVFLOW 1 <width> <height>' or 'GSVFLOW 1 <width> <height> <frames>'");
 
     Header header;
-    header.width = parse_count(path, "width", fields[2], kMaxFlowSide);
-    header.height = parse_count(path, "height", fields[3], kMaxFlowSide);
-    if (fields.size() == 5) header.frames = parse_count(path, "frames", fields[4], kMaxFlowFrames);
+    header.width = data_file::parse_count(kFormat, path, "width", fields[2], kMaxFlowSide);
+    header.height = data_file::parse_count(kFormat, path, "height", fields[3], kMaxFlowSide);
+    if (fields.size() == 5) header.frames = data_file::parse_count(kFormat, path, "frames", fields[4], kMaxFlowFrames);
     const std::string too_big = over_size_limit(header.frames, header.width, header.height);
     if (!too_big.empty()) fail(path, too_big);
     return header;
@@ -143,7 +86,7 @@ std::vector<FlowField> read_frames(const std::filesystem::path& path, std::ifstr
                 fail_short(path, header, expected, found);
             field.velocity.resize(done + count);
             for (std::size_t i = 0; i < count; ++i) {
-                const float value = float_from_little_endian(chunk.data() + 4 * i);
+                const float value = float_from_le_bytes(chunk.data() + 4 * i);
                 if (!std::isfinite(value))
                     fail(path, value_name(done + i, header.width, of_frame(f, header.frames)) + " is " +
                                    non_finite_kind(value));

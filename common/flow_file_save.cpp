@@ -48,7 +48,7 @@ void write_flow(const std::filesystem::path& path, const std::string& header, co
     for (const FlowField* field = frames; field != frames + count; ++field)
         for (std::size_t done = 0; done < field->velocity.size();) {
             const std::size_t n = std::min(field->velocity.size() - done, chunk.size() / sizeof(float));
-            for (std::size_t i = 0; i < n; ++i) float_to_little_endian(field->velocity[done + i], chunk.data() + 4 * i);
+            for (std::size_t i = 0; i < n; ++i) float_to_le_bytes(field->velocity[done + i], chunk.data() + 4 * i);
             out.write(reinterpret_cast<const char*>(chunk.data()), static_cast<std::streamsize>(n * sizeof(float)));
             done += n;
         }

@@ -2,6 +2,7 @@
 // Internal to flow_file.cpp (reading) and flow_file_save.cpp (writing): the byte-level pieces of the .flow
 // format (described in flow_field.h) that both sides must agree on.
 #include "common/flow_field.h"
+#include "common/little_endian.h"
 
 #include <cmath>
 #include <cstddef>
@@ -12,9 +13,6 @@
 #include <string>
 
 namespace gsv::flow_format {
-
-// Velocities are stored as IEEE binary32 bit patterns; a host with another float format cannot share them.
-static_assert(std::numeric_limits<float>::is_iec559 && sizeof(float) == 4, ".flow files need IEEE 754 floats");
 
 inline constexpr const char* kMagic = "GSVFLOW";
 inline constexpr const char* kVersion = "1";
@@ -28,21 +26,6 @@ inline std::string quoted(const std::filesystem::path& path) { return "'" + path
 // Counted in 64 bits: 4096 frames of 8192x8192 texels is 2^41 bytes, past a 32-bit size_t.
 inline std::uint64_t velocity_bytes(int frames, int width, int height) {
     return std::uint64_t(frames) * std::uint64_t(width) * std::uint64_t(height) * kBytesPerTexel;
-}
-
-// Assembled from bytes so the host's own byte order never matters.
-inline float float_from_little_endian(const unsigned char* bytes) {
-    const std::uint32_t bits = std::uint32_t(bytes[0]) | std::uint32_t(bytes[1]) << 8 |
-                               std::uint32_t(bytes[2]) << 16 | std::uint32_t(bytes[3]) << 24;
-    float value;
-    std::memcpy(&value, &bits, sizeof value);
-    return value;
-}
-
-inline void float_to_little_endian(float value, unsigned char* bytes) {
-    std::uint32_t bits;
-    std::memcpy(&bits, &value, sizeof bits);
-    for (int i = 0; i < 4; ++i) bytes[i] = static_cast<unsigned char>(bits >> (8 * i));
 }
 
 // " of frame k" in a sequence; "" in a single field, where naming the frame would only add noise.

@@ -1,6 +1,7 @@
 // Reading the .height file format of common/height_field.h: load_height_field.
 #include "common/height_field.h"
 
+#include "common/data_file.h"
 #include "common/error.h"
 #include "common/height_format.h"
 #include "common/little_endian.h"
@@ -18,81 +19,27 @@ namespace {
 
 using namespace height_format;
 
-// Far longer than any valid header, short enough that a binary file is not read as one huge "line".
-constexpr std::size_t kMaxHeaderLine = 128;
-constexpr const char* kHeaderShape = "GSVHEIGHT 1 <width> <height> <dx_m> <dy_m>";
+const data_file::Format kFormat{"height", kMagic, kVersion, "GSVHEIGHT 1 <width> <height> <dx_m> <dy_m>", 128};
 
-[[noreturn]] void fail(const std::filesystem::path& path, const std::string& what) {
-    throw Error("height file " + quoted(path) + ": " + what);
-}
-
-// Header text is echoed in messages, so bytes that would garble a terminal are shown as '?'.
-std::string printable(std::string text) {
-    for (char& c : text)
-        if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) > 0x7e) c = '?';
-    return text;
-}
-
-std::vector<std::string> split_spaces(const std::string& line) {
-    std::vector<std::string> fields;
-    for (std::size_t start = 0;;) {
-        const std::size_t space = line.find(' ', start);
-        fields.push_back(line.substr(start, space - start));
-        if (space == std::string::npos) return fields;
-        start = space + 1;
-    }
-}
-
-// Plain decimal digits only: a sign, a blank or an overflow is out of range rather than read as something.
-int parse_side(const std::filesystem::path& path, const char* name, const std::string& text) {
-    const bool digits = !text.empty() && text.size() <= 5 &&
-                        std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
-    const int value = digits ? std::stoi(text) : -1;
-    if (value < 1 || value > kMaxHeightSide)
-        fail(path, std::string(name) + " '" + printable(text) + "' is not in 1.." + std::to_string(kMaxHeightSide));
-    return value;
-}
+[[noreturn]] void fail(const std::filesystem::path& path, const std::string& what) { data_file::fail(kFormat, path, what); }
 
 double parse_metres(const std::filesystem::path& path, const char* name, const std::string& text) {
     const std::optional<double> value = parse_spacing(text);
-    if (!value) fail(path, std::string(name) + " '" + printable(text) + "' is not a positive, finite number of metres");
+    if (!value) fail(path, std::string(name) + " '" + data_file::printable(text) + "' is not a positive, finite number of metres");
     return *value;
 }
 
 // Opens the file and reads its header line, leaving `in` at the first height byte. Everything the header
 // alone can show wrong is refused here, before any height is read or allocated.
 HeightField read_header(const std::filesystem::path& path, std::ifstream& in) {
-    std::error_code ignored;
-    // A directory opens as a stream on Linux and would then read as an empty file.
-    if (std::filesystem::is_directory(path, ignored)) fail(path, "is a directory, not a file");
-    in.open(path, std::ios::binary);
-    if (!in) {
-        const bool exists = std::filesystem::exists(path, ignored);
-        throw Error("cannot read height file " + quoted(path) + ": " + (exists ? "cannot open file" : "no such file"));
-    }
-
     std::string line;
-    bool terminated = false;
-    for (char c = 0; line.size() < kMaxHeaderLine && in.get(c);) {
-        if (c == '\n') {
-            terminated = true;
-            break;
-        }
-        line += c;
-    }
-    if (in.bad()) fail(path, "read error");
-    if (line.empty() && !terminated) fail(path, "file is empty");
-    const std::vector<std::string> fields = split_spaces(line);
-    if (fields[0] != kMagic) fail(path, std::string("not a .height file (it must start with '") + kHeaderShape + "')");
-    if (!terminated)
-        fail(path, "header line has no newline within its first " + std::to_string(kMaxHeaderLine) + " bytes");
-    if (fields.size() >= 2 && fields[1] != kVersion)
-        fail(path, "unsupported version '" + printable(fields[1]) + "' (this kit reads version 1)");
-    if (fields.size() != 6) fail(path, "header '" + printable(line) + "' is not '" + kHeaderShape + "'");
+    const std::vector<std::string> fields = data_file::open_with_header(kFormat, path, in, &line);
+    if (fields.size() != 6)
+        fail(path, "header '" + data_file::printable(line) + "' is not '" + kFormat.shape + "'");
 
     HeightField field;
-    field.width = parse_side(path, "width", fields[2]);
-    field.height = parse_side(path, "height", fields[3]);
+    field.width = data_file::parse_count(kFormat, path, "width", fields[2], kMaxHeightSide);
+    field.height = data_file::parse_count(kFormat, path, "height", fields[3], kMaxHeightSide);
     field.dx_m = parse_metres(path, "dx_m", fields[4]);
     field.dy_m = parse_metres(path, "dy_m", fields[5]);
     return field;

@@ -1,5 +1,5 @@
 #pragma once
-// float32 values in little-endian byte order, the order the kit's binary data files (.height) store.
+// float32 values in little-endian byte order, the order the kit's binary data files (.flow, .height) store.
 // Assembled from and split into bytes, so the host's own byte order never matters.
 #include <cstdint>
 #include <cstring>

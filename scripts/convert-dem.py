@@ -9,7 +9,8 @@ Usage:
     scripts/convert-dem.py [--source-dir DIR] [--output-dir DIR]
     scripts/convert-dem.py --check
 
---check converts into a temporary folder and compares the result byte for byte with the committed files:
+--check converts into a temporary folder and compares the result byte for byte with the files in data/terrain
+(or --output-dir):
 exit 0 when they match, 1 (with one line saying which file and where) when they differ, 77 when
 python-matplotlib-data is not installed, so ctest reports the check as skipped rather than failed.
 
@@ -232,7 +233,9 @@ def check(source_dir, committed_dir):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser = argparse.ArgumentParser(
+        description="Converts python-matplotlib-data's elevation models into data/terrain/*.height "
+                    "(details in the script's docstring and data/README.md).")
     parser.add_argument("--source-dir", type=Path, default=DEFAULT_SOURCE_DIR,
                         help="folder with the .npz files (default: python-matplotlib-data's sample_data)")
     parser.add_argument("--output-dir", type=Path, default=DEFAULT_OUTPUT_DIR, help="default: data/terrain")

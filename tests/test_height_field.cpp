@@ -4,6 +4,7 @@
 #include "common/height_field.h"
 #include "common/terrain_normal.h"
 #include "common/terrain_procedural.h"
+#include "gl_fixture.h"
 #include "test_support.h"
 
 #include <algorithm>
@@ -21,6 +22,7 @@ using gsv::ProceduralTerrain;
 using gsv::TerrainKind;
 using gsv::test::gsv_error_message;
 using gsv::test::TempDir;
+using gsv::test::source_root;
 namespace fs = std::filesystem;
 
 namespace {
@@ -28,14 +30,6 @@ namespace {
 constexpr double kRadToDeg = 180.0 / 3.14159265358979323846;
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
-
-fs::path source_root() {
-#ifdef GSV_SOURCE_ROOT
-    return fs::path(GSV_SOURCE_ROOT);
-#else
-    return fs::path(__FILE__).parent_path().parent_path();
-#endif
-}
 
 std::string le_float(float value) {
     std::uint32_t bits;
@@ -246,7 +240,7 @@ TEST_CASE("height_field: data/terrain/topobathy.height loads, sea to the south-w
         const long index = static_cast<long>(it - field.heights.begin());
         return glm::ivec2(index % field.width, index / field.width);
     };
-    // The Pacific's continental slope off Vancouver Island is the deepest (south-west corner); the Coast
+    // The continental slope off the Pacific coast is the deepest (south-west corner); the Coast
     // Mountains north of Vancouver, by Mount Garibaldi, the highest (north-east).
     const glm::ivec2 deepest = where(field.min_height()), highest = where(field.max_height());
     CHECK(deepest.x < field.width / 4);

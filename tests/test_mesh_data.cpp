@@ -1,4 +1,5 @@
 #include "catch.hpp"
+#include "gl_fixture.h"
 
 #include "common/error.h"
 #include "common/mesh_data.h"
@@ -87,13 +88,7 @@ struct TempDir {
     }
 };
 
-fs::path source_root() {
-#ifdef GSV_SOURCE_ROOT
-    return fs::path(GSV_SOURCE_ROOT);
-#else
-    return fs::path(__FILE__).parent_path().parent_path();
-#endif
-}
+using gsv::test::source_root;
 
 }  // namespace
 
