@@ -137,6 +137,9 @@ int run_lab(std::unique_ptr<Lab> lab, const char* lab_dir, const char* variant, 
             session.options = parse_cli(argc, argv);
             session.apply_command_line_settings();
             if (session.options.mode == RunMode::Animate && !session.options.help) check_animate_command(session);
+            if (session.options.mode == RunMode::Sweep && !session.options.help) check_sweep_command(session);
+            if (session.options.mode != RunMode::Sweep && (!session.options.knob.empty() || !session.options.values.empty()))
+                throw Error("--knob and --values are for sweep mode");
         } catch (const Error& e) {
             std::fprintf(stderr, "%s: %s\n", session.info.id.c_str(), e.what());
             return kExitUsage;

@@ -52,6 +52,8 @@ Readback read_back(const Framebuffer& float_target);
 int run_window(Session& session);
 int run_render(Session& session);
 int run_sweep(Session& session);
+// Throws the one-line usage error (exit 2) for a sweep this lab cannot run (no knob, a bad --knob or --values).
+void check_sweep_command(const Session& session);
 // Throws the one-line usage error (exit 2) for an animate command this lab cannot run, before any GL.
 void check_animate_command(const Session& session);
 int run_animate(Session& session);

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <regex>
+#include <sstream>
 
 namespace gsv {
 namespace {
@@ -77,7 +78,11 @@ CliOptions parse_cli(int argc, const char* const* argv) {
             if (o.fps < 0.1 || o.fps > 1000) throw Error("option --fps = " + text + " is out of range [0.1, 1000]");
         } else if (arg == "--from") o.from = parse_real(arg, next());
         else if (arg == "--to") o.to = parse_real(arg, next());
-        else if (arg == "--frames") o.frames = parse_count(arg, next(), 1, 100000);
+        else if (arg == "--knob") o.knob = next();
+        else if (arg == "--values") {
+            std::stringstream items(next());
+            for (std::string value; std::getline(items, value, ',');) o.values.push_back(value);
+        } else if (arg == "--frames") o.frames = parse_count(arg, next(), 1, 100000);
         else if (arg == "--warmup") o.warmup = parse_count(arg, next(), 0, 100000);
         else if (arg == "--screenshot-after") o.screenshot_after = parse_count(arg, next(), 1, 1000000);
         else if (arg == "--quit-after") {
@@ -111,6 +116,8 @@ std::string cli_usage(const std::string& program) {
            "  --json FILE         render: the JSON report (default: the PNG's name with .json)\n"
            "  --out-dir DIR       sweep: where the CSV and plot go (default sweep-<lab>);\n"
            "                      animate: where frame_0000.png... and animation.png go (default animate-<lab>)\n"
+           "  --knob NAME --values A,B,C   sweep another parameter through these values (least accurate first);\n"
+           "                      the error is against the last value unless the lab names a reference\n"
            "  --count N           animate: frames over the range (default 48); --fps F its playback rate (default 20)\n"
            "  --from A --to B     animate: the range to step (default the parameter's); B itself is not drawn, so\n"
            "                      a periodic parameter loops seamlessly\n"

@@ -21,6 +21,8 @@ struct CliOptions {
     std::string out;                     // render: PNG path; window: screenshot path
     std::string json;                    // render: JSON path (default: the PNG's with .json)
     std::string out_dir;                 // sweep: folder for CSV and plot; animate: for frames and APNG
+    std::string knob;                    // sweep: another parameter than the lab's accuracy knob...
+    std::vector<std::string> values;     // ...through these values (--values a,b,c), least accurate first
     int count = 48;                      // animate: frames over the animated parameter's range
     double fps = 20;                     // animate: the APNG's playback rate
     std::optional<double> from, to;      // animate: the range stepped (default: the parameter's min and max)

@@ -31,6 +31,25 @@ void add_cell(std::vector<std::uint32_t>& indices, std::uint32_t a, std::uint32_
 
 }  // namespace
 
+MeshData make_grid(int n) {
+    if (n < 2 || n > 4096) throw Error("make_grid: " + std::to_string(n) + " vertices per side is not in 2..4096");
+    MeshData grid;
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const glm::vec2 uv(static_cast<float>(i) / static_cast<float>(n - 1), static_cast<float>(j) / static_cast<float>(n - 1));
+            grid.positions.emplace_back(uv.x, 0.0f, uv.y);
+            grid.normals.emplace_back(0.0f, 1.0f, 0.0f);
+            grid.texcoords.push_back(uv);
+        }
+    for (int j = 0; j + 1 < n; ++j)
+        for (int i = 0; i + 1 < n; ++i) {
+            const auto at = [n](int x, int y) { return static_cast<std::uint32_t>(y * n + x); };
+            // Counter-clockwise seen from +y.
+            grid.indices.insert(grid.indices.end(), {at(i, j), at(i, j + 1), at(i + 1, j + 1), at(i, j), at(i + 1, j + 1), at(i + 1, j)});
+        }
+    return grid;
+}
+
 MeshData make_uv_sphere(int slices, int stacks, float radius) {
     if (slices < 3) throw Error("make_uv_sphere: slices must be at least 3, got " + std::to_string(slices));
     if (stacks < 2) throw Error("make_uv_sphere: stacks must be at least 2, got " + std::to_string(stacks));

@@ -22,6 +22,11 @@ struct MeshData {
     std::size_t triangle_count() const { return indices.size() / 3; }
 };
 
+// A flat n x n grid of vertices over the unit square in the xz plane: position (u, 0, v), texture
+// coordinate (u, v), normal +y; 2 (n-1)^2 triangles. n = 2 is one quad. A vertex shader displaces it
+// (lab 04's real terrain geometry). Throws gsv::Error unless 2 <= n <= 4096.
+MeshData make_grid(int n);
+
 // A latitude-longitude sphere centred at the origin. u runs with longitude (0 at +z, growing toward +x),
 // v with latitude (0 at the south pole, 1 at the north pole, so v grows upward like GL's texture origin).
 // The seam column is duplicated so u can reach 1, and each pole is a row of `slices` vertices, one per

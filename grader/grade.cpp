@@ -78,7 +78,9 @@ private:
 
 ProcessLimits Grading::limits(const LabCases& lab, bool student) const {
     ProcessLimits l;
-    const double timeout_s = options_.timeout_s > 0 ? options_.timeout_s : lab.timeout_s;
+    // --timeout is a limit on the student's code; the reference is trusted, and timing it out under a
+    // loaded machine would fail the student's case for the grader's own reason.
+    const double timeout_s = student && options_.timeout_s > 0 ? options_.timeout_s : lab.timeout_s;
     l.timeout = std::chrono::milliseconds(static_cast<long>(timeout_s * 1000));
     if (student && options_.sandbox) {
         l.sandbox = &policy_;

@@ -30,7 +30,7 @@ struct GradeOptions {
     bool hidden = true;                 // instructor mode: add the hidden cases drawn from the seed
     bool sandbox = true;                // off only to debug the grader itself
     std::optional<std::uint64_t> seed;  // hidden cases; none: a fresh seed, recorded in the report
-    double timeout_s = 0;               // per process; 0: the case file's timeout_s
+    double timeout_s = 0;               // per student process; 0: the case file's timeout_s (always the reference's)
 };
 
 struct GradeProgress {

@@ -30,7 +30,7 @@ const char* kUsage =
     "  --self-check      golden images and public cases only, even where the solutions are built\n"
     "  --no-timing       skip the frame-time checks\n"
     "  --public-only     skip the hidden cases\n"
-    "  --timeout S       wall-clock limit per lab process (default: the case file's)\n"
+    "  --timeout S       wall-clock limit per student lab process (default: the case file's)\n"
     "  --fail-under F    exit 1 when the score is below F (0..1) of the maximum: a CI gate\n"
     "  --update-goldens  render grader/golden/<lab>/<case>.png with the reference solutions\n"
     "  --no-sandbox      run student code without namespaces and limits (to debug the grader only)\n"

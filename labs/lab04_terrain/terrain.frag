@@ -1,0 +1,17 @@
+// Lab 04 fragment stage: lights the terrain with the normal its heights give (normal.glsl) and colours it
+// by height (colour.glsl). With GEOMETRY_BUMP the surface is one flat quad: only the normal is real.
+#include "gsv/not_done.glsl"
+#include "normal.glsl"
+#include "colour.glsl"
+
+uniform vec3 uLightDirection;  // towards the light, world space
+
+in vec2 vTexCoord;
+out vec4 fColor;
+
+void main() {
+    vec3 n = terrain_normal(vTexCoord);
+    float h = texture(uHeights, vTexCoord).r;
+    float diffuse = max(dot(n, normalize(uLightDirection)), 0.0);
+    fColor = vec4(height_colour(h) * (0.22 + 0.78 * diffuse), 1.0);
+}

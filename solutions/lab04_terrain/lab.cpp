@@ -1,0 +1,130 @@
+// Lab 04: bump-mapped terrain from a real elevation model.
+// Seed: Bailey, "Using GPU Shaders for Visualization, Part 2" (bump-mapped terrain).
+// The heights are a float texture; one quad is drawn, and the fragment stage builds each pixel's normal
+// from the heights around it (normal.glsl). Beside it, real geometry: an N x N grid displaced by the same
+// heights, to see what the trick saves and where it shows.
+#include "common/app.h"
+#include "common/gl.h"
+#include "common/gpu_mesh.h"
+#include "common/mesh_data.h"
+#include "common/texture.h"
+#include "terrain_source.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <string>
+#include <vector>
+
+namespace {
+
+class TerrainLab final : public gsv::Lab {
+public:
+    gsv::LabInfo info() const override { return {"lab04", "Bump-mapped terrain", {4, 1}, "the kit's baseline"}; }
+
+    void declare(gsv::Params& p, std::vector<gsv::RenderCase>& cases) override {
+        p.add_choice("terrain", "jacksboro", {"jacksboro", "topobathy", "franke", "sin_cos", "flat"},
+                     "real elevation models (data/terrain), or procedural ones whose exact normals are known");
+        p.add_int("grid", 256, 2, 2048, "samples per side of a procedural terrain");
+        p.add_choice("geometry", "bump", {"bump", "mesh"}, "one bump-mapped quad, or an N x N grid displaced by the heights")
+            .at_compile_time();
+        p.add_int("mesh_n", 64, 2, 1024, "N, vertices per side of the displaced grid (geometry=mesh)");
+        p.add_int("delta", 1, 1, 16, "finite-difference step, in samples")
+            .accuracy_knob({"16", "8", "4", "2", "1"});
+        p.add_float("exaggeration", 3, 0, 100, "vertical exaggeration").with_step(0.5);
+        p.add_effect("mipmaps", false, "mipmapped heights: zoomed out, far samples average instead of alias");
+        p.add_int("mip_level", -1, -1, 10, "with mipmaps: -1 lets the hardware pick the level, k reads level k");
+        p.add_bool("heights8", false, "heights rounded to 256 levels, as an 8-bit texture would store them");
+        p.add_choice("colouring", "levels", {"levels", "plain"}, "sea, green, brown and snow by height, or one colour")
+            .at_compile_time();
+        p.add_float("tree_line", 0.35, 0, 1, "where green turns brown, as a fraction of the land's height range");
+        p.add_float("snow_line", 0.8, 0, 1, "where brown turns to snow");
+        p.add_float("blend", 0.05, 0, 0.5, "half the width of each colour transition").with_step(0.01);
+        p.add_vec3("light_direction", {-1.0f, 1.2f, -0.6f}, -10, 10, "towards the light (x east, y up, z south)");
+        p.add_vec3("pan", {0, 0, 0}, -1, 1, "the point looked at, in model units (x east, z south)");
+        gsv::add_orbit_camera(p, 0, 60, 2.6f);
+
+        cases = {
+            {"jacksboro", "the Jacksboro fault, bump-mapped, from above", {}},
+            {"grazing", "a grazing view of the bump-mapped quad: flat where the real surface would rise", {"camera_pitch=8", "camera_distance=2"}},
+            {"grazing-mesh", "the same view of real geometry: the ridges stand up", {"camera_pitch=8", "camera_distance=2", "geometry=mesh", "mesh_n=256"}},
+            {"topobathy", "land and sea off Vancouver Island", {"terrain=topobathy", "exaggeration=8"}},
+            {"franke", "Franke's function: exact normals known", {"terrain=franke"}},
+            {"terraces", "8-bit heights: terraces", {"terrain=franke", "heights8=on", "grid=512", "exaggeration=6"}},
+            {"zoomed-out", "far away without mipmaps: the normals alias", {"camera_distance=7"}},
+            {"zoomed-out-mipmaps", "far away with mipmaps", {"camera_distance=7", "mipmaps=on"}},
+        };
+    }
+
+    void setup(gsv::LabKit& kit) override {
+        shade_ = &kit.program("terrain", {"terrain.vert", "terrain.frag"});
+        probe_ = &kit.program("normal_probe", {"gsv/fullscreen.vert", "normal_probe.frag"});
+        quad_ = gsv::GpuMesh(gsv::make_fullscreen_quad(), kit.profile());
+    }
+
+    void render(gsv::LabKit& kit, const gsv::Frame& frame) override {
+        update(kit);
+        const auto& p = kit.params();
+        const gsv::OrbitCamera camera = gsv::orbit_camera(p);
+        gsv::Transforms t;
+        t.model = glm::translate(glm::mat4(1.0f), -p.get_vec3("pan"));
+        t.view = camera.view();
+        t.projection = camera.projection(frame.aspect());
+
+        glEnable(GL_DEPTH_TEST);
+        glClearColor(0.55f, 0.65f, 0.78f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        const gsv::ShaderProgram& program = kit.use(*shade_);
+        kit.set_transforms(program, t);
+        set_terrain_uniforms(program);
+        grid_.draw();
+    }
+
+    std::vector<std::string> sweep_reference() const override { return {"delta=1"}; }
+
+    gsv::SweepMetrics sweep_metrics(gsv::LabKit& kit, const gsv::Frame&) override {
+        return lab04::measure_normals(kit, terrain_, *probe_, quad_,
+                                      [&](const gsv::ShaderProgram& program) { set_terrain_uniforms(program); });
+    }
+
+private:
+    void update(gsv::LabKit& kit) {
+        const auto& p = kit.params();
+        const std::string terrain = lab04::terrain_signature(p);
+        if (terrain != terrain_signature_) {
+            terrain_ = lab04::load_terrain(kit);
+            terrain_signature_ = terrain;
+            heights_ = gsv::Texture();
+        }
+        const bool mipmaps = p.get_bool("mipmaps");
+        if (!heights_.id() || mipmaps != mipmapped_) {
+            gsv::Sampling sampling{mipmaps ? GLenum(GL_LINEAR_MIPMAP_LINEAR) : GLenum(GL_LINEAR), GL_LINEAR, GL_CLAMP_TO_EDGE};
+            heights_ = gsv::Texture::create_2d(terrain_.field.width, terrain_.field.height, gsv::TexelFormat::R32F,
+                                               terrain_.field.heights.data(), sampling);
+            mipmapped_ = mipmaps;
+        }
+        const int n = p.get_choice("geometry") == "mesh" ? p.get_int("mesh_n") : 2;
+        if (n != grid_n_) {
+            grid_ = gsv::GpuMesh(gsv::make_grid(n), kit.profile());
+            grid_n_ = n;
+        }
+    }
+
+    void set_terrain_uniforms(const gsv::ShaderProgram& program) const {
+        heights_.bind(0);
+        program.set("uHeights", 0);
+        lab04::set_placement(program, terrain_);
+    }
+
+    const gsv::ShaderLibrary::Entry* shade_ = nullptr;
+    const gsv::ShaderLibrary::Entry* probe_ = nullptr;
+    gsv::GpuMesh quad_, grid_;
+    int grid_n_ = 0;
+    lab04::Terrain terrain_;
+    std::string terrain_signature_;
+    gsv::Texture heights_;
+    bool mipmapped_ = false;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) { return gsv::run_lab<TerrainLab>(argc, argv); }

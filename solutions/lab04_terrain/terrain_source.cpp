@@ -1,0 +1,94 @@
+#include "terrain_source.h"
+
+#include "common/framebuffer.h"
+#include "common/gl.h"
+#include "common/shader_program.h"
+#include "common/terrain_normal.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lab04 {
+namespace {
+
+constexpr double kProceduralExtentM = 10000;
+constexpr double kRadToDeg = 57.29577951308232;
+
+// The CPU's frame has z along the rows (north); the lab's world has z south.
+glm::dvec3 to_world(glm::dvec3 n) { return {n.x, n.y, -n.z}; }
+
+void round_to_8_bits(gsv::HeightField& field) {
+    const float low = field.min_height(), high = field.max_height();
+    if (!(high > low)) return;
+    for (float& h : field.heights) h = low + std::round((h - low) / (high - low) * 255.0f) / 255.0f * (high - low);
+}
+
+}  // namespace
+
+std::string terrain_signature(const gsv::Params& p) {
+    return p.get_choice("terrain") + ";" + p.get_text("grid") + ";" + p.get_text("heights8");
+}
+
+Terrain load_terrain(gsv::LabKit& kit) {
+    const auto& p = kit.params();
+    const std::string name = p.get_choice("terrain");
+    Terrain terrain;
+    if (name == "jacksboro" || name == "topobathy") {
+        terrain.field = gsv::load_height_field(
+            kit.assets().data_file(std::string("terrain/") + (name == "jacksboro" ? "jacksboro_fault" : "topobathy") + ".height"));
+    } else {
+        gsv::ProceduralTerrain procedural;
+        procedural.kind = gsv::terrain_kind_from_name(name);
+        procedural.extent_m = kProceduralExtentM;
+        procedural.amplitude_m = procedural.kind == gsv::TerrainKind::SinCos ? 300 : 1000;
+        terrain.field = gsv::make_procedural(procedural, p.get_int("grid"), p.get_int("grid"));
+        terrain.procedural = procedural;
+    }
+    if (p.get_bool("heights8")) round_to_8_bits(terrain.field);
+    return terrain;
+}
+
+void set_placement(const gsv::ShaderProgram& program, const Terrain& terrain) {
+    const gsv::HeightField& f = terrain.field;
+    const double east_m = f.width * f.dx_m, north_m = f.height * f.dy_m;
+    const double units_per_metre = 2.0 / std::max(east_m, north_m);
+    program.set("uSpacing", glm::vec2(static_cast<float>(f.dx_m), static_cast<float>(f.dy_m)));
+    program.set("uGround", glm::vec2(static_cast<float>(east_m * units_per_metre), static_cast<float>(north_m * units_per_metre)));
+    program.set("uUnitsPerMetre", static_cast<float>(units_per_metre));
+    program.set("uMidHeight", 0.5f * (f.min_height() + f.max_height()));
+    program.set("uHeightRange", glm::vec2(f.min_height(), f.max_height()));
+}
+
+gsv::SweepMetrics measure_normals(gsv::LabKit& kit, const Terrain& terrain, const gsv::ShaderLibrary::Entry& probe,
+                                  const gsv::GpuMesh& quad, const std::function<void(const gsv::ShaderProgram&)>& set_uniforms) {
+    const auto& p = kit.params();
+    const gsv::HeightField& f = terrain.field;
+    gsv::Framebuffer target(f.width, f.height, gsv::ColorFormat::RGBA32F, false);
+    target.bind();
+    glDisable(GL_DEPTH_TEST);
+    const gsv::ShaderProgram& program = kit.use(probe);
+    set_uniforms(program);
+    quad.draw();
+    const gsv::ImageF normals = target.read_rgba32f();
+
+    const double e = p.get_float("exaggeration");
+    const int delta = p.get_int("delta");
+    double sum = 0, worst = 0, worst_vs_cpu = 0;
+    for (int y = 0; y < f.height; ++y)
+        for (int x = 0; x < f.width; ++x) {
+            const float* texel = normals.at(x, f.height - 1 - y);  // readback rows run top down
+            const glm::dvec3 gpu(texel[0], texel[1], texel[2]);
+            const glm::dvec3 truth = terrain.procedural
+                                         ? to_world(gsv::exact_normal(*terrain.procedural, gsv::sample_position(f, x, y), e))
+                                         : to_world(gsv::finite_difference_normal(f, x, y, e, 1));
+            const double angle = gsv::normal_angle(gpu, truth) * kRadToDeg;
+            sum += angle;
+            worst = std::max(worst, angle);
+            worst_vs_cpu = std::max(worst_vs_cpu, gsv::normal_angle(gpu, to_world(gsv::finite_difference_normal(f, x, y, e, delta))) * kRadToDeg);
+        }
+    return {{"normal_err_mean_deg", sum / (static_cast<double>(f.width) * f.height)},
+            {"normal_err_max_deg", worst},
+            {"gpu_vs_cpu_max_deg", worst_vs_cpu}};
+}
+
+}  // namespace lab04
