@@ -154,3 +154,55 @@ TEST_CASE("sweep --knob sweeps any parameter through the values given, and refus
         CHECK(refused.process.output.find(bad.names) != std::string::npos);
     }
 }
+
+TEST_CASE("lab04: a step far below one sample loses the normal to float32 cancellation", "[lab04]") {
+    test::TempDir dir;
+    const auto run = test::run_lab("lab04_solution", {"sweep", "--size", "64x48", "--frames", "1", "--warmup", "0", "--set",
+                                                      "terrain=franke", "--set", "grid=512", "--knob", "delta", "--values",
+                                                      "0.0001,0.01,1", "--out-dir", dir.path().string()},
+                                   dir.path());
+    INFO(run.process.output);
+    REQUIRE(run.exit_code() == 0);
+    const auto lines = test::lines_of(test::read_text(dir.path("lab04-sweep.csv")));
+    REQUIRE(lines.size() == 4);
+    auto mean_error = [&](std::size_t row) {
+        std::stringstream s(lines[row]);
+        std::string cell;
+        for (int k = 0; k <= 6; ++k) std::getline(s, cell, ',');  // normal_err_mean_deg
+        return std::stod(cell);
+    };
+    // A whole sample: 0.0015 degrees; 1e-2: a few times that; 1e-4: hundreds of times (measured 0.9 degrees).
+    CHECK(mean_error(3) < 0.01);
+    CHECK(mean_error(2) < 0.05);
+    CHECK(mean_error(1) > 100 * mean_error(3));
+}
+
+TEST_CASE("lab04: zoomed out, mipmapped heights come closer to a supersampled view than aliased ones", "[lab04]") {
+    test::TempDir dir;
+    auto render = [&](const std::string& name, const std::string& size, std::vector<std::string> settings) {
+        settings.insert(settings.end(), {"camera_distance=9", "camera_pitch=70", "colouring=plain", "exaggeration=6"});
+        const auto run = test::render("lab04_solution", settings, dir.path(), name, {"--size", size});
+        INFO(run.process.output);
+        REQUIRE(run.exit_code() == 0);
+        return read_png(run.png);
+    };
+    const Image aliased = render("aliased", "128x96", {});
+    const Image mipmapped = render("mipmapped", "128x96", {"mipmaps=on"});
+    // The reference: 8x8 samples per pixel, box-filtered.
+    const Image fine = render("fine", "1024x768", {});
+    double aliased_error = 0, mipmapped_error = 0;
+    for (int y = 0; y < 96; ++y)
+        for (int x = 0; x < 128; ++x)
+            for (int c = 0; c < 3; ++c) {
+                double sum = 0;
+                for (int j = 0; j < 8; ++j)
+                    for (int i = 0; i < 8; ++i) sum += fine.at(8 * x + i, 8 * y + j)[c];
+                const double reference = sum / 64;
+                aliased_error += std::pow(aliased.at(x, y)[c] - reference, 2);
+                mipmapped_error += std::pow(mipmapped.at(x, y)[c] - reference, 2);
+            }
+    aliased_error = std::sqrt(aliased_error / (128 * 96 * 3));
+    mipmapped_error = std::sqrt(mipmapped_error / (128 * 96 * 3));
+    WARN("RMSE against 8x8 supersampling: without mipmaps " << aliased_error << ", with " << mipmapped_error);
+    CHECK(mipmapped_error < aliased_error);
+}

@@ -28,7 +28,8 @@ public:
         p.add_choice("geometry", "bump", {"bump", "mesh"}, "one bump-mapped quad, or an N x N grid displaced by the heights")
             .at_compile_time();
         p.add_int("mesh_n", 64, 2, 1024, "N, vertices per side of the displaced grid (geometry=mesh)");
-        p.add_int("delta", 1, 1, 16, "finite-difference step, in samples")
+        p.add_float("delta", 1, 1e-5, 16, "finite-difference step, in samples (below about 1e-3 float32 cancels)")
+            .with_step(0.5)
             .accuracy_knob({"16", "8", "4", "2", "1"});
         p.add_float("exaggeration", 3, 0, 100, "vertical exaggeration").with_step(0.5);
         p.add_effect("mipmaps", false, "mipmapped heights: zoomed out, far samples average instead of alias");
@@ -40,7 +41,8 @@ public:
         p.add_float("snow_line", 0.8, 0, 1, "where brown turns to snow");
         p.add_float("blend", 0.05, 0, 0.5, "half the width of each colour transition").with_step(0.01);
         p.add_vec3("light_direction", {-1.0f, 1.2f, -0.6f}, -10, 10, "towards the light (x east, y up, z south)");
-        p.add_vec3("pan", {0, 0, 0}, -1, 1, "the point looked at, in model units (x east, z south)");
+        p.add_float("pan_east", 0, -1, 1, "the point looked at, east of the centre, in model units").with_step(0.05);
+        p.add_float("pan_south", 0, -1, 1, "the point looked at, south of the centre").with_step(0.05);
         gsv::add_orbit_camera(p, 0, 60, 2.6f);
 
         cases = {
@@ -66,7 +68,7 @@ public:
         const auto& p = kit.params();
         const gsv::OrbitCamera camera = gsv::orbit_camera(p);
         gsv::Transforms t;
-        t.model = glm::translate(glm::mat4(1.0f), -p.get_vec3("pan"));
+        t.model = glm::translate(glm::mat4(1.0f), -glm::vec3(p.get_float("pan_east"), 0.0f, p.get_float("pan_south")));
         t.view = camera.view();
         t.projection = camera.projection(frame.aspect());
 

@@ -5,7 +5,7 @@
 uniform sampler2D uHeights;  // metres, float; row 0 is the south row
 uniform vec2 uSpacing;       // ground metres between neighbouring samples: east, north
 uniform float uExaggeration; // vertical exaggeration
-uniform int uDelta;          // finite-difference step in samples: the accuracy knob
+uniform float uDelta;        // finite-difference step in samples: the accuracy knob
 
 uniform int uMipLevel;       // with mipmaps: -1 lets the hardware pick a level, k >= 0 reads level k
 

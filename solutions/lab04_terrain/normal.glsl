@@ -5,7 +5,7 @@
 uniform sampler2D uHeights;  // metres, float; row 0 is the south row
 uniform vec2 uSpacing;       // ground metres between neighbouring samples: east, north
 uniform float uExaggeration; // vertical exaggeration
-uniform int uDelta;          // finite-difference step in samples: the accuracy knob
+uniform float uDelta;        // finite-difference step in samples: the accuracy knob
 
 uniform int uMipLevel;       // with mipmaps: -1 lets the hardware pick a level, k >= 0 reads level k
 
@@ -27,8 +27,8 @@ vec2 terrain_slope(vec2 st) {
     // samples that exist and divide by their own distance (one-sided), never by the full span, which
     // would halve the slope along every border. A grid one sample wide has no slope that way: 0, not 0/0.
 //@solution L04-T1
-    vec2 lo = max(here - float(uDelta), vec2(0.0));
-    vec2 hi = min(here + float(uDelta), size - 1.0);
+    vec2 lo = max(here - uDelta, vec2(0.0));
+    vec2 hi = min(here + uDelta, size - 1.0);
     vec2 span = (hi - lo) * uSpacing;
     float rise_x = height_at(vec2(hi.x, here.y)) - height_at(vec2(lo.x, here.y));
     float rise_y = height_at(vec2(here.x, hi.y)) - height_at(vec2(here.x, lo.y));

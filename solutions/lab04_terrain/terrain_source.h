@@ -30,8 +30,9 @@ void set_placement(const gsv::ShaderProgram& program, const Terrain& terrain);
 
 // The shader's normals (normal_probe.frag, one fragment per sample) against the exact normals of a
 // procedural terrain or, for a real model, the normals of its full-resolution differences (delta 1): mean and
-// largest angle in degrees; and the largest angle between the shader's normals and the CPU's double-precision
-// finite_difference_normal at the same delta, which only rounding should separate.
+// largest angle in degrees; and the largest angle between the shader's normals and the same differences in
+// double precision at the same delta (finite_difference_normal for a whole step), which only rounding should
+// separate, until a step far below a sample makes float32 cancel.
 gsv::SweepMetrics measure_normals(gsv::LabKit& kit, const Terrain& terrain, const gsv::ShaderLibrary::Entry& probe,
                                   const gsv::GpuMesh& quad, const std::function<void(const gsv::ShaderProgram&)>& set_uniforms);
 
