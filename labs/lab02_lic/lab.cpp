@@ -57,10 +57,8 @@ public:
         photo_ = gsv::read_image(kit.assets().data_file("images/grace_hopper.jpg"));
     }
 
-    void params_changed(gsv::LabKit&) override { stale_ = true; }
-
     void render(gsv::LabKit& kit, const gsv::Frame& frame) override {
-        if (stale_ || frame.width != flow_.width() || frame.height != flow_.height()) make_textures(kit, frame);
+        update_textures(kit, frame);
         glDisable(GL_DEPTH_TEST);
         const gsv::ShaderProgram& program = kit.use(*lic_);
         input_.bind(0);
@@ -73,8 +71,27 @@ public:
     std::vector<std::string> sweep_reference() const override { return {"length=200"}; }
 
 private:
+    // Each texture is remade only when what it shows changes: not for `length` or the step, and not on
+    // every frame while `time` plays a field from a file (which is read once).
+    void update_textures(gsv::LabKit& kit, const gsv::Frame& frame) {
+        const auto& p = kit.params();
+        const std::string size = std::to_string(frame.width) + "x" + std::to_string(frame.height);
+        std::string flow_signature = size;
+        for (const char* name : {"field", "field_file", "speed", "time", "seed", "swirl_radius"})
+            flow_signature += ";" + p.get_text(name);
+        if (flow_signature != flow_signature_) {
+            flow_ = make_flow_texture(kit, frame);
+            flow_signature_ = flow_signature;
+        }
+        const std::string input_signature = size + ";" + p.get_text("input") + ";" + p.get_text("seed");
+        if (input_signature != input_signature_) {
+            input_ = make_input_texture(kit, frame);
+            input_signature_ = input_signature;
+        }
+    }
+
     // One flow texel per pixel: a step of one texel is a step of one pixel.
-    void make_textures(gsv::LabKit& kit, const gsv::Frame& frame) {
+    gsv::Texture make_flow_texture(gsv::LabKit& kit, const gsv::Frame& frame) {
         const auto& p = kit.params();
         const std::string field = p.get_choice("field");
         const double speed = p.get_float("speed");
@@ -83,30 +100,35 @@ private:
             : field == "swirl" ? gsv::make_photo_swirl(frame.width, frame.height, speed, 0.5, 0.62, p.get_float("swirl_radius"))
                                : gsv::make_flow(gsv::flow_kind_from_name(field), frame.width, frame.height, speed,
                                                 p.get_float("time"), static_cast<std::uint64_t>(p.get_int("seed")));
-        flow_ = gsv::Texture::create_2d(flow.width, flow.height, gsv::TexelFormat::RG32F, flow.velocity.data());
+        return gsv::Texture::create_2d(flow.width, flow.height, gsv::TexelFormat::RG32F, flow.velocity.data());
+    }
+
+    gsv::Texture make_input_texture(gsv::LabKit& kit, const gsv::Frame& frame) const {
+        const auto& p = kit.params();
         if (p.get_choice("input") == "photo") {
             gsv::Image bottom_up = photo_;
             gsv::flip_rows(bottom_up);
-            input_ = gsv::Texture::create_2d(photo_.width, photo_.height, gsv::TexelFormat::RGBA8, bottom_up.rgba.data());
-        } else {
-            // Grey noise in all three channels, in float: a texel's value is exactly what the CPU drew.
-            const std::vector<float> noise = gsv::white_noise(frame.width, frame.height, static_cast<std::uint64_t>(p.get_int("seed")));
-            std::vector<float> rgb(noise.size() * 3);
-            for (std::size_t i = 0; i < noise.size(); ++i) rgb[3 * i] = rgb[3 * i + 1] = rgb[3 * i + 2] = noise[i];
-            input_ = gsv::Texture::create_2d(frame.width, frame.height, gsv::TexelFormat::RGB32F, rgb.data());
+            return gsv::Texture::create_2d(photo_.width, photo_.height, gsv::TexelFormat::RGBA8, bottom_up.rgba.data());
         }
-        stale_ = false;
+        // Grey noise in all three channels, in float: a texel's value is exactly what the CPU drew.
+        const std::vector<float> noise = gsv::white_noise(frame.width, frame.height, static_cast<std::uint64_t>(p.get_int("seed")));
+        std::vector<float> rgb(noise.size() * 3);
+        for (std::size_t i = 0; i < noise.size(); ++i) rgb[3 * i] = rgb[3 * i + 1] = rgb[3 * i + 2] = noise[i];
+        return gsv::Texture::create_2d(frame.width, frame.height, gsv::TexelFormat::RGB32F, rgb.data());
     }
 
     // A file's field keeps its own grid (the shader steps in flow texels) and is rescaled like the
     // analytic ones, so `speed` means the same for every field. Of a sequence, `time` in [0, 10] picks a
     // frame, as it moves the double gyre through its period.
-    static gsv::FlowField field_from_file(gsv::LabKit& kit, double speed) {
+    gsv::FlowField field_from_file(gsv::LabKit& kit, double speed) {
         const auto& p = kit.params();
-        gsv::FlowSequence sequence = gsv::load_flow_sequence(kit.assets().user_file(p.get_file("field_file")));
-        const int frames = static_cast<int>(sequence.frames.size());
+        if (p.get_file("field_file") != loaded_file_) {
+            file_ = gsv::load_flow_sequence(kit.assets().user_file(p.get_file("field_file")));
+            loaded_file_ = p.get_file("field_file");
+        }
+        const int frames = static_cast<int>(file_.frames.size());
         const int index = std::min(frames - 1, static_cast<int>(p.get_float("time") / 10.0 * frames));
-        gsv::FlowField field = std::move(sequence.frames[static_cast<std::size_t>(index)]);
+        gsv::FlowField field = file_.frames[static_cast<std::size_t>(index)];
         const float fastest = field.max_speed();
         if (fastest > 0)
             for (float& v : field.velocity) v = static_cast<float>(v * (speed / fastest));
@@ -117,7 +139,9 @@ private:
     gsv::GpuMesh quad_;
     gsv::Image photo_;
     gsv::Texture input_, flow_;
-    bool stale_ = true;
+    std::string flow_signature_, input_signature_;
+    gsv::FlowSequence file_;
+    std::string loaded_file_;
 };
 
 }  // namespace
