@@ -4,6 +4,7 @@
 // line, hot reload, timing and image output. A lab's main() is one line: return gsv::run_lab<MyLab>(argc, argv);
 #include "common/assets.h"
 #include "common/context.h"
+#include "common/data_array.h"
 #include "common/params.h"
 #include "common/shader_library.h"
 #include "common/transforms.h"
@@ -32,6 +33,9 @@ struct RenderCase {
 struct Frame {
     int width = 0, height = 0;
     double time_s = 0;  // seconds since start in window mode; 0 headless, so images are reproducible
+    // Window mode: a lab may spread work over frames (lab 05 catches its simulation up a few steps a frame).
+    // Headless, every frame must show the full result of the current settings.
+    bool interactive = false;
     float aspect() const { return height > 0 ? static_cast<float>(width) / static_cast<float>(height) : 1.0f; }
 };
 
@@ -53,6 +57,8 @@ public:
     virtual std::vector<std::string> sweep_reference() const { return {}; }
     // Lab-specific error columns for a sweep, measured at the current settings.
     virtual SweepMetrics sweep_metrics(LabKit&, const Frame&) { return {}; }
+    // What render mode writes beside the image for the grader to compare with the reference's; most labs none.
+    virtual std::vector<DataArray> readback(LabKit&) { return {}; }
 };
 
 // What a lab gets from the framework.

@@ -1,5 +1,7 @@
-// Headless render mode: one case to PNG, plus a JSON with timings and what GL really was.
+// Headless render mode: one case to PNG, plus a JSON with timings and what GL really was, and beside them the
+// arrays a lab hands in (common/data_array.h).
 #include "common/app_session.h"
+#include "common/data_array.h"
 #include "common/error.h"
 #include "common/framebuffer.h"
 #include "common/gl.h"
@@ -45,6 +47,23 @@ Json timing_json(const TimingStats& t, int warmup) {
     return j;
 }
 
+// Writes each array beside the PNG; returns the report's list of them.
+Json write_arrays(const std::vector<DataArray>& arrays, const std::string& png) {
+    check_data_arrays(arrays);
+    Json listed = Json::array();
+    for (const auto& a : arrays) {
+        const std::string file = data_array_path(png, a.name).string();
+        write_f32_file(file, a.values);
+        Json entry = Json::object();
+        entry["name"] = a.name;
+        entry["file"] = file;
+        entry["components"] = a.components;
+        entry["count"] = static_cast<double>(a.count());
+        listed.push_back(entry);
+    }
+    return listed;
+}
+
 Readback read_back(const Framebuffer& float_target) {
     const ImageF pixels = float_target.read_rgba32f();
     return {to_rgba8(pixels), float_stats(pixels)};
@@ -76,6 +95,11 @@ int run_render(Session& s) {
     std::string json_path = s.options.json;
     if (json_path.empty()) json_path = std::filesystem::path(png).replace_extension(".json").string();
     write_png(png, image);
+    // After the last timed frame, so what is handed in is what the image shows. Only when asked: a million
+    // particles are 32 MiB that a student's render does not need.
+    const std::vector<DataArray> arrays = s.options.arrays ? s.lab->readback(*s.kit) : std::vector<DataArray>{};
+    check_gl_error("reading back the lab's arrays");
+    const Json listed = write_arrays(arrays, png);
 
     Json report = Json::object();
     report["lab"] = s.info.id;
@@ -90,11 +114,15 @@ int run_render(Session& s) {
     report["nan_pixels"] = static_cast<double>(stats.nan_count);
     report["inf_pixels"] = static_cast<double>(stats.inf_count);
     report["blank"] = is_blank(image);
+    if (!arrays.empty()) report["arrays"] = listed;
     std::ofstream out(json_path);
     if (!out || !(out << report.dump(2) << "\n")) throw Error("cannot write '" + json_path + "'");
 
     std::printf("%s: wrote %s (%dx%d), median %.2f ms/frame over %d frames\n", s.info.id.c_str(), png.c_str(), width,
                 height, timing.median_ms, timing.frames);
+    for (const auto& a : arrays)
+        std::printf("%s: wrote %s (%zu x %d floats)\n", s.info.id.c_str(), data_array_path(png, a.name).string().c_str(),
+                    a.count(), a.components);
     if (shot.non_finite()) {
         std::fprintf(stderr, "%s: the image has %ld NaN and %ld Inf pixel values (painted magenta in %s)\n",
                      s.info.id.c_str(), stats.nan_count, stats.inf_count, png.c_str());

@@ -55,6 +55,9 @@ int run_sweep(Session& s) {
     if (const ParamSpec* series = s.params.series()) {
         series_name = series->name;
         series_values = series->choices;
+        // `--set integrator=rk4` asks for one curve, not all of them.
+        for (const auto& assignment : s.options.assignments)
+            if (assignment.rfind(series_name + "=", 0) == 0) series_values = {s.params.get_text(series_name)};
     }
 
     s.open(s.options.backend.value_or(Backend::Egl));

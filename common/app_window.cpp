@@ -234,7 +234,7 @@ int run_window(Session& s) {
         Framebuffer::bind_default(width, height);
         const double t0 = now_seconds();
         try {
-            s.render_frame(Frame{width, height, now - start});
+            s.render_frame(Frame{width, height, now - start, true});
             last_good = s.params;
         } catch (const Error& e) {
             if (frame_index == 0) throw;  // the values the lab started with: nothing good to go back to

@@ -5,7 +5,9 @@
 #include "grader/draw.h"
 
 #include <algorithm>
+#include <cmath>
 #include <regex>
+#include <set>
 
 namespace gsv {
 namespace {
@@ -17,6 +19,30 @@ ImageTolerance tolerance_from(const Json& j) {
     if (t.max_channel_diff < 0 || t.max_channel_diff > 255 || t.max_differing_fraction < 0 || t.max_differing_fraction > 1)
         throw Error(j.source_name() + ": tolerance out of range (max_channel_diff 0..255, max_differing_fraction 0..1)");
     return t;
+}
+
+ArrayTolerance array_tolerance_from(const Json& j) {
+    ArrayTolerance t;
+    t.max_abs = j.number_at("max_abs");
+    t.max_differing_fraction = j.number_at("max_differing_fraction");
+    if (!std::isfinite(t.max_abs) || t.max_abs < 0 || !(t.max_differing_fraction >= 0 && t.max_differing_fraction <= 1))
+        throw Error(j.source_name() + ": " + j.key_path() +
+                    " out of range (max_abs a finite number >= 0, max_differing_fraction 0..1)");
+    return t;
+}
+
+// The case's "arrays" name arrays the lab must hand in: valid, distinct names, and a tolerance to check them by.
+void check_case_arrays(const LabCases& lab, const GradeCase& c, const std::string& file) {
+    if (!c.arrays) return;
+    if (!lab.checks_arrays())
+        throw Error(file + ": case '" + c.name + "' lists arrays, but the tolerance has no 'arrays' to check them by");
+    std::set<std::string> seen;
+    for (const auto& name : *c.arrays) {
+        if (!valid_array_name(name))
+            throw Error(file + ": case '" + c.name + "' lists array '" + name + "'; an array name is 1.." +
+                        std::to_string(kMaxArrayNameBytes) + " of a-z, 0-9 and '_'");
+        if (!seen.insert(name).second) throw Error(file + ": case '" + c.name + "' lists array '" + name + "' twice");
+    }
 }
 
 void parse_size(const std::string& size, const std::string& file, int& width, int& height) {
@@ -48,6 +74,10 @@ GradeCase case_from(const Json& c, const std::string& file) {
         if (gc.timing.points < 0 || gc.timing.max_ratio < 1)
             throw Error(file + ": case '" + gc.name + "': timing needs points >= 0 and max_ratio >= 1");
     }
+    if (const Json* arrays = c.find("arrays"); arrays && !arrays->is_null()) {
+        gc.arrays.emplace();
+        for (const Json& a : arrays->as_array()) gc.arrays->push_back(a.as_string());
+    }
     return gc;
 }
 
@@ -61,6 +91,15 @@ LabCases load_lab_cases(const std::filesystem::path& file) {
     const Json& tolerance = root.object_at("tolerance");
     lab.live_tolerance = tolerance_from(tolerance.object_at("live"));
     lab.golden_tolerance = tolerance_from(tolerance.object_at("golden"));
+    if (const Json* arrays = tolerance.find("arrays"); arrays && !arrays->is_null()) {
+        lab.live_array_tolerance = array_tolerance_from(tolerance.object_at("arrays"));
+        lab.golden_array_tolerance = lab.live_array_tolerance;
+    }
+    if (const Json* golden = tolerance.find("arrays_golden"); golden && !golden->is_null()) {
+        if (!lab.checks_arrays())
+            throw Error(file.string() + ": tolerance has 'arrays_golden' but no 'arrays' (the live tolerance)");
+        lab.golden_array_tolerance = array_tolerance_from(tolerance.object_at("arrays_golden"));
+    }
     lab.timeout_s = root.number_or("timeout_s", 60);
     if (const Json* timing = root.find("timing")) {
         if (timing->contains("size")) parse_size(timing->string_at("size"), file.string(), lab.timing_width, lab.timing_height);
@@ -70,7 +109,10 @@ LabCases load_lab_cases(const std::filesystem::path& file) {
         if (lab.timing_frames < 1 || lab.timing_warmup < 0 || lab.timing_rounds < 1)
             throw Error(file.string() + ": timing needs frames >= 1, warmup >= 0, rounds >= 1");
     }
-    for (const Json& c : root.array_at("cases").as_array()) lab.cases.push_back(case_from(c, file.string()));
+    for (const Json& c : root.array_at("cases").as_array()) {
+        lab.cases.push_back(case_from(c, file.string()));
+        check_case_arrays(lab, lab.cases.back(), file.string());
+    }
     if (lab.cases.empty()) throw Error(file.string() + ": no cases");
     return lab;
 }
@@ -81,6 +123,7 @@ void add_hidden_cases(LabCases& lab, const std::filesystem::path& file, std::uin
         throw Error(file.string() + ": 'lab' is '" + root.string_at("lab") + "', expected '" + lab.lab + "'");
     for (const Json& c : root.array_at("cases").as_array()) {
         const GradeCase base = case_from(c, file.string());
+        check_case_arrays(lab, base, file.string());
         const int count = c.int_or("count", 1);
         if (count < 1 || count > 50) throw Error(file.string() + ": case '" + base.name + "': count must be 1..50");
         for (int i = 1; i <= count; ++i) {

@@ -3,9 +3,11 @@
 // students, with golden images), the hidden ones in grader/hidden/<lab>.json (instructors only), whose
 // parameters are drawn from the seed given at grading time.
 #include "common/image_compare.h"
+#include "grader/array_compare.h"
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,6 +23,9 @@ struct GradeCase {
     double points = 1;
     std::vector<std::string> settings;  // name=value, as for --set
     TimingSpec timing;
+    // "arrays": which of the arrays the lab hands in this case checks; none given: every array the reference
+    // hands in (an empty list: none).
+    std::optional<std::vector<std::string>> arrays;
 };
 
 struct LabCases {
@@ -28,6 +33,10 @@ struct LabCases {
     int width = 256, height = 256;
     ImageTolerance live_tolerance;    // against the reference rendered in the same run, same machine
     ImageTolerance golden_tolerance;  // against committed golden images: another GPU and driver
+    // "tolerance": {"arrays": ...}: the lab hands in numbers that are checked too (common/data_array.h); none:
+    // only images are. Against goldens "arrays_golden" where given, else "arrays".
+    std::optional<ArrayTolerance> live_array_tolerance, golden_array_tolerance;
+    bool checks_arrays() const { return live_array_tolerance.has_value(); }
     double timeout_s = 60;
     // Timing: its own size (large enough that the lab's own work, not fixed costs, sets the frame
     // time), frames per process after warm-up, and interleaved student/reference rounds.

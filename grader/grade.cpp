@@ -3,7 +3,9 @@
 #include "common/error.h"
 #include "common/image.h"
 #include "common/json.h"
+#include "grader/array_golden.h"
 #include "grader/cases.h"
+#include "grader/data_check.h"
 #include "grader/draw.h"
 #include "grader/process.h"
 #include "grader/report_format.h"
@@ -55,6 +57,7 @@ private:
     void grade_lab(const LabCases& lab, bool live, const LabBuild* build);
     void grade_case(const LabCases& lab, const GradeCase& c, bool live, const LabBuild* build);
     void update_golden(const LabCases& lab, const GradeCase& c);
+    void update_golden_arrays(const LabCases& lab, const GradeCase& c, const LabRun& ref, CaseResult& r);
     void check_image(const LabCases& lab, const GradeCase& c, const LabRun& student, const Image& expected, bool live,
                      CaseResult& r);
     CaseResult check_timing(const LabCases& lab, const GradeCase& c, const CaseResult& image);
@@ -235,8 +238,32 @@ void Grading::update_golden(const LabCases& lab, const GradeCase& c) {
         fs::create_directories(golden.parent_path());
         write_png(golden, *ref.image);
         r.detail = "wrote " + golden.string();
+        if (lab.checks_arrays()) update_golden_arrays(lab, c, ref, r);
     }
     record(r);
+}
+
+// A sampled golden of each array the case checks; goldens of arrays it no longer checks go, so that the
+// self-check (which checks every golden a case has) does not look for them.
+void Grading::update_golden_arrays(const LabCases& lab, const GradeCase& c, const LabRun& ref, CaseResult& r) {
+    std::vector<std::string> names;
+    if (c.arrays) {
+        names = *c.arrays;
+    } else {
+        for (const auto& a : ref.arrays) names.push_back(a.name);
+    }
+    for (const auto& name : golden_array_names(kit_, lab.lab, c.name))
+        if (std::find(names.begin(), names.end(), name) == names.end()) fs::remove(array_golden_path(kit_, lab.lab, c.name, name));
+    for (const auto& name : names) {
+        const auto a = std::find_if(ref.arrays.begin(), ref.arrays.end(), [&](const DataArray& x) { return x.name == name; });
+        if (a == ref.arrays.end()) {
+            r.status = CaseStatus::ReferenceFailed;
+            r.detail = "the reference solution handed in no '" + name + "' array, which the case checks";
+            return;
+        }
+        write_array_golden(array_golden_path(kit_, lab.lab, c.name, name), sample_array(*a));
+    }
+    if (!names.empty()) r.detail += " and " + std::to_string(names.size()) + (names.size() == 1 ? " array" : " arrays");
 }
 
 void Grading::grade_case(const LabCases& lab, const GradeCase& c, bool live, const LabBuild* build) {
@@ -274,18 +301,19 @@ void Grading::grade_case(const LabCases& lab, const GradeCase& c, bool live, con
     r.detail = student.detail;
 
     Image expected;
+    std::optional<LabRun> reference;
     if (live) {
-        const LabRun reference = reference_.render(lab.lab + "_solution", lab, c, false, limits(lab, false));
-        r.reference_seconds = reference.process.seconds;
-        if (reference.status != CaseStatus::Passed) {
+        reference = reference_.render(lab.lab + "_solution", lab, c, false, limits(lab, false));
+        r.reference_seconds = reference->process.seconds;
+        if (reference->status != CaseStatus::Passed) {
             r.status = CaseStatus::ReferenceFailed;
-            r.detail = "the reference solution failed (" + std::string(status_name(reference.status)) + "): " + reference.detail;
-            r.output = reference.process.output;
+            r.detail = "the reference solution failed (" + std::string(status_name(reference->status)) + "): " + reference->detail;
+            r.output = reference->process.output;
             record(r);
             timing_row_like(report_.results.back());
             return;
         }
-        expected = *reference.image;
+        expected = *reference->image;
     } else {
         const fs::path golden = kit_ / "grader" / "golden" / lab.lab / (c.name + ".png");
         if (!fs::exists(golden)) {
@@ -306,6 +334,11 @@ void Grading::grade_case(const LabCases& lab, const GradeCase& c, bool live, con
     write_png(dir / "expected.png", expected);
     r.expected_png = fs::relative(dir / "expected.png", out_).generic_string();
     if (student.status == CaseStatus::Passed) check_image(lab, c, student, expected, live, r);
+    // The numbers after the image, whatever it showed (grader/data_check.h has the order).
+    if (reference)
+        check_case_data(lab, c, student, *reference, r);
+    else
+        check_case_data(lab, c, student, kit_, r);
     record(r);
     const CaseResult image_row = report_.results.back();
     if (!timed) return;

@@ -1,7 +1,8 @@
 #pragma once
 // Grades the labs of one submission headless. Each case is rendered by the student's binary in its own
 // sandboxed process and compared with the reference: rendered live by <lab>_solution in the same run
-// (instructor grading: public and hidden cases, timing) or the committed golden image (self-check).
+// (instructor grading: public and hidden cases, timing) or the committed golden image (self-check). A lab
+// that hands in arrays (lab 05's particles) has them checked as well (grader/data_check.h).
 #include "grader/grade_result.h"
 
 #include <cstdint>
@@ -25,7 +26,7 @@ struct GradeOptions {
     std::vector<std::string> labs;      // empty: every lab with a case file
     std::vector<std::string> cases;     // empty: every case; else only these names (an unknown one is an error)
     bool self_check = false;            // golden images only, public cases only, even when solutions are built
-    bool update_goldens = false;        // render grader/golden/<lab>/<case>.png with the references instead
+    bool update_goldens = false;        // render grader/golden/<lab>/<case>.png (and .<array>.f32s) with the references instead
     bool timing = true;                 // instructor mode: time the cases that declare a timing band
     bool hidden = true;                 // instructor mode: add the hidden cases drawn from the seed
     bool sandbox = true;                // off only to debug the grader itself

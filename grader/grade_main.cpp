@@ -32,7 +32,7 @@ const char* kUsage =
     "  --public-only     skip the hidden cases\n"
     "  --timeout S       wall-clock limit per student lab process (default: the case file's)\n"
     "  --fail-under F    exit 1 when the score is below F (0..1) of the maximum: a CI gate\n"
-    "  --update-goldens  render grader/golden/<lab>/<case>.png with the reference solutions\n"
+    "  --update-goldens  render grader/golden/<lab>/<case>.png (and <case>.<array>.f32s) with the reference solutions\n"
     "  --no-sandbox      run student code without namespaces and limits (to debug the grader only)\n"
     "exit status: 0 graded (whatever the score), 1 under --fail-under, 2 usage or internal error\n";
 
@@ -159,7 +159,7 @@ int main(int argc, char** argv) {
                     std::fprintf(stderr, "gsv-grade: %s/%s: %s\n%s\n", r.lab.c_str(), r.name.c_str(), r.detail.c_str(), r.output.c_str());
                     ++failed;
                 }
-            std::printf("updated %zu golden images, %d failed\n", report.results.size() - static_cast<std::size_t>(failed), failed);
+            std::printf("updated the goldens of %zu cases, %d failed\n", report.results.size() - static_cast<std::size_t>(failed), failed);
             return failed ? 1 : 0;
         }
         gsv::write_reports(report, options.out_dir);

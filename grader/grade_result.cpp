@@ -14,6 +14,7 @@ const char* status_name(CaseStatus status) {
     case CaseStatus::OutputFlood: return "output flood";
     case CaseStatus::MissingOutput: return "no output";
     case CaseStatus::WrongImage: return "wrong image";
+    case CaseStatus::WrongData: return "wrong data";
     case CaseStatus::BlankImage: return "blank image";
     case CaseStatus::NonFinite: return "NaN";
     case CaseStatus::CopiedImage: return "copied image";
@@ -25,6 +26,12 @@ const char* status_name(CaseStatus status) {
     }
     // Only reachable with a value cast from an out-of-range integer.
     return "unknown";
+}
+
+bool DataCheck::passed() const {
+    for (const auto& a : arrays)
+        if (!a.within()) return false;
+    return true;
 }
 
 double GradeReport::score() const {

@@ -1,7 +1,9 @@
 #pragma once
-// What grading found: one result per check (a case's image, or its frame time against the
-// reference's), the per-lab builds, and how the run was set up. The reports are written from this.
+// What grading found: one result per check (a case's image and the numbers its lab hands in, or its frame
+// time against the reference's), the per-lab builds, and how the run was set up. The reports are written from
+// this.
 #include "common/image_compare.h"
+#include "grader/array_compare.h"
 
 #include <cstdint>
 #include <string>
@@ -21,6 +23,7 @@ enum class CaseStatus {
     OutputFlood,         // printed far more than any lab should; killed
     MissingOutput,       // exited 0 without a valid PNG
     WrongImage,
+    WrongData,           // the image passed, but the numbers the lab hands in (its particle buffer) are wrong
     BlankImage,          // one flat colour where the reference has a picture
     NonFinite,           // NaN or Inf in the float image
     CopiedImage,         // byte for byte a committed golden image of another case
@@ -39,6 +42,15 @@ struct ImageCheck {
     long differing_pixels = 0, total_pixels = 0;
     double psnr = 0, ssim = 0;
     int diff_x0 = 0, diff_y0 = 0, diff_x1 = -1, diff_y1 = -1;  // inclusive box of differing pixels
+};
+
+// The arrays a case checks (grader/data_check.h); a case passes only if its image and these both pass.
+struct DataCheck {
+    bool done = false;
+    std::string reference;        // "live" or "golden" (a golden holds a sample of each array)
+    ArrayTolerance tolerance;
+    std::vector<ArrayDiff> arrays;
+    bool passed() const;          // every array within the tolerance (vacuously when none is checked)
 };
 
 struct TimingCheck {
@@ -63,6 +75,7 @@ struct CaseResult {
     double reference_seconds = 0;  // wall time of the live reference's process
     double frame_ms = 0;           // the student's own frame time inside that process (the rest is start-up)
     ImageCheck image;
+    DataCheck data;
     TimingCheck timing;
     // Relative to the output folder; empty when there is none.
     std::string actual_png, expected_png, diff_png;

@@ -110,6 +110,33 @@ void image_numbers(std::ostringstream& out, const CaseResult& r) {
     out << "</td></tr></table>\n";
 }
 
+std::string general(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", v);
+    return text;
+}
+
+// One row per array the case checks; a golden holds a sample, so "compared" can be fewer than the elements.
+void data_numbers(std::ostringstream& out, const CaseResult& r) {
+    const DataCheck& d = r.data;
+    if (!d.done) return;
+    out << "<table class=\"numbers data\"><tr><th>array</th><th>elements</th><th>compared</th><th>differing</th>"
+        << "<th>max abs diff</th><th>result</th></tr>";
+    for (const auto& a : d.arrays) {
+        out << "<tr><td>" << html(a.name) << "</td>";
+        if (!a.problem.empty()) {
+            out << "<td colspan=\"4\"></td><td>" << html(a.problem) << "</td></tr>";
+            continue;
+        }
+        out << "<td>" << with_commas(a.count) << " &times; " << a.components << "</td><td>" << with_commas(a.compared)
+            << (d.reference == "golden" ? " (golden sample)" : "") << "</td><td>" << with_commas(a.differing) << " ("
+            << percent(long(a.differing), long(a.compared)) << ", allowed " << fixed(100.0 * d.tolerance.max_differing_fraction, 3)
+            << "%)</td><td>" << general(a.max_abs_diff) << " (allowed " << general(d.tolerance.max_abs)
+            << ")</td><td>" << html(a.within() ? "ok" : a.summary()) << "</td></tr>";
+    }
+    out << "</table>\n";
+}
+
 void timing_numbers(std::ostringstream& out, const CaseResult& r) {
     const TimingCheck& t = r.timing;
     if (!t.done) {
@@ -147,8 +174,10 @@ void check_section(std::ostringstream& out, const fs::path& out_dir, const CaseR
             out << "</details>\n";
         }
     } else {
-        if (has_images) figures(out, out_dir, r, true);
+        // Wrong data has a passing image: no difference to show.
+        if (has_images) figures(out, out_dir, r, r.status != CaseStatus::WrongData);
         if (r.image.done || has_images) image_numbers(out, r);
+        data_numbers(out, r);
     }
     if (!r.output.empty()) out << "<pre>" << html(r.output) << "</pre>\n";
     out << "</section>\n";

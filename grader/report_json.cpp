@@ -50,6 +50,47 @@ Json image_json(const ImageCheck& image) {
     return j;
 }
 
+Json floats_json(const std::vector<float>& values) {
+    Json j = Json::array();
+    for (const float v : values) j.push_back(number_or_null(v));  // null: NaN or Inf
+    return j;
+}
+
+Json data_json(const DataCheck& data) {
+    Json j = Json::object();
+    j["done"] = data.done;  // against what: the result's "reference"
+    Json tolerance = Json::object();
+    tolerance["max_abs"] = number_or_null(data.tolerance.max_abs);
+    tolerance["max_differing_fraction"] = number_or_null(data.tolerance.max_differing_fraction);
+    j["tolerance"] = tolerance;
+    Json arrays = Json::array();
+    for (const auto& a : data.arrays) {
+        Json e = Json::object();
+        e["name"] = text(a.name);
+        e["passed"] = a.within();
+        e["problem"] = text(a.problem);  // "": the arrays were compared
+        e["count"] = static_cast<double>(a.count);
+        e["components"] = a.components;
+        e["compared"] = static_cast<double>(a.compared);  // fewer than count: a golden's sample
+        e["differing"] = static_cast<double>(a.differing);
+        e["non_finite"] = static_cast<double>(a.non_finite);
+        e["max_abs_diff"] = number_or_null(a.max_abs_diff);
+        if (a.differing > 0) {
+            Json first = Json::object();
+            first["element"] = static_cast<double>(a.first);
+            first["actual"] = floats_json(a.first_actual);
+            first["expected"] = floats_json(a.first_expected);
+            e["first_difference"] = first;
+        } else {
+            e["first_difference"] = nullptr;
+        }
+        e["summary"] = text(a.summary());
+        arrays.push_back(e);
+    }
+    j["arrays"] = arrays;
+    return j;
+}
+
 Json timing_json(const TimingCheck& timing) {
     Json j = Json::object();
     j["done"] = timing.done;
@@ -86,6 +127,7 @@ Json result_json(const CaseResult& r) {
     j["reference_seconds"] = number_or_null(r.reference_seconds);
     j["frame_ms"] = number_or_null(r.frame_ms);
     j["image"] = image_json(r.image);
+    j["data"] = data_json(r.data);
     j["timing"] = timing_json(r.timing);
     j["actual_png"] = text(r.actual_png);
     j["expected_png"] = text(r.expected_png);

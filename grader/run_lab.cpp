@@ -2,6 +2,7 @@
 
 #include "common/error.h"
 #include "common/json.h"
+#include "grader/lab_arrays.h"
 
 #include <cmath>
 #include <csignal>
@@ -105,6 +106,7 @@ LabRun LabRunner::render(const std::string& binary, const LabCases& lab, const G
     std::vector<std::string> argv{exe.string(), "render", "--size", std::to_string(width) + "x" + std::to_string(height),
                                   "--out", png.string(), "--json", json.string(),
                                   "--frames", std::to_string(frames), "--warmup", std::to_string(warmup)};
+    if (lab.checks_arrays() && !timed) argv.push_back("--arrays");
     for (const auto& s : c.settings) {
         argv.push_back("--set");
         argv.push_back(s);
@@ -124,11 +126,11 @@ LabRun LabRunner::render(const std::string& binary, const LabCases& lab, const G
         // The framework always writes its report; without it the frame time cannot be trusted.
         if (!fs::is_regular_file(json) || fs::file_size(json) > 1024 * 1024)
             throw Error("the lab wrote no valid JSON report beside its image");
-        {
-            const double ms = read_json_file(json).object_at("timing").number_at("median_ms");
-            if (!std::isfinite(ms) || ms < 0) throw Error(json.filename().string() + ": timing.median_ms is not a time");
-            run.median_ms = ms;
-        }
+        const Json report = read_json_file(json);
+        const double ms = report.object_at("timing").number_at("median_ms");
+        if (!std::isfinite(ms) || ms < 0) throw Error(json.filename().string() + ": timing.median_ms is not a time");
+        run.median_ms = ms;
+        if (lab.checks_arrays() && !timed) run.arrays = read_lab_arrays(report, json, png);
     } catch (const Error& e) {
         run.status = CaseStatus::MissingOutput;
         run.detail = e.what();

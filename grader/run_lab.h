@@ -1,9 +1,11 @@
 #pragma once
 // Runs a lab binary headless on one case, in a working folder of its own, and reads back only what it
-// may hand in: a PNG (decoded and size-checked) and its JSON report's frame time (validated).
+// may hand in: a PNG (decoded and size-checked), its JSON report's frame time (validated) and, for a lab
+// whose cases check arrays, the arrays the report lists (grader/lab_arrays.h).
 #include "grader/cases.h"
 #include "grader/grade_result.h"
 #include "grader/process.h"
+#include "common/data_array.h"
 #include "common/image.h"
 
 #include <filesystem>
@@ -18,6 +20,7 @@ struct LabRun {
     std::string detail;
     std::optional<Image> image;
     double median_ms = 0;  // from the lab's report, when frames were timed
+    std::vector<DataArray> arrays;  // read only for a lab that checks arrays, and not for timed runs
 };
 
 struct LabRunner {
@@ -25,7 +28,8 @@ struct LabRunner {
     std::filesystem::path root;  // GSV_ROOT for the lab (a submission's kit view); empty: the binary's own
     bool student = false;        // its working folder is handed to the sandbox user
 
-    // The case's image at the lab's size (one frame), or `timed`: frames at the lab's timing size.
+    // The case's image at the lab's size (one frame), and its arrays where the lab checks them; or `timed`:
+    // frames at the lab's timing size.
     LabRun render(const std::string& binary, const LabCases& lab, const GradeCase& c, bool timed,
                   const ProcessLimits& limits) const;
 };

@@ -4,8 +4,8 @@
 #
 #   scripts/export-student.sh [--include-untracked] [--labs lab01,lab02] DEST   (also: scripts/kit export-student ...)
 #
-# --labs releases only those labs (their labs/ folder, case file and golden images); a course that hands
-# labs out week by week exports again as each opens. Later labs give earlier answers away: lab 03's
+# --labs releases only those labs (their labs/ folder, case file, golden images and golden arrays); a course
+# that hands labs out week by week exports again as each opens. Later labs give earlier answers away: lab 03's
 # shaders trace lab 02's LIC streamlines.
 # Left out: solutions/, tests/ (they need the solutions), grader/hidden/ (hidden grading cases), .github/ (the
 # instructor's workflows), build*/ folders, grade-results/, .git, and whatever git ignores. In a git checkout

@@ -68,6 +68,12 @@ public:
         std::filesystem::copy(source_root() / "shaders", root / "shaders", std::filesystem::copy_options::recursive);
         std::filesystem::copy(source_root() / "data", root / "data", std::filesystem::copy_options::recursive);
         std::filesystem::copy(source_root() / "solutions" / lab_dir, root / "solutions" / lab_dir, std::filesystem::copy_options::recursive);
+        // Only shader edits: the solution's binary is copied, not rebuilt, so a C++ edit would change nothing
+        // and its mutant would "pass". C++ faults go through a Submission, which the grader builds.
+        const std::string file = edit.string_or("file", "");
+        if (file.size() > 4 && (file.substr(file.size() - 4) == ".cpp" || file.substr(file.size() - 2) == ".h"))
+            throw Error("mutant '" + edit.string_at("name") + "' edits " + file +
+                        ": C++ is not rebuilt for mutants; plant C++ faults in a submission");
         apply_edits(root / "solutions" / lab_dir, edit);
         std::filesystem::create_directories(dir_.path("bin"));
         std::filesystem::copy_file(bin_dir() / (lab + "_solution"), dir_.path("bin") / lab);

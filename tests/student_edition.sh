@@ -30,6 +30,11 @@ done
 for p in labs/lab01_gooch grader/golden/lab01 grader/cases/lab01.json STUDENT.md .github/workflows/self-check.yml; do
   [ -e "$kit/$p" ] || fail "$p is missing from the export"
 done
+# The golden arrays (<case>.<array>.f32s) ship with the golden images: the self-check checks a lab's numbers too.
+while IFS= read -r -d '' f; do
+  rel=${f#"$root"/}
+  [ -e "$kit/$rel" ] || fail "$rel is missing from the export"
+done < <(find "$root/grader/golden" -name '*.f32s' -print0)
 grep -q "scripts/kit grade" "$kit/.ci/run" || fail ".ci/run of the export does not run the self-check"
 if ! { [ -x "$kit/.ci/run" ] && [ -x "$kit/scripts/kit" ]; }; then fail "scripts lost their executable bit"; fi
 

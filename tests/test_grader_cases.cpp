@@ -122,3 +122,65 @@ TEST_CASE("cases: a truncated golden image is the reference's failure, named, no
     CHECK(seen);
     CHECK(report.mode == "self-check");
 }
+
+TEST_CASE("cases: the arrays tolerance and a case's arrays are read, bad values refused naming the file", "[grader][cases]") {
+    test::TempDir dir;
+    const std::string images = R"("live": {"max_channel_diff": 2, "max_differing_fraction": 0.001},
+        "golden": {"max_channel_diff": 24, "max_differing_fraction": 0.01})";
+    auto file = [&](const std::string& tolerance_extra, const std::string& case_extra) {
+        return dir.write("grader/cases/lab05.json", R"({"lab": "lab05", "size": "8x8", "tolerance": {)" + images +
+                                                        tolerance_extra + R"(}, "cases": [
+            {"name": "abc", "todo": "L05-T3", "settings": []},
+            {"name": "ragged", "todo": "L05-T2", "settings": [])" + case_extra + "}]}");
+    };
+    auto error = [&](const std::string& tolerance_extra, const std::string& case_extra) {
+        const auto path = file(tolerance_extra, case_extra);
+        const std::string m = test::gsv_error_message([&] { load_lab_cases(path); });
+        CHECK(m.find("lab05.json") != std::string::npos);
+        CHECK(m.find('\n') == std::string::npos);
+        return m;
+    };
+
+    // Labs 01-04: no arrays tolerance, nothing about arrays checked.
+    const LabCases plain = load_lab_cases(file("", ""));
+    CHECK_FALSE(plain.checks_arrays());
+    CHECK_FALSE(plain.cases[1].arrays.has_value());
+    for (const char* lab : {"lab01", "lab02", "lab03", "lab04"})
+        CHECK_FALSE(load_lab_cases(test::source_root() / "grader" / "cases" / (std::string(lab) + ".json")).checks_arrays());
+
+    const LabCases one = load_lab_cases(file(R"(, "arrays": {"max_abs": 1e-4, "max_differing_fraction": 0.001})",
+                                             R"(, "arrays": ["positions"])"));
+    REQUIRE(one.checks_arrays());
+    CHECK(one.live_array_tolerance->max_abs == 1e-4);
+    CHECK(one.live_array_tolerance->max_differing_fraction == 0.001);
+    CHECK(one.golden_array_tolerance->max_abs == 1e-4);  // one tolerance for both
+    CHECK_FALSE(one.cases[0].arrays.has_value());          // every array the reference hands in
+    CHECK(*one.cases[1].arrays == std::vector<std::string>{"positions"});
+
+    const LabCases two = load_lab_cases(file(R"(, "arrays": {"max_abs": 0, "max_differing_fraction": 0},
+        "arrays_golden": {"max_abs": 0.01, "max_differing_fraction": 0.02})", R"(, "arrays": [])"));
+    CHECK(two.live_array_tolerance->max_abs == 0);
+    CHECK(two.golden_array_tolerance->max_abs == 0.01);
+    CHECK(two.golden_array_tolerance->max_differing_fraction == 0.02);
+    CHECK(two.cases[1].arrays->empty());  // checks none
+
+    const std::string ok = R"(, "arrays": {"max_abs": 1e-4, "max_differing_fraction": 0.001})";
+    CHECK(error(R"(, "arrays": {"max_abs": -1, "max_differing_fraction": 0})", "").find("tolerance.arrays out of range") != std::string::npos);
+    CHECK(error(R"(, "arrays": {"max_abs": 1, "max_differing_fraction": 1.5})", "").find("max_differing_fraction 0..1") != std::string::npos);
+    CHECK(error(R"(, "arrays": {"max_abs": 1})", "").find("max_differing_fraction") != std::string::npos);
+    CHECK(error(R"(, "arrays": {"max_abs": "small", "max_differing_fraction": 0})", "").find("max_abs") != std::string::npos);
+    CHECK(error(ok + R"(, "arrays_golden": {"max_abs": -0.5, "max_differing_fraction": 0})", "")
+              .find("tolerance.arrays_golden out of range") != std::string::npos);
+    CHECK(error(R"(, "arrays_golden": {"max_abs": 1, "max_differing_fraction": 0})", "").find("'arrays_golden' but no 'arrays'") != std::string::npos);
+    CHECK(error("", R"(, "arrays": ["positions"])").find("case 'ragged' lists arrays, but the tolerance has no 'arrays'") != std::string::npos);
+    CHECK(error(ok, R"(, "arrays": ["Positions"])").find("case 'ragged' lists array 'Positions'") != std::string::npos);
+    CHECK(error(ok, R"(, "arrays": ["positions", "positions"])").find("lists array 'positions' twice") != std::string::npos);
+    CHECK(error(ok, R"(, "arrays": "positions")").find("cases[1].arrays") != std::string::npos);
+    CHECK(error(ok, R"(, "arrays": [3])").find("cases[1].arrays[0]") != std::string::npos);
+
+    // Hidden cases are held to the same rules.
+    LabCases lab = load_lab_cases(file("", ""));
+    const auto hidden = dir.write("grader/hidden/lab05.json", R"({"lab": "lab05", "cases": [
+        {"name": "h", "todo": "L05-T3", "settings": [], "draw": {}, "arrays": ["positions"]}]})");
+    CHECK(test::gsv_error_message([&] { add_hidden_cases(lab, hidden, 1); }).find("hidden/lab05.json: case 'h' lists arrays") != std::string::npos);
+}

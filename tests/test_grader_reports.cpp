@@ -135,6 +135,7 @@ TEST_CASE("grader reports: status names are short, distinct and lower case but f
     std::set<std::string> names;
     for (int s = 0; s <= static_cast<int>(CaseStatus::ReferenceFailed); ++s) names.insert(status_name(CaseStatus(s)));
     CHECK(names.size() == static_cast<std::size_t>(CaseStatus::ReferenceFailed) + 1);
+    CHECK(std::string(status_name(CaseStatus::WrongData)) == "wrong data");
     CHECK(std::string(status_name(CaseStatus::Passed)) == "passed");
     CHECK(std::string(status_name(CaseStatus::ShaderCompileError)) == "shader compile error");
     CHECK(std::string(status_name(CaseStatus::NonFinite)) == "NaN");
@@ -380,4 +381,87 @@ TEST_CASE("grader reports: write_reports writes four files and names the one it 
     // The output folder is a file.
     const fs::path file = dir.write("plain-file", "x");
     CHECK(contains(test::gsv_error_message([&] { write_reports(report, file); }), "plain-file"));
+}
+
+TEST_CASE("grader reports: wrong data shows in the table, report.json, JUnit and HTML", "[grader]") {
+    test::TempDir dir;
+    GradeReport report;
+    report.mode = "instructor";
+    report.sandbox = "off";
+    CaseResult r = make_case("lab05", "ragged", "L05-T2", 0, 2, CaseStatus::WrongData);
+    r.detail = "positions: 3 of 1,024 elements (0.29%) differ by more than 0.0001; first at element 1000: (NaN, 0, 0, 1) "
+               "where the reference has (0.5, 0, 0, 1)";
+    r.image.done = true;
+    r.image.total_pixels = 4;
+    r.image.psnr = std::numeric_limits<double>::infinity();
+    r.image.ssim = 1;
+    r.actual_png = "lab05/ragged/actual.png";
+    r.expected_png = "lab05/ragged/expected.png";
+    r.data.done = true;
+    r.data.reference = "live";
+    r.data.tolerance = {1e-4, 0.001};
+    ArrayDiff positions;
+    positions.name = "positions";
+    positions.tolerance = r.data.tolerance;
+    positions.count = positions.compared = 1024;
+    positions.components = 4;
+    positions.differing = 3;
+    positions.non_finite = 1;
+    positions.max_abs_diff = 0.25;
+    positions.first = 1000;
+    positions.first_actual = {std::numeric_limits<float>::quiet_NaN(), 0, 0, 1};
+    positions.first_expected = {0.5f, 0, 0, 1};
+    ArrayDiff velocities;
+    velocities.name = "velocities";
+    velocities.problem = "the lab handed in no 'velocities' array";
+    r.data.arrays = {positions, velocities};
+    report.results = {r};
+    write_png(dir.path(r.actual_png), solid(2, 2, 1, 2, 3));
+    write_png(dir.path(r.expected_png), solid(2, 2, 1, 2, 3));
+
+    const std::string table = score_table(report);
+    INFO(table);
+    CHECK(contains(table, "lab05  ragged  L05-T2  wrong data     0/2  positions: 3 of 1,024 elements (0.29%)"));
+
+    const Json json = parse_json(report_json(report), "report.json");
+    const Json& result = json.array_at("results").at(0);
+    CHECK(result.string_at("status") == "wrong data");
+    CHECK_FALSE(result.bool_at("passed"));
+    CHECK_FALSE(result.bool_at("kit_fault"));
+    const Json& data = result.object_at("data");
+    CHECK(data.bool_at("done"));
+    CHECK_FALSE(data.contains("reference"));  // the result's own "reference" says against what
+    CHECK(data.object_at("tolerance").number_at("max_abs") == 1e-4);
+    REQUIRE(data.array_at("arrays").size() == 2);
+    const Json& p = data.array_at("arrays").at(0);
+    CHECK(p.string_at("name") == "positions");
+    CHECK_FALSE(p.bool_at("passed"));
+    CHECK(p.int_at("differing") == 3);
+    CHECK(p.int_at("non_finite") == 1);
+    CHECK(p.int_at("compared") == 1024);
+    CHECK(p.object_at("first_difference").int_at("element") == 1000);
+    CHECK(p.object_at("first_difference").array_at("actual").at(0).is_null());  // NaN: JSON has none
+    CHECK(p.object_at("first_difference").array_at("expected").at(0).as_number() == 0.5);
+    CHECK(contains(p.string_at("summary"), "1 of them NaN or Inf"));
+    CHECK(data.array_at("arrays").at(1).string_at("problem") == "the lab handed in no 'velocities' array");
+    CHECK(data.array_at("arrays").at(1).find("first_difference")->is_null());
+    // A check without arrays says so.
+    CHECK_FALSE(parse_json(report_json(sample_report(dir.path())), "r").array_at("results").at(0).object_at("data").bool_at("done"));
+
+    const Json gradescope = parse_json(gradescope_json(report), "results.json");
+    CHECK(gradescope.array_at("tests").at(0).string_at("status") == "failed");
+    CHECK(gradescope.array_at("tests").at(0).string_at("output").rfind("wrong data: positions: 3 of 1,024", 0) == 0);
+
+    const std::string xml = junit_xml(report);
+    CHECK(contains(xml, "failures=\"1\" errors=\"0\""));
+    CHECK(contains(xml, "<failure message=\"wrong data: positions: 3 of 1,024 elements"));
+    CHECK(contains(xml, "type=\"wrong data\""));
+
+    const std::string page = html_report(report, dir.path());
+    CHECK(contains(page, "<td class=\"status\">wrong data</td>"));
+    CHECK(contains(page, "<tr class=\"fail\">"));
+    CHECK(contains(page, "<th>array</th>"));
+    CHECK(contains(page, "<td>positions</td><td>1,024 &times; 4</td><td>1,024</td><td>3 (0.293%, allowed 0.100%)</td>"));
+    CHECK(contains(page, "the lab handed in no &#39;velocities&#39; array"));
+    CHECK(count(page, "data:image/png;base64,") == 2);  // actual and expected; the image passed, no difference
 }

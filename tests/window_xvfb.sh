@@ -8,6 +8,7 @@ set -euo pipefail
 lab=$1
 lab_dir=$2
 out=$3
+shift 3  # the rest go to the lab (lab 05 draws fewer particles: the test is of the window, not of llvmpipe)
 root=$(cd "$(dirname "$0")/.." && pwd)
 for tool in xvfb-run import convert; do
   command -v $tool >/dev/null || { echo "window_xvfb: $tool not installed (scripts/setup.sh installs it)"; exit 1; }
@@ -21,7 +22,8 @@ cd "$out"
 export GSV_ROOT="$out/kit"
 xvfb-run -a -s "-screen 0 800x600x24" bash -c '
   victim=$1
-  "$0" window --size 640x480 --screenshot-after 10 --quit-after 10s --out own.png > lab.log 2>&1 &
+  shift
+  "$0" window --size 640x480 --screenshot-after 10 --quit-after 10s --out own.png "$@" > lab.log 2>&1 &
   pid=$!
   for i in $(seq 1 300); do [ -s own.png ] && break; sleep 0.1; done
   sleep 0.5
@@ -30,7 +32,7 @@ xvfb-run -a -s "-screen 0 800x600x24" bash -c '
   for i in $(seq 1 50); do grep -q "compile error" lab.log && break; sleep 0.1; done
   kill -0 $pid || { echo "window_xvfb: the lab stopped after a broken shader edit"; exit 1; }
   wait $pid
-' "$lab" "$victim"
+' "$lab" "$victim" "$@"
 cat lab.log
 for shot in own.png screen.png; do
   [ -s "$shot" ] || { echo "window_xvfb: no $shot"; exit 1; }

@@ -1,0 +1,28 @@
+// Lab 05: one time step for every particle, straight in the storage buffers (Bailey, "Using GPU Shaders
+// for Visualization, Part 3": Figure 6 under gravity, Figure 8 through a formula, Figure 9 through a 3D
+// texture).
+#include "particles.glsl"
+#include "integrate.glsl"
+#include "speed_colour.glsl"
+
+layout(local_size_x = LOCAL_SIZE) in;
+
+uniform int uCount;       // particles; the buffers have more slots, holding sentinels
+uniform float uTimeStep;  // h, the accuracy knob; 0 recolours without moving
+
+void main() {
+    // TODO(L05-T2): which particle is this invocation's? The C++ lays the work groups out in rows
+    // (common/compute.h) when there are more than one row may hold, so count the rows above this one too.
+    // The last groups run past the particle count: those invocations must touch nothing.
+    uint index = gl_GlobalInvocationID.x;
+    vec3 p = positions[index].xyz;
+    vec3 v = velocities[index].xyz;
+    advance(p, v, uTimeStep);
+    // TODO(L05-T3): a particle that left the domain [-1,1]^3 (any coordinate beyond 1 in size; on the
+    // boundary is still inside) goes back to where it started, with the velocity it started with.
+    positions[index].xyz = p;
+    velocities[index].xyz = v;
+#ifdef EFFECT_COLOUR_BY_SPEED
+    colours[index] = vec4(speed_colour(length(v)), 1.0);
+#endif
+}

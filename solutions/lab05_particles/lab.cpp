@@ -1,0 +1,206 @@
+// Lab 05: shader storage buffers and compute-shader particle advection.
+// Seed: Bailey, "Using GPU Shaders for Visualization, Part 3" (IEEE CG&A, 2013).
+// A million particles live in storage buffers on the GPU. A compute shader moves every one of them
+// (advect.comp) and the same buffers are drawn as points: nothing comes back to the CPU to draw. The CPU
+// does the same update in double precision (common/particle_*) to say how wrong the GPU's float steps
+// are, and in float on every core to say whether the GPU is worth it.
+#include "common/app.h"
+#include "common/compute.h"
+#include "common/error.h"
+#include "common/gl.h"
+#include "common/particle_grid.h"
+#include "common/particle_motion.h"
+#include "common/texture.h"
+#include "particle_buffers.h"
+#include "particle_measure.h"
+#include "particle_stepper.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace {
+
+// Window mode catches the simulation up at most this many steps a frame, so a demo stays interactive.
+constexpr long kMaxStepsPerFrame = 32;
+
+class ParticleLab final : public gsv::Lab {
+public:
+    gsv::LabInfo info() const override {
+        return {"lab05", "SSBOs and compute-shader particle advection", {4, 3}, "compute shaders and storage buffers"};
+    }
+
+    void declare(gsv::Params& p, std::vector<gsv::RenderCase>& cases) override {
+        p.add_choice("field", "abc", {"gravity", "rotation", "saddle", "abc"},
+                     "a fountain under gravity, or a velocity field: rotation (-y, x, 0), saddle (x, -y, 0), or the ABC flow")
+            .at_compile_time();
+        p.add_choice("source", "analytic", {"analytic", "texture"},
+                     "the field's formula in the shader, or its samples in a 3D texture (not for gravity)")
+            .at_compile_time();
+        p.add_int("grid", 32, 2, 256, "samples per side of the velocity texture (source=texture)");
+        p.add_choice("integrator", "euler", {"euler", "midpoint", "rk4"}, "the step, compiled in").at_compile_time().series();
+        p.add_float("time_step", 0.05, 1e-4, 0.5, "h, the simulated time per step")
+            .with_step(0.01)
+            .accuracy_knob({"0.4", "0.2", "0.1", "0.05", "0.025"});
+        p.add_float("time", 2, 0, 20, "the simulated time shown: round(time / h) steps from the start").with_step(0.1).animated();
+        p.add_int("particles", 1048576, 1, 16777216, "how many particles");
+        p.add_int("local_size", 128, 1, 1024, "invocations per work group").at_compile_time();
+        p.add_int("seed", 1, 0, 1000000, "where the particles start");
+        p.add_float("gravity", 2, 0, 20, "the fountain's downward acceleration (field=gravity)").with_step(0.5);
+        p.add_effect("colour_by_speed", true, "colour each particle by its speed; off, the shader writes no colours");
+        p.add_float("speed_scale", 1.5, 0.01, 100, "the speed drawn red").with_step(0.1);
+        p.add_float("point_size", 1, 1, 16, "points' size in pixels").with_step(1);
+        gsv::add_orbit_camera(p, 30, 20, 5.0f);
+
+        const std::string small = "particles=65536";
+        cases = {
+            {"abc", "the ABC flow, Euler steps", {small}},
+            {"rotation-euler", "one turn of the rotation by Euler steps of 0.1: the cloud spirals out",
+             {small, "field=rotation", "time_step=0.1", "time=6.3"}},
+            {"rotation-rk4", "the same turn by RK4: the circles kept", {small, "field=rotation", "time_step=0.1", "time=6.3", "integrator=rk4"}},
+            {"saddle", "out along x and back to the start", {small, "field=saddle", "time=3"}},
+            {"fountain", "a fountain under gravity, Euler steps", {small, "field=gravity", "time=2.5"}},
+            {"fountain-exact", "the same fountain by the midpoint rule: exact", {small, "field=gravity", "time=2.5", "integrator=midpoint"}},
+            {"texture", "the ABC flow from a 16^3 texture", {small, "source=texture", "grid=16"}},
+            {"ragged", "1000 particles in groups of 64: the last group runs past the end", {"particles=1000", "local_size=64", "point_size=3"}},
+            {"split", "131072 groups of 1: more than one row of work groups", {"particles=131072", "local_size=1", "time=0.5"}},
+            {"colours", "speeds drawn against a lower scale, in bigger points", {small, "speed_scale=0.6", "point_size=2"}},
+        };
+    }
+
+    void setup(gsv::LabKit& kit) override {
+        advect_ = &kit.program("advect", {"advect.comp"});
+        draw_ = &kit.program("particles", {"particles.vert", "particles.frag"});
+        limits_ = gsv::compute_limits();
+    }
+
+    // Refuses what cannot run before the shaders rebuild, so the user reads the reason, not a link error.
+    void params_changed(gsv::LabKit& kit) override {
+        const auto& p = kit.params();
+        if (p.get_choice("field") == "gravity" && p.get_choice("source") == "texture")
+            throw gsv::Error("source=texture samples a velocity field; field=gravity has none (use source=analytic)");
+        const auto local = static_cast<std::int64_t>(p.get_int("local_size"));
+        if (local > limits_.max_group_size[0] || local > limits_.max_invocations)
+            throw gsv::UnsupportedError("local_size=" + std::to_string(local) + " is over this GPU's work-group size limit of " +
+                                        std::to_string(std::min(limits_.max_group_size[0], limits_.max_invocations)));
+        const std::size_t slots = lab05::capacity_for(static_cast<std::size_t>(p.get_int("particles")),
+                                                      static_cast<std::uint32_t>(local), limits_);
+        const auto bytes = static_cast<std::int64_t>(slots * sizeof(gsv::ParticleOrigin));
+        if (bytes > limits_.max_storage_block_bytes)
+            throw gsv::UnsupportedError("particles=" + std::to_string(p.get_int("particles")) + " needs a " +
+                                        std::to_string(bytes >> 20) + " MiB storage buffer; this GPU allows " +
+                                        std::to_string(limits_.max_storage_block_bytes >> 20) + " MiB");
+    }
+
+    void render(gsv::LabKit& kit, const gsv::Frame& frame) override {
+        update(kit, frame);
+        const auto& p = kit.params();
+        gsv::Transforms t;
+        const gsv::OrbitCamera camera = gsv::orbit_camera(p);
+        t.view = camera.view();
+        t.projection = camera.projection(frame.aspect());
+        glClearColor(0.04f, 0.04f, 0.07f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        glEnable(GL_DEPTH_TEST);
+        glPointSize(p.get_float("point_size"));
+        // The vertex stage reads what the last step wrote, through the vertex-array path.
+        glMemoryBarrier(GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
+        const gsv::ShaderProgram& program = kit.use(*draw_);
+        kit.set_transforms(program, t);
+        lab05::draw_particles(buffers_);
+    }
+
+    std::vector<std::string> sweep_reference() const override { return {"time_step=0.00625", "integrator=rk4"}; }
+
+    gsv::SweepMetrics sweep_metrics(gsv::LabKit& kit, const gsv::Frame&) override {
+        gsv::SweepMetrics metrics = lab05::measure(kit, stepper(kit), initial_, done_);
+        state_signature_.clear();  // measuring restarted the buffers
+        return metrics;
+    }
+
+    std::vector<gsv::DataArray> readback(gsv::LabKit&) override {
+        return {{"positions", 4, flatten(lab05::read_vec4s(buffers_.positions, buffers_.capacity))},
+                {"velocities", 4, flatten(lab05::read_vec4s(buffers_.velocities, buffers_.capacity))}};
+    }
+
+private:
+    // Everything that decides the particles' state except the time shown.
+    static std::string state_signature(const gsv::Params& p) {
+        std::string s;
+        for (const char* name : {"field", "source", "grid", "integrator", "time_step", "particles", "local_size", "seed",
+                                 "gravity", "colour_by_speed", "speed_scale"})
+            s += p.get_text(name) + ";";
+        return s;
+    }
+
+    lab05::Stepper stepper(gsv::LabKit& kit) {
+        return lab05::Stepper{kit, *advect_, buffers_, velocity_texture_, limits_};
+    }
+
+    void update(gsv::LabKit& kit, const gsv::Frame& frame) {
+        const auto& p = kit.params();
+        const auto count = static_cast<std::size_t>(p.get_int("particles"));
+        const auto local = static_cast<std::uint32_t>(p.get_int("local_size"));
+        const gsv::ParticleScene scene = gsv::particle_scene_from_name(p.get_choice("field"));
+        const std::string particles = p.get_text("field") + ";" + p.get_text("particles") + ";" + p.get_text("seed") +
+                                      ";" + p.get_text("local_size") + ";" + p.get_text("gravity");
+        if (particles != particles_signature_) {
+            const std::size_t capacity = lab05::capacity_for(count, local, limits_);
+            initial_ = gsv::pad_particles(
+                gsv::make_particles(scene, count, static_cast<std::uint64_t>(p.get_int("seed")), p.get_float("gravity")),
+                capacity);
+            buffers_ = lab05::allocate_particle_buffers(count, capacity);
+            particles_signature_ = particles;
+            state_signature_.clear();
+        }
+        const bool textured = p.get_choice("source") == "texture";
+        const std::string grid = textured ? p.get_text("field") + ";" + p.get_text("grid") : "";
+        if (grid != grid_signature_) {
+            velocity_texture_ = gsv::Texture();
+            if (textured) {
+                const gsv::VelocityGrid samples = gsv::VelocityGrid::sample(scene, p.get_int("grid"));
+                const gsv::Sampling sampling{GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE};
+                velocity_texture_ = gsv::Texture::create_3d(samples.n, samples.n, samples.n, gsv::TexelFormat::RGB32F,
+                                                            samples.texels.data(), sampling);
+            }
+            grid_signature_ = grid;
+            state_signature_.clear();
+        }
+
+        // Headless, a frame that asks for the state already shown recomputes it from the start, so its time
+        // is the cost of the whole run; a later time (animate) carries on from the last frame, which gives
+        // the same numbers as starting over.
+        const long target = lab05::steps_for(p.get_float("time"), p.get_float("time_step"));
+        const std::string state = state_signature(p);
+        if (state != state_signature_ || target < done_ || (!frame.interactive && target == done_)) {
+            stepper(kit).restart(initial_);
+            done_ = 0;
+            state_signature_ = state;
+        }
+        long steps = target - done_;
+        if (frame.interactive) steps = std::min(steps, kMaxStepsPerFrame);
+        stepper(kit).run(steps, p.get_float("time_step"));
+        done_ += steps;
+    }
+
+    static std::vector<float> flatten(const std::vector<glm::vec4>& v) {
+        std::vector<float> out;
+        out.reserve(v.size() * 4);
+        for (const glm::vec4& x : v) out.insert(out.end(), {x.x, x.y, x.z, x.w});
+        return out;
+    }
+
+    const gsv::ShaderLibrary::Entry* advect_ = nullptr;
+    const gsv::ShaderLibrary::Entry* draw_ = nullptr;
+    gsv::ComputeLimits limits_;
+    gsv::ParticleSet initial_;
+    lab05::ParticleBuffers buffers_;
+    gsv::Texture velocity_texture_;
+    std::string particles_signature_, grid_signature_, state_signature_;
+    long done_ = 0;  // steps the buffers have taken since the start
+};
+
+}  // namespace
+
+int main(int argc, char** argv) { return gsv::run_lab<ParticleLab>(argc, argv); }

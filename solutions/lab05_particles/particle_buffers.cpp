@@ -1,0 +1,85 @@
+#include "particle_buffers.h"
+
+#include "common/error.h"
+#include "common/gl.h"
+
+#include <algorithm>
+
+namespace lab05 {
+
+ParticleBuffers allocate_particle_buffers(std::size_t count, std::size_t capacity) {
+    ParticleBuffers b;
+    b.count = count;
+    b.capacity = capacity;
+    const std::size_t vec4s = capacity * sizeof(glm::vec4);
+    // GL_DYNAMIC_DRAW: written by the GPU every step, read by the GPU to draw.
+    b.positions = gsv::Buffer::create(GL_SHADER_STORAGE_BUFFER, vec4s, nullptr, GL_DYNAMIC_DRAW);
+    b.velocities = gsv::Buffer::create(GL_SHADER_STORAGE_BUFFER, vec4s, nullptr, GL_DYNAMIC_DRAW);
+    b.origins = gsv::Buffer::create(GL_SHADER_STORAGE_BUFFER, capacity * sizeof(gsv::ParticleOrigin), nullptr,
+                                    GL_STATIC_DRAW);
+    b.colours = gsv::Buffer::create(GL_SHADER_STORAGE_BUFFER, vec4s, nullptr, GL_DYNAMIC_DRAW);
+
+    GLuint vao = 0;
+    glGenVertexArrays(1, &vao);
+    b.points = gsv::VertexArrayName(vao);
+    glBindVertexArray(vao);
+    glBindBuffer(GL_ARRAY_BUFFER, b.positions.id());
+    glEnableVertexAttribArray(gsv::kVertexSlot);
+    glVertexAttribPointer(gsv::kVertexSlot, 4, GL_FLOAT, GL_FALSE, sizeof(glm::vec4), nullptr);
+    glBindBuffer(GL_ARRAY_BUFFER, b.colours.id());
+    glEnableVertexAttribArray(kColourSlot);
+    glVertexAttribPointer(kColourSlot, 4, GL_FLOAT, GL_FALSE, sizeof(glm::vec4), nullptr);
+    glBindVertexArray(0);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    gsv::check_gl_error("allocating the particle buffers");
+    return b;
+}
+
+void write_particles(ParticleBuffers& buffers, const gsv::ParticleSet& set) {
+    if (set.count() != buffers.capacity)
+        throw gsv::Error("write_particles: " + std::to_string(set.count()) + " particles for " +
+                         std::to_string(buffers.capacity) + " slots");
+    // Invalidating tells the driver the old contents may go: it need not wait for a step still reading them.
+    glm::vec4* positions = buffers.positions.map_write_invalidate_as<glm::vec4>();
+    std::copy(set.positions.begin(), set.positions.end(), positions);
+    buffers.positions.unmap();
+    // TODO(L05-T1): the velocities and the origins the same way (the origins are ParticleOrigin structs,
+    // laid out as particles.glsl's Origin). The colours are the shader's to write.
+//@solution L05-T1
+    glm::vec4* velocities = buffers.velocities.map_write_invalidate_as<glm::vec4>();
+    std::copy(set.velocities.begin(), set.velocities.end(), velocities);
+    buffers.velocities.unmap();
+    gsv::ParticleOrigin* origins = buffers.origins.map_write_invalidate_as<gsv::ParticleOrigin>();
+    std::copy(set.origins.begin(), set.origins.end(), origins);
+    buffers.origins.unmap();
+//@starter
+//    // Until then, zeros, so the starter behaves the same on every GPU (allocated buffers hold anything).
+//    const std::vector<glm::vec4> zeros(2 * set.count());
+//    buffers.velocities.upload(0, buffers.velocities.size(), zeros.data());
+//    buffers.origins.upload(0, buffers.origins.size(), zeros.data());
+//@end
+    gsv::check_gl_error("writing the particles");
+}
+
+void bind_particle_buffers(const ParticleBuffers& buffers) {
+    buffers.positions.bind_base(kPositions);
+    buffers.velocities.bind_base(kVelocities);
+    buffers.origins.bind_base(kOrigins);
+    buffers.colours.bind_base(kColours);
+}
+
+void draw_particles(const ParticleBuffers& buffers) {
+    glBindVertexArray(buffers.points.get());
+    glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(buffers.count));
+    glBindVertexArray(0);
+}
+
+std::vector<glm::vec4> read_vec4s(gsv::Buffer& buffer, std::size_t slots) {
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    const glm::vec4* data = buffer.map_read_as<glm::vec4>();
+    std::vector<glm::vec4> out(data, data + std::min(slots, buffer.size() / sizeof(glm::vec4)));
+    buffer.unmap();
+    return out;
+}
+
+}  // namespace lab05

@@ -1,0 +1,35 @@
+#pragma once
+// Lab 05: the particles in shader storage buffers, bound to the indexed points particles.glsl declares,
+// and the same buffers bound as vertex arrays to draw them: the positions never travel back to the CPU.
+#include "common/buffer.h"
+#include "common/gl_object.h"
+#include "common/particle_motion.h"
+#include "common/shader_program.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace lab05 {
+
+// The binding points of particles.glsl's buffer blocks.
+enum Binding : GLuint { kPositions = 0, kVelocities = 1, kOrigins = 2, kColours = 3 };
+// The colours' vertex attribute (particles.vert); positions use the kit's aVertex slot.
+inline constexpr GLuint kColourSlot = 3;
+
+struct ParticleBuffers {
+    gsv::Buffer positions, velocities, origins, colours;
+    gsv::VertexArrayName points;  // positions as aVertex, colours as aColour
+    std::size_t count = 0;        // particles drawn and moved
+    std::size_t capacity = 0;     // slots: the rest hold sentinels that nothing may touch
+};
+
+// Buffers for `capacity` particles, allocated with no data: the GPU owns them from here on.
+ParticleBuffers allocate_particle_buffers(std::size_t count, std::size_t capacity);
+// The starting state, written the seed's way (map, invalidate, write, unmap); `set` holds capacity slots.
+void write_particles(ParticleBuffers& buffers, const gsv::ParticleSet& set);
+void bind_particle_buffers(const ParticleBuffers& buffers);
+void draw_particles(const ParticleBuffers& buffers);
+// Element-major copies of the first `slots` slots of a buffer of vec4s (after the last dispatch's writes).
+std::vector<glm::vec4> read_vec4s(gsv::Buffer& buffer, std::size_t slots);
+
+}  // namespace lab05

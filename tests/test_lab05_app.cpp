@@ -1,0 +1,152 @@
+// Lab 05 as students and lecturers run it: the lab binary's render, animate and sweep modes, its refusals,
+// and the particle buffers it hands the grader.
+#include "common/image.h"
+#include "lab_runner.h"
+#include "test_support.h"
+
+#include "catch.hpp"
+
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+using namespace gsv;
+
+namespace {
+
+std::vector<float> read_floats(const fs::path& file) {
+    const std::string bytes = test::read_text(file);
+    std::vector<float> out(bytes.size() / sizeof(float));
+    std::memcpy(out.data(), bytes.data(), out.size() * sizeof(float));
+    return out;
+}
+
+std::string cell(const std::string& row, int k) {
+    std::stringstream s(row);
+    std::string text;
+    for (int i = 0; i <= k; ++i) std::getline(s, text, ',');
+    return text;
+}
+
+int column(const std::string& header, const std::string& name) {
+    std::stringstream s(header);
+    std::string text;
+    for (int i = 0; std::getline(s, text, ','); ++i)
+        if (text == name) return i;
+    FAIL("no column " << name << " in " << header);
+    return -1;
+}
+
+}  // namespace
+
+TEST_CASE("lab05: on a context without compute shaders it stops with one line saying why, status 3", "[lab05][gl43]") {
+    test::TempDir dir;
+    const auto run = test::render("lab05_solution", {}, dir.path(), "old", {"--gl", "4.1"},
+                                  {"MESA_GL_VERSION_OVERRIDE=4.1", "MESA_GLSL_VERSION_OVERRIDE=410"});
+    INFO(run.process.output);
+    CHECK(run.exit_code() == 3);
+    CHECK(run.process.output.find("needs OpenGL 4.3 (compute shaders and storage buffers)") != std::string::npos);
+    CHECK_FALSE(fs::exists(run.png));
+}
+
+TEST_CASE("lab05: settings that cannot go together or out of range give one line naming them", "[lab05][gl43]") {
+    test::TempDir dir;
+    auto run = test::render("lab05_solution", {"field=gravity", "source=texture"}, dir.path(), "bad");
+    CHECK(run.exit_code() == 1);
+    CHECK(run.process.output.find("source=texture samples a velocity field; field=gravity has none") != std::string::npos);
+    CHECK_FALSE(fs::exists(run.png));
+    run = test::render("lab05_solution", {"local_size=2048"}, dir.path(), "bad");
+    CHECK(run.exit_code() == 2);
+    CHECK(run.process.output.find("local_size") != std::string::npos);
+    run = test::render("lab05_solution", {"particles=0"}, dir.path(), "bad");
+    CHECK(run.exit_code() == 2);
+    CHECK(run.process.output.find("particles") != std::string::npos);
+}
+
+TEST_CASE("lab05: the buffers handed to the grader hold every particle and the untouched sentinels past them", "[lab05][gl43]") {
+    test::TempDir dir;
+    const auto plain = test::render("lab05_solution", {"particles=1000", "local_size=64"}, dir.path(), "plain");
+    REQUIRE(plain.exit_code() == 0);
+    CHECK_FALSE(fs::exists(dir.path("plain.positions.f32")));  // only when asked: they can be large
+    const auto run = test::render("lab05_solution", {"particles=1000", "local_size=64"}, dir.path(), "ragged", {"--arrays"});
+    INFO(run.process.output);
+    REQUIRE(run.exit_code() == 0);
+    const std::vector<float> positions = read_floats(dir.path("ragged.positions.f32"));
+    const std::vector<float> velocities = read_floats(dir.path("ragged.velocities.f32"));
+    REQUIRE(positions.size() == 1024 * 4);  // 1000 particles, one block of 1024 slots
+    REQUIRE(velocities.size() == 1024 * 4);
+    for (std::size_t i = 0; i < 1000; ++i) {
+        CHECK(positions[4 * i + 3] == 1.0f);
+        for (int k = 0; k < 3; ++k) CHECK(std::abs(positions[4 * i + k]) <= 1.0f);
+    }
+    for (std::size_t i = 1000; i < 1024; ++i) {
+        CHECK(positions[4 * i] == 0.3f);
+        CHECK(positions[4 * i + 1] == 0.6f);
+        CHECK(positions[4 * i + 3] == 0.0f);
+        CHECK(velocities[4 * i] == 0.0f);
+    }
+}
+
+TEST_CASE("lab05: the starter draws its particles magenta, unmoved, until its TODOs are done", "[lab05][gl43]") {
+    test::TempDir dir;
+    const auto run = test::render("lab05", {"particles=65536"}, dir.path(), "starter");
+    INFO(run.process.output);
+    REQUIRE(run.exit_code() == 0);
+    const Image image = read_png(run.png);
+    CHECK(test::not_done_pixels(image) > image.width * image.height / 10);
+}
+
+TEST_CASE("lab05: animate carries the particles on from frame to frame and gives what a render at that time gives", "[lab05][gl43]") {
+    test::TempDir dir;
+    const fs::path out = dir.path("anim");
+    const auto run = test::run_lab("lab05_solution", {"animate", "--size", "96x96", "--count", "3", "--from", "0", "--to", "1.5",
+                                                      "--set", "particles=8192", "--out-dir", out.string()},
+                                   dir.path());
+    INFO(run.process.output);
+    REQUIRE(run.exit_code() == 0);
+    for (int k = 0; k < 3; ++k) {
+        const std::string time = k == 0 ? "0" : k == 1 ? "0.5" : "1";  // frame k at k / count of the span
+        const auto still = test::render("lab05_solution", {"particles=8192", "time=" + time}, dir.path(), "t" + std::to_string(k),
+                                        {"--size", "96x96"});
+        REQUIRE(still.exit_code() == 0);
+        INFO("frame " << k);
+        CHECK(read_png(still.png).rgba == read_png(out / ("frame_000" + std::to_string(k) + ".png")).rgba);
+    }
+    CHECK(read_png(out / "frame_0000.png").rgba != read_png(out / "frame_0002.png").rgba);
+}
+
+TEST_CASE("lab05: the sweep measures each integrator's order against the double-precision reference, and both speeds", "[lab05][gl43]") {
+    test::TempDir dir;
+    const auto run = test::run_lab("lab05_solution", {"sweep", "--size", "64x64", "--frames", "1", "--warmup", "0", "--set",
+                                                      "particles=2048", "--set", "time=1.6", "--out-dir", dir.path().string()},
+                                   dir.path());
+    INFO(run.process.output);
+    REQUIRE(run.exit_code() == 0);
+    const auto rows = test::lines_of(test::read_text(dir.path("lab05-sweep.csv")));
+    REQUIRE(rows.size() == 1 + 3 * 5);  // header, 3 integrators x 5 steps
+    const int err = column(rows[0], "pos_err_rms"), gpu = column(rows[0], "gpu_Mparticles_s"),
+              cpu = column(rows[0], "cpu_Mparticles_s"), gap = column(rows[0], "gpu_vs_cpu_max"),
+              followed = column(rows[0], "followed"), steps = column(rows[0], "steps");
+    auto value = [&](int row, int col) { return std::stod(cell(rows[row], col)); };
+    for (int r = 1; r <= 15; ++r) {
+        INFO(rows[r]);
+        CHECK(value(r, gpu) > 0);
+        CHECK(value(r, cpu) > 0);
+        CHECK(value(r, gap) < 1e-4);  // the GPU does the CPU's float update
+        CHECK(value(r, followed) > 100);
+    }
+    CHECK(value(1, steps) == 4);   // 1.6 / 0.4: the same simulated time in every row
+    CHECK(value(5, steps) == 64);
+    // Halving h: Euler's error halves, the midpoint rule's quarters, RK4's falls sixteenfold until float
+    // rounding (about 1e-6 here) is all that is left.
+    for (int r = 1; r < 5; ++r) {
+        INFO(rows[r] << "\n" << rows[r + 1]);
+        CHECK(value(r, err) / value(r + 1, err) == Approx(2).margin(0.5));
+        CHECK(value(r + 5, err) / value(r + 6, err) == Approx(4).margin(1.2));
+    }
+    CHECK(value(11, err) / value(12, err) > 10);
+    CHECK(value(12, err) / value(13, err) > 10);
+    CHECK(value(15, err) < 2e-6);
+}
