@@ -57,6 +57,9 @@ public:
     virtual std::vector<std::string> sweep_reference() const { return {}; }
     // Lab-specific error columns for a sweep, measured at the current settings.
     virtual SweepMetrics sweep_metrics(LabKit&, const Frame&) { return {}; }
+    // The error the sweep's plot shows: one of sweep_metrics' columns, where the image's RMSE against the
+    // reference says little (lab 05: particles restart at times that depend on the step); empty: the RMSE.
+    virtual std::string sweep_error_column() const { return {}; }
     // What render mode writes beside the image for the grader to compare with the reference's; most labs none.
     virtual std::vector<DataArray> readback(LabKit&) { return {}; }
 };

@@ -95,6 +95,7 @@ int run_sweep(Session& s) {
     report.gl = s.context->describe();
     report.width = width;
     report.height = height;
+    report.plotted_error = s.lab->sweep_error_column();
     for (const auto& series_value : series_values) {
         for (const auto& knob_value : knob_values) {
             std::vector<std::string> settings{knob_name + "=" + knob_value};

@@ -115,7 +115,15 @@ std::vector<std::string> SweepReport::write(const std::filesystem::path& dir) co
         gp << "\n";
     };
     gp << "set logscale y\n";  // errors fall by orders of magnitude as the knob converges
-    plot(5, "RMSE against the reference (0-255)");
+    int error_column = 5;
+    std::string error_label = "RMSE against the reference (0-255)";
+    if (!plotted_error.empty() && !rows.empty())
+        for (std::size_t i = 0; i < rows.front().extra.size(); ++i)
+            if (rows.front().extra[i].first == plotted_error) {
+                error_column = 7 + static_cast<int>(i);  // after series, knob, median_ms, min_ms, rmse, max_diff
+                error_label = plotted_error;
+            }
+    plot(error_column, error_label);
     gp << "unset logscale y\n";
     plot(3, "median ms per frame");
     gp << "unset multiplot\n";

@@ -22,6 +22,7 @@ struct SweepReport {
     std::vector<std::string> reference;
     int width = 0, height = 0;
     std::vector<SweepRow> rows;
+    std::string plotted_error;  // an extra column to plot as the error instead of the image RMSE; empty: RMSE
 
     std::string table() const;
     std::string csv() const;

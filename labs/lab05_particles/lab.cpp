@@ -112,6 +112,7 @@ public:
     }
 
     std::vector<std::string> sweep_reference() const override { return {"time_step=0.00625", "integrator=rk4"}; }
+    std::string sweep_error_column() const override { return "pos_err_rms"; }
 
     gsv::SweepMetrics sweep_metrics(gsv::LabKit& kit, const gsv::Frame&) override {
         gsv::SweepMetrics metrics = lab05::measure(kit, stepper(kit), initial_, done_);
