@@ -8,7 +8,7 @@ debian_packages=(
   libglfw3-dev libglm-dev catch2 libstb-dev
   libegl-dev libgl-dev libgl1-mesa-dri libegl-mesa0 libosmesa6-dev
   libimgui-dev
-  python3-glad glslang-tools python-matplotlib-data
+  python3-glad glslang-tools python-matplotlib-data python3-nibabel
   xvfb xauth imagemagick gnuplot-nox
 )
 
