@@ -44,6 +44,21 @@ std::optional<std::string> ShaderLibrary::rebuild_all(const std::vector<ShaderDe
     return first_error;
 }
 
+std::optional<std::string> ShaderLibrary::set_generated(const Entry& target, std::vector<GeneratedFile> generated,
+                                                       const std::vector<ShaderDefine>& defines) {
+    for (auto& entry : entries_) {
+        if (&entry != &target) continue;
+        entry.spec_.generated = std::move(generated);
+        try {
+            build(entry, base_, defines);
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::nullopt;
+    }
+    throw Error("program '" + target.spec().name + "' does not belong to this shader library");
+}
+
 std::optional<std::string> ShaderLibrary::reload_changed(const std::vector<ShaderDefine>& defines) {
     std::optional<std::string> first_error;
     for (auto& entry : entries_) {

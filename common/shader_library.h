@@ -34,6 +34,12 @@ public:
     std::optional<std::string> rebuild_all(const std::vector<ShaderDefine>& defines);
     // Rebuilds programs whose files changed on disk; returns the error of a failed rebuild, if any.
     std::optional<std::string> reload_changed(const std::vector<ShaderDefine>& defines);
+    // Replaces one program's generated include files (its configuration changed) and rebuilds it. A
+    // generated file has no timestamp for reload_changed to see, so this is how its change arrives. On
+    // failure the last good program keeps running and the error is returned; the new text is kept, so the
+    // next hot reload builds what was asked for. Throws gsv::Error for an entry of another library.
+    std::optional<std::string> set_generated(const Entry& entry, std::vector<GeneratedFile> generated,
+                                             const std::vector<ShaderDefine>& defines);
     const PreprocessOptions& options() const { return base_; }
 
 private:

@@ -44,6 +44,7 @@ ShaderProgram ShaderProgram::build(const ProgramSpec& spec, const PreprocessOpti
         PreprocessOptions options = base_options;
         options.stage = stage_from_extension(file);
         options.defines.insert(options.defines.end(), spec.defines.begin(), spec.defines.end());
+        options.generated.insert(options.generated.end(), spec.generated.begin(), spec.generated.end());
         if (options.stage == ShaderStage::Compute && options.version < GlVersion{4, 3})
             throw UnsupportedError(file.string() + ": compute shaders need OpenGL 4.3 (this run has " +
                                    options.version.str() + ")");

@@ -151,6 +151,7 @@ public:
     Preprocessor(const PreprocessOptions& options, ShaderSource& out) : options_(options), out_(out) {}
 
     void run(const fs::path& main_file) {
+        check_generated();
         write_header();
         const int main_index = load(main_file);
         if (main_index < 0) throw Error("cannot open shader file '" + main_file.string() + "'");
@@ -182,6 +183,38 @@ private:
         out_.text = header;
         out_.files.push_back(kGeneratedHeaderName);
         out_.lines.push_back(split_lines(header).clean);
+    }
+
+    // A bad name would only surface later as a baffling "cannot find include"; say what is wrong with it.
+    void check_generated() const {
+        std::set<std::string> seen;
+        for (const auto& file : options_.generated) {
+            const std::string prefix = "generated shader file '" + file.name + "': ";
+            if (file.name.empty() || file.name.find_first_of("\"\r\n") != std::string::npos)
+                throw Error(prefix + "the name must be what #include \"...\" can name (not empty, no quote or line break)");
+            if (!seen.insert(file.name).second) throw Error(prefix + "given twice");
+        }
+    }
+
+    const GeneratedFile* find_generated(const std::string& name) const {
+        for (const auto& file : options_.generated)
+            if (file.name == name) return &file;
+        return nullptr;
+    }
+
+    // Its identity is its label, never an absolute path, so it cannot collide with a real file.
+    int load_generated(const GeneratedFile& file) {
+        const fs::path identity = generated_file_label(file.name);
+        if (auto it = index_of_.find(identity); it != index_of_.end()) return it->second;
+        SplitText split = split_lines(file.text);
+        const int index = static_cast<int>(out_.files.size());
+        out_.files.push_back(identity.string());
+        out_.lines.push_back(std::move(split.clean));
+        raw_lines_.emplace(index, std::move(split.raw));
+        identities_.emplace(index, identity);
+        index_of_.emplace(identity, index);
+        generated_.insert(index);
+        return index;
     }
 
     // Returns the file's source-string number, reading it on first sight; -1 when it cannot be read.
@@ -262,21 +295,30 @@ private:
             throw Error(at + ": malformed #include; write #include \"file.glsl\"");
         const std::string name = argument.substr(1, close - 1);
 
-        std::vector<fs::path> searched;
-        searched.push_back(display_path(fs::path(out_.files[static_cast<std::size_t>(includer)]).parent_path()));
-        searched.insert(searched.end(), options_.include_dirs.begin(), options_.include_dirs.end());
+        const GeneratedFile* generated = find_generated(name);
         fs::path found;
-        for (const auto& dir : searched) {
-            std::error_code ec;
-            if (fs::is_regular_file(dir / name, ec)) {
-                found = dir / name;
-                break;
+        if (!generated) {
+            std::vector<fs::path> searched;
+            // A generated includer has no folder; "." would search the working directory, which the kit never does.
+            if (!generated_.count(includer))
+                searched.push_back(display_path(fs::path(out_.files[static_cast<std::size_t>(includer)]).parent_path()));
+            searched.insert(searched.end(), options_.include_dirs.begin(), options_.include_dirs.end());
+            for (const auto& dir : searched) {
+                std::error_code ec;
+                if (fs::is_regular_file(dir / name, ec)) {
+                    found = dir / name;
+                    break;
+                }
+            }
+            if (found.empty()) {
+                std::vector<fs::path> shown;
+                for (const auto& file : options_.generated) shown.push_back(generated_file_label(file.name));
+                shown.insert(shown.end(), searched.begin(), searched.end());
+                throw Error(at + ": cannot find include \"" + name + "\" (searched: " + join_paths(shown) + ")");
             }
         }
-        if (found.empty())
-            throw Error(at + ": cannot find include \"" + name + "\" (searched: " + join_paths(searched) + ")");
 
-        const fs::path identity = identity_of(found);
+        const fs::path identity = generated ? fs::path(generated_file_label(name)) : identity_of(found);
         if (once_.count(identity)) {
             out_.text += "\n";  // stands in for the #include line
             return;
@@ -287,7 +329,7 @@ private:
             for (int open : stack_) chain += out_.files[static_cast<std::size_t>(open)] + " -> ";
             throw Error(at + ": include cycle: " + chain + out_.files[static_cast<std::size_t>(it->second)]);
         }
-        const int child = load(found);
+        const int child = generated ? load_generated(*generated) : load(found);
         if (child < 0) throw Error(at + ": cannot open include file '" + found.string() + "'");
         expand(child);
         out_.text += line_directive(line_number + 1, includer);
@@ -303,6 +345,7 @@ private:
     std::map<int, fs::path> identities_;
     std::map<int, std::vector<std::string>> raw_lines_;
     std::set<fs::path> once_;
+    std::set<int> generated_;  // source-string numbers of generated files
     std::vector<int> stack_;
 };
 
@@ -332,6 +375,8 @@ std::optional<LogLocation> parse_log_line(const std::string& line) {
 }
 
 }  // namespace
+
+std::string generated_file_label(const std::string& name) { return "<generated " + name + ">"; }
 
 std::string ShaderSource::file_line_text(int source_string, int line) const {
     if (source_string < 0 || static_cast<std::size_t>(source_string) >= lines.size()) return "";

@@ -15,6 +15,13 @@ struct ShaderDefine {
     std::string value;
 };
 
+// A file that exists only in memory: GLSL glue the C++ side writes for one configuration (lab 06's
+// rc_config.glsl), so the compiled shader holds only what that configuration uses.
+struct GeneratedFile {
+    std::string name;  // exactly as #include names it: "rc_config.glsl"
+    std::string text;
+};
+
 struct PreprocessOptions {
     Profile profile = Profile::Core;
     GlVersion version{4, 1};
@@ -22,16 +29,23 @@ struct PreprocessOptions {
     std::vector<std::filesystem::path> include_dirs;  // searched in order AFTER the including file's own directory
     std::vector<ShaderDefine> defines;                // injected in order, after the built-in defines, before the prelude
     bool with_prelude = true;
+    // Found by exact name BEFORE any folder. A generated file has no folder of its own, so its #includes
+    // search the generated files and then include_dirs; and no timestamp, so it is not a dependency:
+    // whoever changes its text rebuilds the program (ShaderLibrary::set_generated).
+    std::vector<GeneratedFile> generated;
 };
 
 // Name of files[0]: the #version line and defines the kit writes are source string 0, so a driver
 // complaint about them (an unsupported #version, a clashing define) is not blamed on the lab's file.
 inline constexpr const char* kGeneratedHeaderName = "<generated header>";
+// What messages, #line maps and translated logs call a generated file: "<generated rc_config.glsl>".
+std::string generated_file_label(const std::string& name);
 
 struct ShaderSource {
     std::string text;                                 // ready for glShaderSource
     std::vector<std::string> files;                   // index = GLSL source-string number used in #line
-    std::vector<std::filesystem::path> dependencies;  // every file read (main, prelude, includes), for hot reload
+    std::vector<std::filesystem::path> dependencies;  // every file read (main, prelude, includes), for hot reload;
+                                                      // generated files are not read, so not listed
     int main_file_index = 0;
     // lines[i] holds files[i]'s lines without their line endings; kept so logs can quote the source.
     std::vector<std::vector<std::string>> lines;

@@ -1,0 +1,29 @@
+// Lab 06, compositing module: direct volume rendering, front to back. Calls the RC_CLASSIFY, RC_GRADIENT
+// and RC_SHADE placeholders, which must be defined before this file is included.
+#pragma once
+#include "raycast_common.glsl"
+
+// The segment length the transfer function's opacities are meant for. A sample stands for a segment of
+// ray.step; its opacity is corrected to alpha' = 1 - (1 - alpha)^(step / reference), so the image does
+// not darken as the step shrinks. Equal to the step: no correction.
+uniform float uReferenceStepSize;
+// Stop once the accumulated opacity reaches this: what lies behind adds at most 1 - threshold. 1 keeps
+// every ray going to its exit, and so does 0 (unset), which would otherwise stop every ray at once.
+uniform float uEarlyRayThreshold;
+
+void rcCompositeDvr(inout RcState s, RcRay ray, float t, float intensity) {
+    vec4 color = RC_CLASSIFY(intensity);
+    // A transparent sample adds nothing: skip its gradient and shading (empty space is most samples).
+    if (color.a <= 0.0) return;
+    vec3 p = rcPosition(ray, t);
+    color.rgb = RC_SHADE(color.rgb, RC_GRADIENT(p), p);
+    // Unset (0) reference: no correction rather than an infinite exponent.
+    float exponent = uReferenceStepSize > 0.0 ? ray.step / uReferenceStepSize : 1.0;
+    float alpha = 1.0 - pow(1.0 - min(color.a, 1.0), exponent);
+    if (s.hitT < 0.0) s.hitT = t;
+    s.color += (1.0 - s.color.a) * vec4(alpha * color.rgb, alpha);
+}
+
+bool rcTerminateDvr(RcState s) { return uEarlyRayThreshold > 0.0 && s.color.a >= uEarlyRayThreshold; }
+
+vec4 rcFinishDvr(RcState s) { return s.color; }

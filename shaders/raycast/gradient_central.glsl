@@ -1,0 +1,15 @@
+// Lab 06, gradient module: central differences, (v(x + h) - v(x - h)) / (2 spacing) per axis.
+// Six lookups; second-order accurate. Matches gsv::central_difference at step 1.
+#pragma once
+#include "volume_geometry.glsl"
+
+vec3 rcGradientCentral(vec3 p) {
+    vec3 h = rcVoxelStep();
+    vec3 ahead = vec3(texture(uVolume, p + vec3(h.x, 0.0, 0.0)).r,
+                      texture(uVolume, p + vec3(0.0, h.y, 0.0)).r,
+                      texture(uVolume, p + vec3(0.0, 0.0, h.z)).r);
+    vec3 behind = vec3(texture(uVolume, p - vec3(h.x, 0.0, 0.0)).r,
+                       texture(uVolume, p - vec3(0.0, h.y, 0.0)).r,
+                       texture(uVolume, p - vec3(0.0, 0.0, h.z)).r);
+    return (ahead - behind) / (2.0 * rcVoxelSpacing());
+}
