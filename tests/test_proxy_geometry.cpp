@@ -1,6 +1,7 @@
 // The raycaster's proxy geometry (common/proxy_geometry.h), its clipper (common/convex_polyhedron.h), the
 // texture-to-model map (common/volume_box.h) and the exact ray reference (common/proxy_ray.h).
 #include "catch.hpp"
+#include "test_support.h"
 
 #include "common/convex_polyhedron.h"
 #include "common/error.h"
@@ -26,14 +27,7 @@ using gsv::ProxyGeometry;
 
 namespace {
 
-std::string error_message(const std::function<void()>& action) {
-    try {
-        action();
-    } catch (const gsv::Error& error) {
-        return error.what();
-    }
-    return "(no gsv::Error thrown)";
-}
+std::string error_message(const std::function<void()>& action) { return gsv::test::gsv_error_message(action); }
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 

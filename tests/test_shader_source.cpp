@@ -32,19 +32,10 @@ PreprocessOptions bare_options(GlVersion version = {4, 1}, Profile profile = Pro
 }
 
 std::string error_of(const fs::path& main_file, const PreprocessOptions& options) {
-    try {
-        gsv::preprocess_shader(main_file, options);
-    } catch (const gsv::Error& e) {
-        return e.what();
-    }
-    return "(no error thrown)";
+    return gsv::test::gsv_error_message([&] { gsv::preprocess_shader(main_file, options); });
 }
 
-std::size_t count_of(const std::string& haystack, const std::string& needle) {
-    std::size_t count = 0;
-    for (auto at = haystack.find(needle); at != std::string::npos; at = haystack.find(needle, at + 1)) ++count;
-    return count;
-}
+using gsv::test::count_of;
 
 fs::path kit_shaders_dir() {
 #ifdef GSV_SOURCE_ROOT

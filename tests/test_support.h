@@ -60,4 +60,11 @@ std::string gsv_error_message(Action&& action) {
     return "<no gsv::Error thrown>";
 }
 
+// How many times `needle` occurs in `haystack`, overlaps included.
+inline std::size_t count_of(const std::string& haystack, const std::string& needle) {
+    std::size_t count = 0;
+    for (auto at = haystack.find(needle); at != std::string::npos; at = haystack.find(needle, at + 1)) ++count;
+    return count;
+}
+
 }  // namespace gsv::test
