@@ -28,14 +28,9 @@ gsv::ParticleSet subset(const gsv::ParticleSet& all, const std::vector<std::size
     return out;
 }
 
+// Median seconds of `work` (bracketed by glFinish, which costs the CPU's work nothing).
 double median_seconds(const std::function<void()>& work, int repeats) {
-    std::vector<double> ms;
-    for (int i = 0; i < repeats; ++i) {
-        const double t0 = gsv::now_seconds();
-        work();
-        ms.push_back(1000.0 * (gsv::now_seconds() - t0));
-    }
-    return gsv::summarize(ms).median_ms / 1000.0;
+    return gsv::time_frames(work, 0, repeats).median_ms / 1000.0;
 }
 
 // Bytes per second a buffer-to-buffer copy moves on this GPU (read and write counted): the speed limit of a
@@ -49,10 +44,8 @@ double gpu_copy_bandwidth() {
         glBindBuffer(GL_COPY_WRITE_BUFFER, to.id());
         auto copy = [&] {
             glCopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0, static_cast<GLsizeiptr>(bytes));
-            glFinish();
         };
-        copy();
-        return 2.0 * static_cast<double>(bytes) / median_seconds(copy, 5);
+        return 2.0 * static_cast<double>(bytes) / gsv::time_frames(copy, 1, 5).median_ms * 1000.0;
     }();
     return bytes_per_second;
 }
@@ -107,7 +100,7 @@ gsv::SweepMetrics measure(gsv::LabKit& kit, const Stepper& stepper, const gsv::P
     stepper.run(2, hf);
     glFinish();
     const int batch = 4;
-    const double gpu_step_s = median_seconds([&] { stepper.run(batch, hf); glFinish(); }, 5) / batch;
+    const double gpu_step_s = median_seconds([&] { stepper.run(batch, hf); }, 5) / batch;
     gsv::ParticleSet cpu_set = initial;
     const double cpu_step_s = median_seconds([&] { gsv::advance_cpu(cpu_set, count, spec, 1); }, 3);
     const double gpu_rate = static_cast<double>(count) / gpu_step_s;
