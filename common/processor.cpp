@@ -8,18 +8,6 @@
 namespace gsv {
 namespace {
 
-std::vector<std::string> port_names(const std::vector<Port>& ports) {
-    std::vector<std::string> names;
-    for (const Port& p : ports) names.push_back(p.name);
-    return names;
-}
-
-std::string list_or_none(const std::vector<std::string>& names) {
-    std::string out;
-    for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
-    return out.empty() ? "none" : out;
-}
-
 const Port* find_port(const std::vector<Port>& ports, const std::string& name) {
     for (const Port& p : ports)
         if (p.name == name) return &p;
@@ -45,6 +33,18 @@ const char* run_state_name(RunState state) {
     case RunState::Skipped: return "skipped";
     }
     return "?";
+}
+
+std::vector<std::string> port_names(const std::vector<Port>& ports) {
+    std::vector<std::string> names;
+    for (const Port& p : ports) names.push_back(p.name);
+    return names;
+}
+
+std::string list_or_none(const std::vector<std::string>& names) {
+    std::string out;
+    for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
+    return out.empty() ? "none" : out;
 }
 
 bool is_network_name(const std::string& name) {

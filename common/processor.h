@@ -149,5 +149,8 @@ bool is_network_name(const std::string& name);
 
 // "a", "a and b", "a, b and c": lists in one-line messages.
 std::string join_names(const std::vector<std::string>& names);
+// "a, b, c", or "none": the known names an error lists beside an unknown one.
+std::string list_or_none(const std::vector<std::string>& names);
+std::vector<std::string> port_names(const std::vector<Port>& ports);
 
 }  // namespace gsv

@@ -10,18 +10,6 @@
 namespace gsv {
 namespace {
 
-std::string comma_list(const std::vector<std::string>& names) {
-    std::string out;
-    for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
-    return out.empty() ? "none" : out;
-}
-
-std::vector<std::string> port_names(const std::vector<Port>& ports) {
-    std::vector<std::string> names;
-    for (const Port& p : ports) names.push_back(p.name);
-    return names;
-}
-
 void add_unique(std::vector<std::string>& names, const std::string& name) {
     if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
 }
@@ -69,7 +57,7 @@ Processor* Network::find(const std::string& name) const {
 
 Processor& Network::processor(const std::string& name) const {
     if (Processor* p = find(name)) return *p;
-    throw Error("no processor named '" + name + "' (the network has: " + comma_list(processor_names()) + ")");
+    throw Error("no processor named '" + name + "' (the network has: " + list_or_none(processor_names()) + ")");
 }
 
 Processor& Network::add(const std::string& name, std::unique_ptr<Processor> processor) {
@@ -122,7 +110,7 @@ void Network::connect(const std::string& from_text, const std::string& to_text) 
     auto owner = [&](const PortRef& ref) -> Processor& {
         if (Processor* p = find(ref.processor)) return *p;
         throw Error(what + "no processor named '" + ref.processor + "' (the network has: " +
-                    comma_list(processor_names()) + ")");
+                    list_or_none(processor_names()) + ")");
     };
     Processor& source = owner(from);
     Processor& target = owner(to);
@@ -132,13 +120,13 @@ void Network::connect(const std::string& from_text, const std::string& to_text) 
         throw Error(what + from.text() + " is an input; a connection runs from an output to an input");
     if (!out)
         throw Error(what + source.describe() + " has no output '" + from.port + "' (its outputs: " +
-                    comma_list(port_names(source.outputs())) + ")");
+                    list_or_none(port_names(source.outputs())) + ")");
     const Port* in = target.find_input(to.port);
     if (!in && target.find_output(to.port))
         throw Error(what + to.text() + " is an output; a connection runs from an output to an input");
     if (!in)
         throw Error(what + target.describe() + " has no input '" + to.port + "' (its inputs: " +
-                    comma_list(port_names(target.inputs())) + ")");
+                    list_or_none(port_names(target.inputs())) + ")");
 
     if (out->type != in->type)
         throw Error(what + from.text() + " is a " + port_type_name(out->type) + " output, " + to.text() + " a " +
