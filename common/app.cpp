@@ -33,10 +33,10 @@ const ShaderProgram& LabKit::use(const ShaderLibrary::Entry& entry) const {
     return program;
 }
 
-void add_orbit_camera(Params& params, float yaw, float pitch, float distance) {
+void add_orbit_camera(Params& params, float yaw, float pitch, float distance, float min_distance) {
     params.add_float("camera_yaw", yaw, -360, 360, "camera azimuth in degrees (drag the mouse)").with_step(5);
     params.add_float("camera_pitch", pitch, -89, 89, "camera elevation in degrees (drag the mouse)").with_step(5);
-    params.add_float("camera_distance", distance, 1.2, 20, "camera distance from the origin (scroll)").with_step(0.1);
+    params.add_float("camera_distance", distance, min_distance, 20, "camera distance from the origin (scroll)").with_step(0.1);
 }
 
 OrbitCamera orbit_camera(const Params& params) {

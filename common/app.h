@@ -9,6 +9,7 @@
 #include "common/shader_library.h"
 #include "common/transforms.h"
 
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <string>
@@ -55,6 +56,9 @@ public:
     virtual void params_changed(LabKit&) {}
     // The settings of the converged reference a sweep measures error against; empty: the knob's last value.
     virtual std::vector<std::string> sweep_reference() const { return {}; }
+    // True: each curve of the series is measured against the reference drawn with its own series value
+    // (lab 06: an isosurface against an isosurface, not against DVR). False: one reference for all curves.
+    virtual bool sweep_reference_per_series() const { return false; }
     // Lab-specific error columns for a sweep, measured at the current settings.
     virtual SweepMetrics sweep_metrics(LabKit&, const Frame&) { return {}; }
     // The error the sweep's plot shows: one of sweep_metrics' columns, where the image's RMSE against the
@@ -62,6 +66,9 @@ public:
     virtual std::string sweep_error_column() const { return {}; }
     // What render mode writes beside the image for the grader to compare with the reference's; most labs none.
     virtual std::vector<DataArray> readback(LabKit&) { return {}; }
+    // Visual debugging: the intermediate images of the last frame (lab 06: every port of its network), written
+    // into `folder` (created); returns the files. Called by `render --debug-images` and by window screenshots.
+    virtual std::vector<std::filesystem::path> write_debug_images(LabKit&, const std::filesystem::path&) { return {}; }
 };
 
 // What a lab gets from the framework.
@@ -96,7 +103,9 @@ private:
 
 // Declares the camera parameters (camera_yaw, camera_pitch, camera_distance) that window mode drives with
 // the mouse and that cases and hidden grader cases set.
-void add_orbit_camera(Params& params, float yaw, float pitch, float distance);
+// min_distance: how close the camera may come; the default keeps it outside the unit sphere the labs
+// frame, and lab 06 lets it into the volume.
+void add_orbit_camera(Params& params, float yaw, float pitch, float distance, float min_distance = 1.2f);
 OrbitCamera orbit_camera(const Params& params);
 
 // Exit statuses shared by every lab binary (the grader tells failure classes apart by them).

@@ -100,6 +100,9 @@ int run_render(Session& s) {
     const std::vector<DataArray> arrays = s.options.arrays ? s.lab->readback(*s.kit) : std::vector<DataArray>{};
     check_gl_error("reading back the lab's arrays");
     const Json listed = write_arrays(arrays, png);
+    std::vector<std::filesystem::path> debug_images;
+    if (s.options.debug_images)
+        debug_images = s.lab->write_debug_images(*s.kit, std::filesystem::path(png).replace_extension().string() + "-debug");
 
     Json report = Json::object();
     report["lab"] = s.info.id;
@@ -120,6 +123,7 @@ int run_render(Session& s) {
 
     std::printf("%s: wrote %s (%dx%d), median %.2f ms/frame over %d frames\n", s.info.id.c_str(), png.c_str(), width,
                 height, timing.median_ms, timing.frames);
+    for (const auto& file : debug_images) std::printf("%s: wrote %s\n", s.info.id.c_str(), file.string().c_str());
     for (const auto& a : arrays)
         std::printf("%s: wrote %s (%zu x %d floats)\n", s.info.id.c_str(), data_array_path(png, a.name).string().c_str(),
                     a.count(), a.components);

@@ -85,7 +85,14 @@ int run_sweep(Session& s) {
     // The lab's reference belongs to its own knob; another knob converges at its last value.
     std::vector<std::string> reference_settings = axis.lab_knob ? s.lab->sweep_reference() : std::vector<std::string>{};
     if (reference_settings.empty()) reference_settings.push_back(knob_name + "=" + knob_values.back());
-    const Image reference = render_with(reference_settings, 1).image;
+    std::vector<Image> references;  // one, or one per series value
+    const bool per_series = s.lab->sweep_reference_per_series() && !series_name.empty();
+    for (const auto& series_value : per_series ? series_values : std::vector<std::string>{""}) {
+        std::vector<std::string> settings = reference_settings;
+        if (per_series) settings.push_back(series_name + "=" + series_value);
+        references.push_back(render_with(settings, 1).image);
+    }
+    if (per_series) reference_settings.push_back(series_name + "=<each curve's>");
 
     SweepReport report;
     report.lab = s.info.id;
@@ -96,7 +103,9 @@ int run_sweep(Session& s) {
     report.width = width;
     report.height = height;
     report.plotted_error = s.lab->sweep_error_column();
-    for (const auto& series_value : series_values) {
+    for (std::size_t curve = 0; curve < series_values.size(); ++curve) {
+        const std::string& series_value = series_values[curve];
+        const Image& reference = references[per_series ? curve : 0];
         for (const auto& knob_value : knob_values) {
             std::vector<std::string> settings{knob_name + "=" + knob_value};
             if (!series_name.empty()) settings.push_back(series_name + "=" + series_value);

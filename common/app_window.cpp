@@ -253,6 +253,9 @@ int run_window(Session& s) {
                 path = s.info.id + "-screenshot-" + std::to_string(screenshot_count) + ".png";
             write_png(path, shot);
             std::printf("wrote %s\n", path.c_str());
+            const auto debug = std::filesystem::path(path).replace_extension().string() + "-debug";
+            for (const auto& file : s.lab->write_debug_images(*s.kit, debug)) std::printf("wrote %s\n", file.string().c_str());
+            Framebuffer::bind_default(width, height);  // the debug images bound their own targets
             std::fflush(stdout);
             ++screenshot_count;
             input.screenshot = false;

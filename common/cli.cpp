@@ -71,6 +71,7 @@ CliOptions parse_cli(int argc, const char* const* argv) {
         } else if (arg == "--out" || arg == "-o") o.out = next();
         else if (arg == "--json") o.json = next();
         else if (arg == "--arrays") o.arrays = true;
+        else if (arg == "--debug-images") o.debug_images = true;
         else if (arg == "--out-dir") o.out_dir = next();
         else if (arg == "--count") o.count = parse_count(arg, next(), 1, 9999);
         else if (arg == "--fps") {
@@ -125,6 +126,8 @@ std::string cli_usage(const std::string& program) {
            "  --frames N          timed frames (median reported); --warmup N untimed frames first\n"
            "  --arrays            render: also write the numbers the lab hands the grader beside the image\n"
            "                      (lab 05: every particle's position and velocity, <png stem>.<name>.f32)\n"
+           "  --debug-images      render: also the lab's intermediate images into <png stem>-debug/ (lab 06: every\n"
+           "                      port of its network); in a window, S writes them beside each screenshot\n"
            "  --backend B         egl (headless default), osmesa (where built), window\n"
            "  --profile P         core (default) or compat: the seeds' gl_ModelViewProjectionMatrix, gl_Vertex...\n"
            "  --gl X.Y            the OpenGL version to hold to (default: what the lab needs, at least 4.1)\n"

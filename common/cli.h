@@ -21,6 +21,7 @@ struct CliOptions {
     std::string out;                     // render: PNG path; window: screenshot path
     std::string json;                    // render: JSON path (default: the PNG's with .json)
     bool arrays = false;                 // render: also the numbers the lab hands the grader (--arrays)
+    bool debug_images = false;           // render: also the lab's intermediate images (--debug-images)
     std::string out_dir;                 // sweep: folder for CSV and plot; animate: for frames and APNG
     std::string knob;                    // sweep: another parameter than the lab's accuracy knob...
     std::vector<std::string> values;     // ...through these values (--values a,b,c), least accurate first

@@ -17,6 +17,7 @@ Framebuffer::Framebuffer(int width, int height, ColorFormat format, bool with_de
     name_ = FramebufferName(fbo);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_.id(), 0);
+    with_depth_ = with_depth;
     if (with_depth) {
         GLuint rbo = 0;
         glGenRenderbuffers(1, &rbo);
@@ -57,6 +58,19 @@ ImageF Framebuffer::read_rgba32f() const {
     check_gl_error("reading back a float framebuffer");
     flip_rows(image);
     return image;
+}
+
+std::vector<float> Framebuffer::read_depth() const {
+    if (!with_depth_) throw Error("this framebuffer has no depth buffer to read");
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, name_.get());
+    std::vector<float> depth(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_));
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, width_, height_, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+    check_gl_error("reading back a depth buffer");
+    const std::size_t row = static_cast<std::size_t>(width_);
+    for (int y = 0; y < height_ / 2; ++y)
+        std::swap_ranges(depth.begin() + y * row, depth.begin() + (y + 1) * row, depth.begin() + (height_ - 1 - y) * row);
+    return depth;
 }
 
 Image read_current_framebuffer(int width, int height) {

@@ -5,6 +5,8 @@
 #include "common/image.h"
 #include "common/texture.h"
 
+#include <vector>
+
 namespace gsv {
 
 enum class ColorFormat { RGBA8, RGBA32F };
@@ -20,16 +22,21 @@ public:
     int height() const { return height_; }
     ColorFormat format() const { return format_; }
     const Texture& color() const { return color_; }
+    GLuint id() const { return name_.get(); }  // for glBlitFramebuffer
 
     // Readbacks return row 0 = top (GL's row 0 is the bottom) and tightly packed rows.
     Image read_rgba8() const;
     ImageF read_rgba32f() const;
+    // The depth buffer, width * height values in [0, 1], row 0 = top. Throws gsv::Error for a target made
+    // without depth.
+    std::vector<float> read_depth() const;
 
 private:
     FramebufferName name_;
     Texture color_;
     RenderbufferName depth_;
     int width_ = 0, height_ = 0;
+    bool with_depth_ = false;
     ColorFormat format_ = ColorFormat::RGBA8;
 };
 

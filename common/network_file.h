@@ -2,7 +2,7 @@
 // Lab 06's networks as text, one statement a line, so a visualization can be changed without recompiling:
 //
 //   # a DVR of the MRI head
-//   processor VolumeSource source file=data/volumes/anatomical.nii
+//   processor VolumeSource source volume=file volume_file=volumes/anatomical.nii
 //   processor RayTraversal raycaster compositing=dvr shading=phong
 //   connect source.volume -> raycaster.volume
 //

@@ -1,5 +1,5 @@
 #pragma once
-// A processor of lab 06's data-flow network, after Voreen (Meyer-Spradow et al., IEEE CG&A 2009): one step
+// A processor of lab 06's data-flow network, after Voreen (Meyer-Spradow et al., GRAPP 2010; IEEE CG&A 2009): one step
 // of a visualization (read a volume, draw its proxy geometry, cast the rays) with typed input and output
 // ports and named string properties. A processor never sees the network: the network fills its inputs
 // from the outputs they are connected to, calls process() in dependency order, and remembers how it went.

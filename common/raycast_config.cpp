@@ -11,30 +11,30 @@ using Config = RaycastConfig;
 // module is left out and its placeholder gets the no-op.
 struct Module {
     const char* name;
-    const char* file;      // under shaders/, as the generated header includes it
+    const char* file;      // in the lab folder (an include dir), as the generated header includes it
     const char* function;  // what the placeholder expands to
 };
 
 const Module kGradients[] = {
     {"none", "", ""},
-    {"forward", "raycast/gradient_forward.glsl", "rcGradientForward"},
-    {"central", "raycast/gradient_central.glsl", "rcGradientCentral"},
-    {"precomputed", "raycast/gradient_precomputed.glsl", "rcGradientPrecomputed"},
+    {"forward", "gradient_forward.glsl", "rcGradientForward"},
+    {"central", "gradient_central.glsl", "rcGradientCentral"},
+    {"precomputed", "gradient_precomputed.glsl", "rcGradientPrecomputed"},
 };
 const Module kClassifications[] = {
-    {"raw", "raycast/classify_raw.glsl", "rcClassifyRaw"},
-    {"tf", "raycast/classify_tf.glsl", "rcClassifyTf"},
+    {"raw", "classify_raw.glsl", "rcClassifyRaw"},
+    {"tf", "classify_tf.glsl", "rcClassifyTf"},
 };
 const Module kShadings[] = {
     {"none", "", ""},
-    {"phong", "raycast/shade_phong.glsl", "rcShadePhong"},
+    {"phong", "shade_phong.glsl", "rcShadePhong"},
 };
 // A compositing module has three functions: rcComposite<X>, rcTerminate<X>, rcFinish<X>.
 const Module kCompositings[] = {
-    {"dvr", "raycast/composite_dvr.glsl", "Dvr"},
-    {"mip", "raycast/composite_mip.glsl", "Mip"},
-    {"iso", "raycast/composite_iso.glsl", "Iso"},
-    {"fhp", "raycast/composite_fhp.glsl", "Fhp"},
+    {"dvr", "composite_dvr.glsl", "Dvr"},
+    {"mip", "composite_mip.glsl", "Mip"},
+    {"iso", "composite_iso.glsl", "Iso"},
+    {"fhp", "composite_fhp.glsl", "Fhp"},
 };
 
 template <class E, std::size_t N>

@@ -1,5 +1,5 @@
 #pragma once
-// Lab 06's ray caster is one skeleton (shaders/raycast/raycast.frag) with placeholders, the RC_* macros,
+// Lab 06's ray caster is one skeleton (solutions/lab06_raycasting/raycast.frag) with placeholders, the RC_* macros,
 // filled at compile time with the modules one configuration needs. This names a configuration and writes
 // the generated include file, rc_config.glsl, that fills the placeholders: the compiled shader then holds
 // only what the configuration uses. A uniform `if` per module (raycast_uber.frag) ran several times

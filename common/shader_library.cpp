@@ -18,7 +18,14 @@ std::filesystem::file_time_type stamp_of(const std::filesystem::path& p) {
 void ShaderLibrary::build(Entry& entry, const PreprocessOptions& base, const std::vector<ShaderDefine>& defines) {
     PreprocessOptions options = base;
     options.defines.insert(options.defines.end(), defines.begin(), defines.end());
-    ShaderProgram program = ShaderProgram::build(entry.spec_, options);
+    ShaderProgram program;
+    try {
+        program = ShaderProgram::build(entry.spec_, options);
+    } catch (const Error& e) {
+        entry.error_ = e.what();
+        throw;
+    }
+    entry.error_.clear();
     entry.stamps_.clear();
     for (const auto& dependency : program.dependencies()) entry.stamps_.emplace_back(dependency, stamp_of(dependency));
     entry.program_ = std::move(program);

@@ -18,11 +18,16 @@ public:
     public:
         const ShaderProgram& program() const { return program_; }
         const ProgramSpec& spec() const { return spec_; }
+        // Why the last rebuild failed (hot reload, new defines, new generated files), while the last good
+        // program keeps running; empty when the program is up to date. Lets a lab show the error on what
+        // owns the program (lab 06: the processor) rather than only in the window's status line.
+        const std::string& error() const { return error_; }
 
     private:
         friend class ShaderLibrary;
         ProgramSpec spec_;
         ShaderProgram program_;
+        std::string error_;
         std::vector<std::pair<std::filesystem::path, std::filesystem::file_time_type>> stamps_;
     };
 

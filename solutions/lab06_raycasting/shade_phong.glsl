@@ -1,6 +1,7 @@
 // Lab 06, shading module: Phong's ambient + diffuse + specular with the normal taken from the gradient.
 #pragma once
 #include "gsv/math.glsl"
+#include "gsv/not_done.glsl"
 #include "volume_geometry.glsl"
 
 uniform vec3 uLightPosition;   // in volume texture coordinates (outside [0, 1]^3 is fine)
@@ -12,6 +13,11 @@ uniform float uShininess;      // the Phong exponent
 
 // color: the classified colour (straight); gradient: in physical units; p: the sample's position.
 vec3 rcShadePhong(vec3 color, vec3 gradient, vec3 p) {
+    // TODO(L06-T2): Phong: ambient + diffuse times the colour, plus a white highlight. The normal is the
+    // gradient reversed and normalised; where the gradient is 0 (a constant region) keep only the ambient
+    // term, never NaN. Measure angles in physical units (rcPhysicalScale()), and light the side that
+    // faces the camera.
+//@solution L06-T2
     // The normal points down the gradient, out of the denser material. A constant region has no
     // gradient: a zero normal, so only ambient light, where normalize() would give NaN.
     vec3 n = -safe_normalize(gradient, vec3(0.0));
@@ -26,4 +32,7 @@ vec3 rcShadePhong(vec3 color, vec3 gradient, vec3 p) {
     // pow(0, e) is undefined for e <= 0: no highlight without light or without a reflection to see.
     float specular = diffuse > 0.0 && rv > 0.0 ? pow(rv, max(uShininess, 0.0)) : 0.0;
     return color * (uAmbient + uDiffuse * diffuse) + vec3(uSpecular * specular);
+//@starter
+//    return kNotDone;
+//@end
 }

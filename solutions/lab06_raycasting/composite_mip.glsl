@@ -1,20 +1,31 @@
 // Lab 06, compositing module: maximum intensity projection. The largest intensity along the ray is
 // classified once, at the end, so MIP needs neither gradient nor shading nor a lookup per sample.
 #pragma once
+#include "gsv/not_done.glsl"
 #include "raycast_common.glsl"
 
 void rcCompositeMip(inout RcState s, RcRay ray, float t, float intensity) {
+    // TODO(L06-T4): keep the largest intensity (s.value) and the t where it was (s.hitT, for the depth).
+//@solution L06-T4
     if (s.hitT < 0.0 || intensity > s.value) {
         s.value = intensity;
         s.hitT = t;  // the depth written is the maximum's
     }
+//@starter
+//    s.hitT = t;
+//@end
 }
 
 // The maximum can come last: a MIP ray always runs to its exit.
 bool rcTerminateMip(RcState s) { return false; }
 
 vec4 rcFinishMip(RcState s) {
+    // TODO(L06-T4): classify the maximum once, and return it premultiplied by its opacity.
+//@solution L06-T4
     vec4 color = RC_CLASSIFY(s.value);
     float alpha = clamp(color.a, 0.0, 1.0);
     return vec4(alpha * color.rgb, alpha);
+//@starter
+//    return vec4(kNotDone, 1.0);
+//@end
 }

@@ -1,6 +1,7 @@
 // Lab 06, compositing module: direct volume rendering, front to back. Calls the RC_CLASSIFY, RC_GRADIENT
 // and RC_SHADE placeholders, which must be defined before this file is included.
 #pragma once
+#include "gsv/not_done.glsl"
 #include "raycast_common.glsl"
 
 // The segment length the transfer function's opacities are meant for. A sample stands for a segment of
@@ -12,6 +13,11 @@ uniform float uReferenceStepSize;
 uniform float uEarlyRayThreshold;
 
 void rcCompositeDvr(inout RcState s, RcRay ray, float t, float intensity) {
+    // TODO(L06-T3): classify the sample; skip it if transparent; shade it (RC_SHADE with RC_GRADIENT at
+    // its position); correct its opacity for the step, alpha' = 1 - (1 - alpha)^(ray.step /
+    // uReferenceStepSize), with no correction when the reference is 0; remember the first visible sample's
+    // t in s.hitT; and blend it front to back under what the ray has gathered (premultiplied).
+//@solution L06-T3
     vec4 color = RC_CLASSIFY(intensity);
     // A transparent sample adds nothing: skip its gradient and shading (empty space is most samples).
     if (color.a <= 0.0) return;
@@ -22,8 +28,19 @@ void rcCompositeDvr(inout RcState s, RcRay ray, float t, float intensity) {
     float alpha = 1.0 - pow(1.0 - min(color.a, 1.0), exponent);
     if (s.hitT < 0.0) s.hitT = t;
     s.color += (1.0 - s.color.a) * vec4(alpha * color.rgb, alpha);
+//@starter
+//    s.color = vec4(kNotDone, 1.0);
+//    if (s.hitT < 0.0) s.hitT = t;
+//@end
 }
 
-bool rcTerminateDvr(RcState s) { return uEarlyRayThreshold > 0.0 && s.color.a >= uEarlyRayThreshold; }
+bool rcTerminateDvr(RcState s) {
+    // TODO(L06-T3): early ray termination: stop once the ray is uEarlyRayThreshold opaque (0: never).
+//@solution L06-T3
+    return uEarlyRayThreshold > 0.0 && s.color.a >= uEarlyRayThreshold;
+//@starter
+//    return false;
+//@end
+}
 
 vec4 rcFinishDvr(RcState s) { return s.color; }

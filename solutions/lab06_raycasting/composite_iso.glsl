@@ -1,6 +1,7 @@
 // Lab 06, compositing module: the isosurface v = uIsoValue, as an opaque shaded surface. Calls the
 // RC_CLASSIFY, RC_GRADIENT and RC_SHADE placeholders, which must be defined before this file is included.
 #pragma once
+#include "gsv/not_done.glsl"
 #include "raycast_common.glsl"
 
 uniform float uIsoValue;
@@ -9,6 +10,11 @@ uniform float uIsoValue;
 // sample before was outside, the crossing lies between the two, where their linear interpolation reaches
 // uIsoValue; a ray that starts inside (a cut through the object) is hit at its first sample.
 void rcCompositeIso(inout RcState s, RcRay ray, float t, float intensity) {
+    // TODO(L06-T5): the first sample at or above uIsoValue is a hit. Between it and the sample before
+    // (s.value, if there was one) place the hit where their linear interpolation reaches uIsoValue, never
+    // dividing 0 by 0; classify uIsoValue, shade it there, opaque, and record s.hitT. Below the value,
+    // remember the sample in s.value for the next call.
+//@solution L06-T5
     if (intensity < uIsoValue) {
         s.value = intensity;  // the previous sample for the next call
         return;
@@ -26,6 +32,10 @@ void rcCompositeIso(inout RcState s, RcRay ray, float t, float intensity) {
     vec4 color = RC_CLASSIFY(uIsoValue);
     s.color = vec4(RC_SHADE(color.rgb, RC_GRADIENT(p), p), 1.0);
     s.hitT = hit;
+//@starter
+//    s.color = vec4(kNotDone, 1.0);
+//    s.hitT = t;
+//@end
 }
 
 bool rcTerminateIso(RcState s) { return s.hitT >= 0.0; }

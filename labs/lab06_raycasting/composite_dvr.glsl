@@ -1,0 +1,29 @@
+// Lab 06, compositing module: direct volume rendering, front to back. Calls the RC_CLASSIFY, RC_GRADIENT
+// and RC_SHADE placeholders, which must be defined before this file is included.
+#pragma once
+#include "gsv/not_done.glsl"
+#include "raycast_common.glsl"
+
+// The segment length the transfer function's opacities are meant for. A sample stands for a segment of
+// ray.step; its opacity is corrected to alpha' = 1 - (1 - alpha)^(step / reference), so the image does
+// not darken as the step shrinks. Equal to the step: no correction.
+uniform float uReferenceStepSize;
+// Stop once the accumulated opacity reaches this: what lies behind adds at most 1 - threshold. 1 keeps
+// every ray going to its exit, and so does 0 (unset), which would otherwise stop every ray at once.
+uniform float uEarlyRayThreshold;
+
+void rcCompositeDvr(inout RcState s, RcRay ray, float t, float intensity) {
+    // TODO(L06-T3): classify the sample; skip it if transparent; shade it (RC_SHADE with RC_GRADIENT at
+    // its position); correct its opacity for the step, alpha' = 1 - (1 - alpha)^(ray.step /
+    // uReferenceStepSize), with no correction when the reference is 0; remember the first visible sample's
+    // t in s.hitT; and blend it front to back under what the ray has gathered (premultiplied).
+    s.color = vec4(kNotDone, 1.0);
+    if (s.hitT < 0.0) s.hitT = t;
+}
+
+bool rcTerminateDvr(RcState s) {
+    // TODO(L06-T3): early ray termination: stop once the ray is uEarlyRayThreshold opaque (0: never).
+    return false;
+}
+
+vec4 rcFinishDvr(RcState s) { return s.color; }

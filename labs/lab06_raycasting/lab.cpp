@@ -1,0 +1,208 @@
+// Lab 06: modular GPU volume raycasting, composed only of the modules a scene calls for.
+// Seed: Meyer-Spradow, Ropinski, Mensmann, Hinrichs, "Interactive Design and Debugging of GPU-based Volume
+// Visualizations" (GRAPP 2010), on the Voreen engine (Meyer-Spradow et al., IEEE CG&A 29(6), 2009).
+// The picture comes from a small data-flow network (network.cpp, or a network file): a volume source, its
+// proxy geometry, entry and exit points, the ray traversal and a canvas. The ray traversal is one shader
+// skeleton (raycast.frag) whose placeholders are filled, at compile time, with only the modules chosen:
+// gradient, classification, shading and compositing.
+#include "common/app.h"
+#include "common/error.h"
+#include "common/gl.h"
+#include "common/network_file.h"
+#include "network.h"
+#include "ray_measure.h"
+#include "ray_traversal.h"
+#include "image_processors.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace {
+
+class RaycastLab final : public gsv::Lab {
+public:
+    gsv::LabInfo info() const override { return {"lab06", "Modular GPU volume raycasting", {4, 1}, "the kit's baseline"}; }
+
+    void declare(gsv::Params& p, std::vector<gsv::RenderCase>& cases) override {
+        p.add_file("network", "", "a network file, as typed or one in the lab folder (raycast.network, probe.network); "
+                                  "empty: built in code. Properties the file sets win over these parameters");
+        p.add_bool("probe", false, "an opaque sphere embedded in the volume: rays stop at it (network built in code)");
+        p.add_choice("volume", "marschner_lobb", {"marschner_lobb", "anatomical", "constant", "file"},
+                     "the test signal (exact values known), the MRI head, a constant (zero gradient), or volume_file");
+        p.add_file("volume_file", "", "a NIfTI-1 volume (.nii), with volume=file");
+        p.add_int("ml_size", 41, 8, 256, "voxels per side of the Marschner-Lobb volume");
+        p.add_choice("compositing", "dvr", {"dvr", "mip", "iso", "fhp"},
+                     "direct volume rendering, maximum intensity, isosurface, first hit").series();
+        p.add_choice("gradient", "central", {"none", "forward", "central", "precomputed"}, "how normals are estimated");
+        p.add_choice("classification", "tf", {"raw", "tf"}, "intensity as opacity, or the transfer function");
+        p.add_choice("shading", "phong", {"none", "phong"}, "Phong needs a gradient");
+        p.add_choice("shader", "specialised", {"specialised", "uber", "handwritten"},
+                     "only the chosen modules compiled; all of them chosen by uniforms; DVR written by hand");
+        p.add_choice("transfer_function", "bands", {"grey", "bands", "tissue"}, "the 1D transfer function");
+        p.add_float("samples_per_voxel", 1, 0.05, 32, "samples along a ray per voxel (of the largest side)")
+            .with_step(0.25)
+            .accuracy_knob({"0.25", "0.5", "1", "2", "4"});
+        p.add_bool("opacity_correction", true, "alpha' = 1 - (1 - alpha)^(step / voxel): the image keeps its opacity as the step changes");
+        p.add_float("early_ray_threshold", 0.95, 0, 1, "DVR stops a ray once it is this opaque (1: never)").with_step(0.01);
+        p.add_float("iso_value", 0.5, 0, 1, "the isosurface's value").with_step(0.01);
+        p.add_float("ambient", 0.25, 0, 1, "Phong k_a");
+        p.add_float("diffuse", 0.7, 0, 1, "Phong k_d");
+        p.add_float("specular", 0.3, 0, 1, "Phong k_s");
+        p.add_float("shininess", 24, 1, 256, "Phong exponent").with_step(4);
+        p.add_vec3("clip_normal", {0.0f, 0.0f, 0.0f}, -1, 1, "a clipping plane's normal in texture space (0,0,0: none)");
+        p.add_float("clip_offset", 0, -1, 1, "keeps dot(n, t - centre) <= offset |n|").with_step(0.05);
+        p.add_vec3("probe_position", {0.3f, -0.2f, 0.4f}, -1.5, 1.5, "the probe's centre (model space, the box's largest side 2)");
+        p.add_float("probe_radius", 0.25, 0.02, 1, "the probe's radius (model units)").with_step(0.02);
+        p.add_vec3("background", {0.08f, 0.09f, 0.12f}, 0, 1, "the canvas behind everything");
+        p.add_bool("compare_shaders", false, "sweep: also time the uber-shader and the hand-written DVR");
+        gsv::add_orbit_camera(p, 30, 25, 3.6f, 0.1f);  // down to 0.1: inside the volume
+
+        cases = {
+            {"dvr", "Marschner-Lobb by DVR: three shells of the transfer function, shaded", {}},
+            {"mip", "maximum intensity projection of the raw values", {"compositing=mip", "classification=raw"}},
+            {"iso", "the isosurface rho = 0.5, shaded, refined between samples", {"compositing=iso"}},
+            {"first-hit", "the first sample the transfer function makes visible", {"compositing=fhp"}},
+            {"forward", "forward differences: normals half a voxel off", {"gradient=forward", "camera_yaw=-40"}},
+            {"precomputed", "a gradient volume looked up once a sample", {"gradient=precomputed", "camera_pitch=60"}},
+            {"head", "the MRI head: skin and brain", {"volume=anatomical", "transfer_function=tissue", "camera_yaw=200", "camera_pitch=10"}},
+            {"head-mip", "the MRI head by MIP", {"volume=anatomical", "compositing=mip", "classification=raw", "camera_yaw=110"}},
+            {"clipped", "a clipping plane cuts the proxy: the rays start at the cut", {"clip_normal=1,0.3,0", "clip_offset=0.05"}},
+            {"inside", "the camera inside the volume: rays start at the near plane", {"camera_distance=0.5", "transfer_function=grey"}},
+            {"probe", "an opaque probe embedded in the volume: rays stop at it", {"probe=on", "compositing=mip", "classification=raw"}},
+            {"uncorrected", "four samples a voxel without opacity correction: too opaque", {"samples_per_voxel=4", "opacity_correction=off"}},
+            {"constant", "a constant volume: no gradient, ambient light only, no NaN", {"volume=constant", "transfer_function=grey"}},
+        };
+    }
+
+    void setup(gsv::LabKit&) override { registry_ = lab06::make_registry(); }
+
+    void render(gsv::LabKit& kit, const gsv::Frame& frame) override {
+        GLint target = 0;
+        glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
+        update_network(kit);
+        const gsv::Params& p = kit.params();
+        const gsv::OrbitCamera camera = gsv::orbit_camera(p);
+        view_.kit = &kit;
+        view_.width = frame.width;
+        view_.height = frame.height;
+        view_.view = camera.view();
+        view_.projection = camera.projection(frame.aspect());
+        view_.eye = camera.eye();
+        view_.forward = glm::normalize(-camera.eye());  // the orbit camera looks at the origin
+        view_.near_distance = near_distance(view_.projection);
+        apply_params(p);
+        const gsv::RunReport report = network_->run();
+
+        glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));
+        glViewport(0, 0, frame.width, frame.height);
+        if (!report.ok()) {
+            const std::string failure = first_failure(report);
+            // Headless, a failure ends the run. In a window, a new one goes to the status line (and the
+            // parameters go back); the same one again (a shader broken on disk) keeps the last picture.
+            if (!frame.interactive || failure != last_failure_) {
+                last_failure_ = failure;
+                throw gsv::Error(failure);
+            }
+        } else {
+            last_failure_.clear();
+        }
+        const auto* canvas = dynamic_cast<const lab06::Canvas*>(network_->find("canvas"));
+        if (!canvas || !canvas->image()) throw gsv::Error("the network has no Canvas processor named 'canvas' to show");
+        const gsv::Framebuffer& image = *canvas->image();
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, image.id());
+        glBlitFramebuffer(0, 0, image.width(), image.height(), 0, 0, frame.width, frame.height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));
+    }
+
+    std::vector<std::string> sweep_reference() const override { return {"samples_per_voxel=16"}; }
+    bool sweep_reference_per_series() const override { return true; }
+
+    gsv::SweepMetrics sweep_metrics(gsv::LabKit& kit, const gsv::Frame&) override {
+        auto* raycaster = dynamic_cast<lab06::RayTraversal*>(network_ ? network_->find("raycaster") : nullptr);
+        if (!raycaster) return {};
+        gsv::SweepMetrics metrics = lab06::measure_hits(kit.params(), *raycaster, view_);
+        if (kit.params().get_bool("compare_shaders")) {
+            const gsv::SweepMetrics times = lab06::compare_shaders(*raycaster);
+            metrics.insert(metrics.end(), times.begin(), times.end());
+        }
+        return metrics;
+    }
+
+    std::vector<std::filesystem::path> write_debug_images(gsv::LabKit&, const std::filesystem::path& folder) override {
+        if (!network_) return {};
+        return lab06::write_port_images(*network_, folder);
+    }
+
+private:
+    // The network file, or the network built in code; rebuilt when either choice changes.
+    void update_network(gsv::LabKit& kit) {
+        const gsv::Params& p = kit.params();
+        const std::string file = p.get_file("network");
+        std::filesystem::path path;
+        std::string signature = p.get_bool("probe") ? "code:probe" : "code";
+        if (!file.empty()) {
+            path = network_path(kit.assets(), file);
+            std::error_code ec;
+            // The file's time too: saving it in an editor reloads it, as a shader does.
+            signature = "file:" + path.string() + "@" +
+                        std::to_string(std::filesystem::last_write_time(path, ec).time_since_epoch().count());
+        }
+        if (network_ && signature == network_signature_) return;
+        auto network = std::make_unique<gsv::Network>(file.empty() ? lab06::build_network(p.get_bool("probe"))
+                                                                   : gsv::read_network_file(path, registry_));
+        file_set_.clear();
+        for (const auto& processor : network->processors())
+            for (const auto& property : processor->properties())
+                if (property.set) file_set_.insert(processor->name() + "." + property.name);
+        lab06::set_view(*network, &view_);
+        network_ = std::move(network);
+        network_signature_ = signature;
+    }
+
+    // Every property named like a parameter follows it, unless the network file set it.
+    void apply_params(const gsv::Params& p) {
+        std::set<std::string> names;
+        for (const auto& spec : p.specs()) names.insert(spec.name);
+        for (const auto& processor : network_->processors())
+            for (const auto& property : processor->properties()) {
+                if (!names.count(property.name) || file_set_.count(processor->name() + "." + property.name)) continue;
+                const std::string value = p.get_text(property.name);
+                if (value != property.value) processor->set_property(property.name, value);
+            }
+    }
+
+    // As typed (from the working directory, then data/), or else one of the lab's own (raycast.network).
+    static std::filesystem::path network_path(const gsv::Assets& assets, const std::string& typed) {
+        std::error_code ec;
+        if (std::filesystem::path(typed).is_relative() && std::filesystem::is_regular_file(assets.lab_dir() / typed, ec) &&
+            !std::filesystem::exists(typed, ec))
+            return assets.lab_dir() / typed;
+        return assets.user_file(typed);
+    }
+
+    static float near_distance(const glm::mat4& projection) {
+        // glm::perspective: P[2][2] = -(f + n) / (f - n), P[3][2] = -2 f n / (f - n), so n = P[3][2] / (P[2][2] - 1).
+        return projection[3][2] / (projection[2][2] - 1.0f);
+    }
+
+    static std::string first_failure(const gsv::RunReport& report) {
+        for (const auto& run : report.processors)
+            if (run.state == gsv::RunState::Failed) return run.processor + ": " + run.error;
+        return report.text();
+    }
+
+    gsv::ProcessorRegistry registry_;
+    std::unique_ptr<gsv::Network> network_;
+    std::string network_signature_;
+    std::set<std::string> file_set_;
+    lab06::FrameView view_;
+    std::string last_failure_;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) { return gsv::run_lab<RaycastLab>(argc, argv); }

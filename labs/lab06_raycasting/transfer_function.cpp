@@ -1,0 +1,51 @@
+#include "transfer_function.h"
+
+#include "common/error.h"
+#include "common/processor.h"
+
+#include <algorithm>
+#include <array>
+
+namespace lab06 {
+namespace {
+
+using Point = std::array<float, 5>;  // intensity, r, g, b, opacity
+
+std::vector<Point> control_points(const std::string& name) {
+    if (name == "grey") return {{0.0f, 0, 0, 0, 0}, {0.15f, 0.2f, 0.2f, 0.2f, 0}, {1.0f, 1, 1, 1, 0.4f}};
+    if (name == "bands")
+        return {{0.0f, 0, 0, 0, 0},           {0.33f, 0.1f, 0.3f, 0.9f, 0},   {0.4f, 0.1f, 0.4f, 0.95f, 0.3f},
+                {0.45f, 0.1f, 0.3f, 0.9f, 0}, {0.47f, 0.95f, 0.85f, 0.2f, 0}, {0.52f, 0.95f, 0.85f, 0.2f, 0.6f},
+                {0.57f, 0.9f, 0.8f, 0.2f, 0}, {0.62f, 0.9f, 0.2f, 0.1f, 0},   {0.7f, 0.9f, 0.2f, 0.1f, 0.8f},
+                {0.78f, 0.9f, 0.2f, 0.1f, 0}, {1.0f, 0, 0, 0, 0}};
+    if (name == "tissue")
+        return {{0.0f, 0, 0, 0, 0},
+                {0.3f, 0.6f, 0.3f, 0.2f, 0},
+                {0.4f, 0.9f, 0.55f, 0.4f, 0.05f},
+                {0.55f, 0.95f, 0.8f, 0.7f, 0.1f},
+                {0.75f, 1.0f, 0.95f, 0.9f, 0.5f},
+                {1.0f, 1, 1, 1, 0.8f}};
+    throw gsv::Error("unknown transfer function '" + name + "' (known: " + gsv::list_or_none(kTransferFunctions) + ")");
+}
+
+}  // namespace
+
+std::vector<float> transfer_function_table(const std::string& name) {
+    const std::vector<Point> points = control_points(name);
+    std::vector<float> table;
+    table.reserve(4 * kTransferFunctionEntries);
+    for (int i = 0; i < kTransferFunctionEntries; ++i) {
+        // Entry i is read at its texel centre, intensity (i + 0.5) / N, under linear filtering.
+        const float x = (static_cast<float>(i) + 0.5f) / kTransferFunctionEntries;
+        auto upper = std::find_if(points.begin(), points.end(), [x](const Point& p) { return p[0] >= x; });
+        if (upper == points.begin()) upper = points.begin() + 1;
+        if (upper == points.end()) upper = points.end() - 1;
+        const Point& a = *(upper - 1);
+        const Point& b = *upper;
+        const float w = std::clamp((x - a[0]) / (b[0] - a[0]), 0.0f, 1.0f);
+        for (int c = 1; c < 5; ++c) table.push_back(a[c] + w * (b[c] - a[c]));
+    }
+    return table;
+}
+
+}  // namespace lab06

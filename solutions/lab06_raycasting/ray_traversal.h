@@ -1,0 +1,46 @@
+#pragma once
+// Lab 06: the ray caster as a processor. Its compositing, gradient, classification and shading properties
+// pick the modules; the `shader` property picks how they are put together:
+//   specialised: raycast.frag with a generated rc_config.glsl holding only the chosen modules (the lesson),
+//   uber:        raycast_uber.frag, every module compiled in and chosen per draw by uniforms,
+//   handwritten: raycast_dvr_handwritten.frag, one configuration written out by hand.
+// The last two exist to measure what the first saves and costs.
+#include "lab_processor.h"
+
+#include "common/gpu_mesh.h"
+#include "common/raycast_config.h"
+#include "common/shader_library.h"
+#include "common/texture.h"
+
+#include <string>
+
+namespace lab06 {
+
+class RayTraversal final : public LabProcessor {
+public:
+    RayTraversal();
+    void process() override;
+
+    // The configuration the properties ask for (before effective_config drops what the compositing cannot use).
+    gsv::RaycastConfig config() const;
+    // The program the last process() drew with: the specialised one's generated source can be read from it.
+    const gsv::ShaderLibrary::Entry* last_program() const { return last_; }
+    // The target of the last process(), kept when a later one fails.
+    const std::shared_ptr<ImageData>& image() const { return image_; }
+
+private:
+    const gsv::ShaderLibrary::Entry& program_for(const std::string& shader, const gsv::RaycastConfig& config);
+    const gsv::Texture& transfer_function();
+
+    const gsv::ShaderLibrary::Entry* specialised_ = nullptr;
+    gsv::RaycastConfig specialised_config_;
+    const gsv::ShaderLibrary::Entry* uber_ = nullptr;
+    const gsv::ShaderLibrary::Entry* handwritten_ = nullptr;
+    const gsv::ShaderLibrary::Entry* last_ = nullptr;
+    gsv::GpuMesh quad_;
+    gsv::Texture transfer_function_;
+    std::string transfer_function_name_;
+    std::shared_ptr<ImageData> image_;
+};
+
+}  // namespace lab06

@@ -1,0 +1,49 @@
+#pragma once
+// Lab 06's source processors: the volume, the proxy geometry cut by a clipping plane, and an opaque probe
+// sphere to embed in the volume.
+#include "lab_processor.h"
+
+#include <memory>
+#include <string>
+
+namespace lab06 {
+
+// Reads or generates the volume and uploads it as an R32F 3D texture (linear, clamp to edge).
+//   volume: marschner_lobb (the test signal, ml_size^3 over [-1,1]^3, values rho in [0, 1] as they are),
+//           anatomical (the MRI head from python3-nibabel, normalised), constant (16^3 of 0.5: a zero
+//           gradient everywhere), file (volume_file, a NIfTI-1 file, normalised).
+class VolumeSource final : public LabProcessor {
+public:
+    VolumeSource();
+    void process() override;
+
+private:
+    std::string loaded_;  // the properties the current volume was made from
+    std::shared_ptr<VolumeData> data_;
+};
+
+// The volume's box as proxy geometry, cut by one clipping plane: texture space, keeping the points t with
+// dot(n, t - (0.5, 0.5, 0.5)) <= clip_offset |n|, n = clip_normal; n = 0,0,0 cuts nothing.
+class ProxySource final : public LabProcessor {
+public:
+    ProxySource();
+    void process() override;
+
+private:
+    std::string built_;
+    std::shared_ptr<GeometryData> data_;
+};
+
+// A sphere of probe_radius model units at probe_position (model space: the box is centred at the origin,
+// its largest side 2), as opaque geometry the rays stop at.
+class ProbeSource final : public LabProcessor {
+public:
+    ProbeSource();
+    void process() override;
+
+private:
+    std::string built_;
+    std::shared_ptr<GeometryData> data_;
+};
+
+}  // namespace lab06
