@@ -356,22 +356,11 @@ Checked check_against_reference(const std::vector<std::string>& overrides, int s
 // ---------------------------------------------------------------------------------------------
 // Broken copies of the solution's shaders, which the comparison must reject
 
-void replace_in_file(const fs::path& file, const std::string& from, const std::string& to) {
-    std::string text = gsv::test::read_text(file);
-    const auto at = text.find(from);
-    REQUIRE(at != std::string::npos);
-    text.replace(at, from.size(), to);
-    std::ofstream(file, std::ios::binary) << text;
-}
-
 // What lab02_solution loads (its shaders, the kit's shader library and the photograph it reads at
 // start-up), copied into `root` so that one line can be broken; GSV_ROOT points the binary at the copy.
 void copy_of_lab02(const fs::path& root) {
     const fs::path source = gsv::test::source_root();
-    fs::copy(source / "shaders", root / "shaders", fs::copy_options::recursive);
-    fs::create_directories(root / "solutions");
-    fs::copy(source / "solutions" / "lab02_lic", root / "solutions" / "lab02_lic", fs::copy_options::recursive);
-    fs::create_directories(root / "data");
+    gsv::test::copy_lab_kit(source, root, "lab02_lic");
     fs::copy(source / "data" / "images", root / "data" / "images", fs::copy_options::recursive);
 }
 
@@ -502,7 +491,7 @@ TEST_CASE("lab02 reference: the comparison rejects a backward loop that steps fo
         DYNAMIC_SECTION(b.name) {
             const gsv::test::TempDir root;
             copy_of_lab02(root.path());
-            replace_in_file(root.path() / "solutions" / "lab02_lic" / b.file, b.from, b.to);
+            gsv::test::replace_in_file(root.path() / "solutions" / "lab02_lic" / b.file, b.from, b.to);
             const Checked c = compare_with_reference(b.overrides, root.path());
             INFO(b.name << ": " << describe_command(b.overrides) << "\n" << c.all.describe());
             CHECK(c.all.mean > kMaxMeanDiff);

@@ -29,25 +29,6 @@ int background_pixels(const Image& image) {
     return count;
 }
 
-// A kit root holding a copy of the reference lab 06 and the shared shaders, for a lab run with GSV_ROOT to
-// break files in.
-fs::path copy_kit(const test::TempDir& dir) {
-    const fs::path root = dir.path("kit");
-    fs::create_directories(root / "solutions");
-    fs::copy(test::source_root() / "solutions" / "lab06_raycasting", root / "solutions" / "lab06_raycasting", fs::copy_options::recursive);
-    fs::copy(test::source_root() / "shaders", root / "shaders", fs::copy_options::recursive);
-    fs::create_directories(root / "data");
-    return root;
-}
-
-void replace_in(const fs::path& file, const std::string& find, const std::string& replace) {
-    std::string text = test::read_text(file);
-    const auto at = text.find(find);
-    REQUIRE(at != std::string::npos);
-    text.replace(at, find.size(), replace);
-    std::ofstream(file, std::ios::binary) << text;
-}
-
 }  // namespace
 
 TEST_CASE("lab06: the network built in code draws what raycast.network and probe.network draw", "[lab06]") {
@@ -138,8 +119,9 @@ TEST_CASE("lab06: a constant volume (zero gradient) and an iso value equal to it
 
 TEST_CASE("lab06: a broken shader stops the run with one line naming the processor that owns it and the file", "[lab06]") {
     test::TempDir dir;
-    const fs::path root = copy_kit(dir);
-    replace_in(root / "solutions" / "lab06_raycasting" / "composite_mip.glsl", "s.value = intensity;", "s.value = intensity");
+    const fs::path root = dir.path("kit");
+    test::copy_lab_kit(test::source_root(), root, "lab06_raycasting");
+    test::replace_in_file(root / "solutions" / "lab06_raycasting" / "composite_mip.glsl", "s.value = intensity;", "s.value = intensity");
     const auto run = test::render(kLab, {"compositing=mip"}, dir.path(), "broken", {}, {"GSV_ROOT=" + root.string()});
     INFO(run.process.output);
     CHECK(run.exit_code() == 1);

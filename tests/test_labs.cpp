@@ -36,20 +36,9 @@ Image must_render(const test::LabRun& run) {
 // A copy of the files lab01_solution loads, to break on purpose (GSV_ROOT points the binary at it).
 fs::path copy_of_lab01(const std::string& name) {
     const fs::path root = test::temp_dir(name);
-    fs::copy(test::source_root() / "shaders", root / "shaders", fs::copy_options::recursive);
-    fs::create_directories(root / "solutions");
-    fs::copy(test::source_root() / "solutions" / "lab01_gooch", root / "solutions" / "lab01_gooch", fs::copy_options::recursive);
-    fs::create_directories(root / "data");
+    test::copy_lab_kit(test::source_root(), root, "lab01_gooch");
     fs::copy(test::source_root() / "data" / "meshes", root / "data" / "meshes", fs::copy_options::recursive);
     return root;
-}
-
-void replace_in_file(const fs::path& file, const std::string& from, const std::string& to) {
-    std::string text = test::read_text(file);
-    const auto at = text.find(from);
-    REQUIRE(at != std::string::npos);
-    text.replace(at, from.size(), to);
-    std::ofstream(file) << text;
 }
 
 int line_of(const fs::path& file, const std::string& needle) {
@@ -205,7 +194,7 @@ TEST_CASE("lab01: a missing shader, a compile error, a missing or corrupt mesh: 
     {
         const auto root = copy_of_lab01("compile-error");
         const fs::path phong = root / "solutions" / "lab01_gooch" / "phong.glsl";
-        replace_in_file(phong, "vec3 r = reflect(-l, n);", "vec3 r = reflect(-l, n) +;");
+        test::replace_in_file(phong, "vec3 r = reflect(-l, n);", "vec3 r = reflect(-l, n) +;");
         const int line = line_of(phong, "vec3 r = reflect(-l, n) +;");
         const auto run = test::render("lab01_solution", {}, root, "x", {}, {"GSV_ROOT=" + root.string()});
         INFO(run.process.output);

@@ -67,4 +67,26 @@ inline std::size_t count_of(const std::string& haystack, const std::string& need
     return count;
 }
 
+// Replaces the first `from` in `file` with `to` (breaking a copied shader on purpose); throws gsv::Error
+// when `from` is not there, so a test cannot pass by editing nothing.
+inline void replace_in_file(const std::filesystem::path& file, const std::string& from, const std::string& to) {
+    std::string text = read_text(file);
+    const auto at = text.find(from);
+    if (at == std::string::npos) throw Error("'" + from + "' is not in " + file.string());
+    text.replace(at, from.size(), to);
+    std::ofstream(file, std::ios::binary) << text;
+}
+
+// The shared shaders/ and one reference lab (solutions/<lab_dir>) of the kit at `source` copied under
+// `root`, with an empty data/ for the caller to fill with what the lab reads: a kit to break files in, for
+// a lab binary run with GSV_ROOT=root.
+inline void copy_lab_kit(const std::filesystem::path& source, const std::filesystem::path& root, const std::string& lab_dir) {
+    namespace fs = std::filesystem;
+    fs::create_directories(root);
+    fs::copy(source / "shaders", root / "shaders", fs::copy_options::recursive);
+    fs::create_directories(root / "solutions");
+    fs::copy(source / "solutions" / lab_dir, root / "solutions" / lab_dir, fs::copy_options::recursive);
+    fs::create_directories(root / "data");
+}
+
 }  // namespace gsv::test

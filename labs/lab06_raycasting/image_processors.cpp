@@ -24,11 +24,7 @@ void GeometryRenderer::process() {
     glClearDepth(1.0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     program.use();
-    gsv::Transforms t;
-    t.model = geometry->box.model_from_texture_matrix();
-    t.view = v.view;
-    t.projection = v.projection;
-    kit().set_transforms(program, t);
+    set_transforms(program, geometry->box.model_from_texture_matrix());
     // The normals are in model space, not in the texture space the positions are in.
     program.set("uNormalMatrix", glm::mat3(v.view));
     program.set("uGeometryColour", vec3("geometry_colour"));

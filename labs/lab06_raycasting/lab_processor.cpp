@@ -3,6 +3,7 @@
 #include "common/error.h"
 #include "common/gradient.h"
 #include "common/number_text.h"
+#include "common/transforms.h"
 
 #include <sstream>
 #include <vector>
@@ -63,6 +64,14 @@ glm::vec3 LabProcessor::vec3(const std::string& name) const {
     }
     if (count != 3) throw gsv::Error(this->name() + "." + name + " = '" + text + "' is not three numbers x,y,z");
     return v;
+}
+
+void LabProcessor::set_transforms(const gsv::ShaderProgram& program, const glm::mat4& model) const {
+    gsv::Transforms t;
+    t.model = model;
+    t.view = view().view;
+    t.projection = view().projection;
+    kit().set_transforms(program, t);
 }
 
 void LabProcessor::fit(std::shared_ptr<ImageData>& image, const FrameView& view) {

@@ -19,11 +19,7 @@ void EntryExitPoints::process() {
     if (!program_) program_ = &kit().program(name() + " (proxy)", {"proxy.vert", "proxy.frag"});
     const gsv::ShaderProgram& program = program_->program();
     program.use();
-    gsv::Transforms t;
-    t.model = proxy->box.model_from_texture_matrix();
-    t.view = v.view;
-    t.projection = v.projection;
-    kit().set_transforms(program, t);
+    set_transforms(program, proxy->box.model_from_texture_matrix());
     fit(entry_, v);
     fit(exit_, v);
 

@@ -70,6 +70,9 @@ protected:
     double number(const std::string& property, double min, double max) const;
     bool flag(const std::string& property) const;  // on/off, true/false, 1/0
     glm::vec3 vec3(const std::string& property) const;  // "x,y,z"
+    // The frame's camera with `model` (a box's model_from_texture_matrix: meshes here are in texture
+    // coordinates) on `program`, which must be in use.
+    void set_transforms(const gsv::ShaderProgram& program, const glm::mat4& model) const;
     // A target the frame's size, rebuilt when the window is resized.
     static void fit(std::shared_ptr<ImageData>& image, const FrameView& view);
 
