@@ -13,7 +13,8 @@ namespace lab06 {
 // entry, as the module does), in model units (the signal's [-1,1]^3):
 // iso_err_rms, iso_err_max, and iso_missed, the fraction of the pixels where only one of the two hits.
 // With forward or central gradients also normal_err_deg: the angle between that scheme's gradient, in
-// double on the volume's texels at the GPU's hit points, and the exact gradient there. Empty otherwise.
+// double on the volume's texels at the GPU's hit points on the isosurface (not on the box's faces, where a
+// ray enters the object already inside), and the exact gradient there. Empty otherwise.
 gsv::SweepMetrics measure_hits(const gsv::Params& params, const RayTraversal& raycaster, const FrameView& view);
 
 // The ray caster alone, timed (glFinish and a steady clock, median of 5 after 1 warm-up) with each shader
