@@ -2,7 +2,7 @@
 # starter generated from the solution) as <id>, and the reference in solutions/<dir> as <id>_solution.
 # grader/submission reuses this with GSV_LABS_ROOT at a submission and only the starter variant.
 set(GSV_LAB_LIST lab01:lab01_gooch lab02:lab02_lic lab03:lab03_texture_arrays lab04:lab04_terrain
-    lab05:lab05_particles lab06:lab06_raycasting)
+    lab05:lab05_particles lab06:lab06_raycasting lab07:lab07_spectral)
 
 set(GSV_LABS "" CACHE INTERNAL "")
 if(NOT DEFINED GSV_LABS_ROOT)

@@ -1,0 +1,57 @@
+#include "element_measure.h"
+
+#include "common/framebuffer.h"
+#include "common/gl.h"
+#include "common/timing.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lab07 {
+
+gsv::SweepMetrics measure_elements(gsv::LabKit& kit, const ElementData& data, const MeasurePrograms& programs,
+                                   const gsv::Transforms& transforms, int width, int height) {
+    gsv::Framebuffer target(width, height, gsv::ColorFormat::RGBA32F, false);
+    auto draw_with = [&](const gsv::ShaderLibrary::Entry& entry) {
+        target.bind();
+        glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        const gsv::ShaderProgram& program = kit.use(entry);
+        kit.set_transforms(program, transforms);
+        data.bind(program);
+        program.set("uRangeMin", data.min_value);
+        program.set("uRangeMax", data.max_value);
+        data.patches.draw();
+    };
+    draw_with(*programs.probe);
+    const gsv::ImageF probe = target.read_rgba32f();
+
+    double worst = 0, sum2 = 0, worst_float = 0;
+    long count = 0;
+    for (int y = 0; y < height; y += 2)
+        for (int x = 0; x < width; x += 2) {
+            const float* px = probe.at(x, y);
+            if (px[3] < 0.5f) continue;
+            const int element = static_cast<int>(std::lround(px[3])) - 1;
+            const double xi = px[1], eta = px[2];
+            const double exact = gsv::spectral_field(data.field, data.mesh.position(element, xi, eta), data.time);
+            const double in_double = gsv::evaluate_element(data.values, data.nodes, data.weights, element, xi, eta);
+            const double e = std::abs(px[0] - exact);
+            worst = std::max(worst, e);
+            sum2 += e * e;
+            worst_float = std::max(worst_float, std::abs(px[0] - in_double));
+            ++count;
+        }
+    const double drawn_ms = gsv::time_frames([&] { draw_with(*programs.colour); }, 1, 5).median_ms;
+    const double corner_ms = gsv::time_frames([&] { draw_with(*programs.corners); }, 1, 5).median_ms;
+    return {{"err_max", worst},
+            {"err_rms", count ? std::sqrt(sum2 / count) : 0.0},
+            {"float_err_max", worst_float},
+            {"drawn_ms", drawn_ms},
+            {"corner_ms", corner_ms},
+            {"rate_vs_corners", corner_ms / drawn_ms},
+            {"basis_bytes", static_cast<double>(data.basis_bytes())},
+            {"value_bytes", static_cast<double>(data.value_texture.bytes())}};
+}
+
+}  // namespace lab07

@@ -1,0 +1,109 @@
+// Lab 07: rendering spectral (high-order) elements directly, per fragment.
+// Seed: Peng and Forsberg, "Directly Rendering Spectral Elements Using Texture Shaders" (Brown CS-02-17, 2002).
+// Each element carries its field's values at (p + 1)^2 nodes; every fragment evaluates the element's
+// degree-p Lagrange polynomial at its own reference point (spectral.glsl), with no tessellation of the field
+// and no texture per element: the basis (nodes and barycentric weights) is 2 (p + 1) uniform floats, the
+// values one buffer. Beside it, the same elements drawn from their corner values only.
+#include "common/app.h"
+#include "common/gl.h"
+#include "element_data.h"
+#include "element_measure.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+namespace {
+
+class SpectralLab final : public gsv::Lab {
+public:
+    gsv::LabInfo info() const override { return {"lab07", "Rendering spectral elements", {4, 1}, "the kit's baseline"}; }
+
+    void declare(gsv::Params& p, std::vector<gsv::RenderCase>& cases) override {
+        p.add_choice("mesh", "annulus", {"annulus", "grid"}, "curved elements around a ring, or square elements tiling [-1,1]^2");
+        p.add_int("columns", 32, 1, 4096, "elements around the ring (annulus) or across (grid)");
+        p.add_int("rows", 4, 1, 4096, "elements across the ring (annulus) or up (grid)");
+        p.add_float("inner_radius", 0.35, 0, 0.95, "the annulus's inner radius (the outer is 1)").with_step(0.05);
+        p.add_choice("field", "waves", {"waves", "runge", "polynomial"},
+                     "travelling waves; Runge's function; a polynomial of degree 3 per variable");
+        p.add_int("degree", 4, 1, 16, "p: the polynomial degree per axis, p + 1 nodes per axis (the seed's order p - 1)")
+            .at_compile_time()
+            .accuracy_knob({"1", "2", "3", "4", "6", "8", "12", "16"});
+        p.add_choice("node_set", "gll", {"gll", "equispaced"}, "Gauss-Lobatto-Legendre or equispaced nodes").series();
+        p.add_choice("evaluation", "full", {"full", "corners"},
+                     "the polynomial per fragment, or the bilinear blend of each element's corner values").at_compile_time();
+        p.add_int("subdivisions", 6, 1, 64, "quads per element side, to follow curved elements (the field is per fragment)");
+        p.add_float("time", 0, 0, 6.2832, "the field's time: play it in the window").with_step(0.05).animated();
+        p.add_bool("auto_range", true, "colour range from the smallest to the largest node value");
+        p.add_float("range_min", -1, -100, 100, "with auto_range off: the value drawn blue").with_step(0.05);
+        p.add_float("range_max", 1, -100, 100, "with auto_range off: the value drawn red").with_step(0.05);
+        p.add_effect("element_edges", true, "a thin dark line along every element's edges");
+        p.add_float("zoom", 1, 0.5, 500, "magnification (1: the whole mesh)").with_step(0.25);
+        p.add_float("centre_x", 0, -1.2, 1.2, "the point looked at").with_step(0.02);
+        p.add_float("centre_y", 0, -1.2, 1.2, "the point looked at").with_step(0.02);
+
+        cases = {
+            {"annulus", "128 curved elements of degree 4 on GLL nodes, travelling waves", {}},
+            {"corners", "the same elements drawn from their corner values only", {"evaluation=corners"}},
+            {"degree-1", "degree 1: the polynomial is the bilinear blend of the corners", {"degree=1"}},
+            {"fine", "512 elements of degree 8", {"columns=64", "rows=8", "degree=8"}},
+            {"time", "the waves later", {"time=2"}},
+            {"runge-equispaced", "one element, Runge's function, degree 16 on equispaced nodes: Runge's phenomenon",
+             {"mesh=grid", "columns=1", "rows=1", "field=runge", "degree=16", "node_set=equispaced", "auto_range=off", "range_min=-0.2", "range_max=1"}},
+            {"runge-gll", "the same on GLL nodes: no blow-up",
+             {"mesh=grid", "columns=1", "rows=1", "field=runge", "degree=16", "auto_range=off", "range_min=-0.2", "range_max=1"}},
+            {"polynomial", "a degree-3 polynomial on degree-3 elements: reproduced exactly", {"mesh=grid", "columns=2", "rows=2", "field=polynomial", "degree=3"}},
+            {"one-element", "zoomed into one element with the range narrowed to its values",
+             {"zoom=7", "centre_x=0.915", "centre_y=0.09", "auto_range=off", "range_min=-0.5", "range_max=0.3"}},
+        };
+    }
+
+    void setup(gsv::LabKit& kit) override {
+        programs_.colour = &kit.program("element", {"element.vert", "element.frag"});
+        programs_.corners = &kit.program("element_corners", {"element.vert", "corners_probe.frag"});
+        programs_.probe = &kit.program("value_probe", {"element.vert", "value_probe.frag"});
+    }
+
+    void render(gsv::LabKit& kit, const gsv::Frame& frame) override {
+        lab07::update_element_data(data_, kit.params(), kit.profile());
+        glDisable(GL_DEPTH_TEST);
+        glClearColor(0.12f, 0.12f, 0.14f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        const gsv::ShaderProgram& program = kit.use(*programs_.colour);
+        kit.set_transforms(program, transforms(kit.params(), frame));
+        data_.bind(program);
+        if (kit.params().get_bool("auto_range")) {
+            program.set("uRangeMin", data_.min_value);
+            program.set("uRangeMax", data_.max_value);
+        }
+        data_.patches.draw();
+    }
+
+    std::vector<std::string> sweep_reference() const override { return {"degree=16", "node_set=gll"}; }
+    std::string sweep_error_column() const override { return "err_max"; }
+
+    gsv::SweepMetrics sweep_metrics(gsv::LabKit& kit, const gsv::Frame& frame) override {
+        return lab07::measure_elements(kit, data_, programs_, transforms(kit.params(), frame), frame.width, frame.height);
+    }
+
+private:
+    // A 2D view: the mesh spans [-1, 1]^2; zoom about (centre_x, centre_y), the aspect kept.
+    static gsv::Transforms transforms(const gsv::Params& p, const gsv::Frame& frame) {
+        const float half = 1.08f / p.get_float("zoom");
+        const float aspect = frame.aspect();
+        const glm::vec2 c(p.get_float("centre_x"), p.get_float("centre_y"));
+        gsv::Transforms t;
+        t.projection = glm::ortho(c.x - half * std::max(aspect, 1.0f), c.x + half * std::max(aspect, 1.0f),
+                                  c.y - half / std::min(aspect, 1.0f), c.y + half / std::min(aspect, 1.0f), -1.0f, 1.0f);
+        return t;
+    }
+
+    lab07::MeasurePrograms programs_;
+    lab07::ElementData data_;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) { return gsv::run_lab<SpectralLab>(argc, argv); }

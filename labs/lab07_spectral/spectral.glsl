@@ -1,0 +1,41 @@
+// Lab 07: a spectral element's field at one point of its reference square, from the element's node values.
+// DEGREE (a compile-time parameter) fixes the number of nodes per axis, so every loop has a constant bound.
+#pragma once
+#include "gsv/not_done.glsl"
+
+const int kNodes = DEGREE + 1;
+
+// The nodes x_i and their barycentric weights w_i: 8 bytes a node, whatever the number of elements.
+// Uniforms rather than a texture: on llvmpipe two texel fetches a node cost a fifth of the frame at degree 4.
+uniform float uNodes[kNodes];
+uniform float uWeights[kNodes];
+// Every element's (DEGREE + 1)^2 values, element by element, then rows of nodes (eta), xi fastest.
+uniform samplerBuffer uValues;
+
+// l_i(x) for i = 0 .. DEGREE, the Lagrange basis on the nodes.
+void lagrange_basis(float x, out float l[kNodes]) {
+    // TODO(L07-T1): the barycentric formula l_i(x) = (w_i / (x - x_i)) / sum_k (w_k / (x - x_k)). Where x
+    // is exactly a node, l is 1 there and 0 elsewhere: return that before anything divides by x - x_i = 0.
+    for (int i = 0; i < kNodes; ++i) l[i] = 0.0;
+}
+
+float node_value(int element, int i, int j) {
+    return texelFetch(uValues, (element * kNodes + j) * kNodes + i).r;
+}
+
+// The field at reference point r = (xi, eta) of the element.
+float element_value(int element, vec2 r) {
+#ifdef EVALUATION_CORNERS
+    // TODO(L07-T4): what a quad drawn from its corners shows: the bilinear blend of the four corner values
+    // (nodes (0, 0), (DEGREE, 0), (0, DEGREE), (DEGREE, DEGREE)), with (xi, eta) = (-1, -1) at the first.
+    return 0.0;
+#else
+    // TODO(L07-T2): the tensor product: the sum over i and j of node_value(element, i, j) l_i(xi) l_j(eta).
+    return 0.0;
+#endif
+}
+
+// Each element is drawn as the same number of triangles, in element order.
+uniform int uTrianglesPerElement;
+
+int current_element() { return gl_PrimitiveID / max(uTrianglesPerElement, 1); }

@@ -1,0 +1,41 @@
+#pragma once
+// Lab 07's GPU side of a spectral element mesh: the basis (nodes and barycentric weights, 2 (p + 1) uniform
+// floats whatever the number of elements), every element's node values in one buffer texture, and the
+// patches that place the elements. Rebuilt when the mesh, field, degree, node set or time changes.
+#include "common/app.h"
+#include "common/buffer_texture.h"
+#include "common/gpu_mesh.h"
+#include "common/shader_program.h"
+#include "common/spectral_mesh.h"
+
+#include <string>
+#include <vector>
+
+namespace lab07 {
+
+struct ElementData {
+    gsv::ElementMesh mesh;
+    gsv::SpectralField field = gsv::SpectralField::Waves;
+    int degree = 1;
+    double time = 0;
+    std::vector<double> nodes, weights;
+    std::vector<float> values;  // as uploaded
+    float min_value = 0, max_value = 0;
+    int subdivisions = 1;
+    bool built = false;
+
+    gsv::BufferTexture value_texture;
+    gsv::GpuMesh patches;
+
+    std::size_t basis_bytes() const { return nodes.size() * 2 * sizeof(float); }
+    // Sets the basis uniforms (uNodes, uWeights), binds the values to unit 1, sets the spectral uniforms;
+    // `program` in use.
+    void bind(const gsv::ShaderProgram& program) const;
+};
+
+// The mesh, field, nodes and values the parameters describe, uploaded. `previous` is reused where the
+// parameters it was built from have not changed (moving the time resamples the values only). Throws
+// gsv::Error naming a bad mesh, gsv::UnsupportedError for more values than a buffer texture holds.
+void update_element_data(ElementData& data, const gsv::Params& params, gsv::Profile profile);
+
+}  // namespace lab07
