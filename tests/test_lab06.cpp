@@ -189,14 +189,7 @@ TEST_CASE("lab06: the sweep measures hits against the exact isosurface, and samp
     std::getline(csv, header);
     std::getline(csv, coarse);
     std::getline(csv, fine);
-    auto value = [&](const std::string& row, const std::string& name) {
-        std::stringstream h(header), r(row);
-        std::string key, cell;
-        while (std::getline(h, key, ',') && std::getline(r, cell, ','))
-            if (key == name) return std::stod(cell);
-        FAIL("no column " << name << " in " << header);
-        return 0.0;
-    };
+    auto value = [&](const std::string& row, const std::string& name) { return test::csv_value(header, row, name); };
     CHECK(value(coarse, "iso_err_rms") > 1.1 * value(fine, "iso_err_rms"));
     CHECK(value(fine, "iso_err_rms") < 0.2);
     CHECK(value(fine, "iso_missed") < 0.2);

@@ -66,15 +66,6 @@ NodeProbe probe_at_nodes(NodeSet set, int degree) {
     return r;
 }
 
-double csv_value(const std::string& header, const std::string& row, const std::string& name) {
-    std::stringstream h(header), r(row);
-    std::string key, cell;
-    while (std::getline(h, key, ',') && std::getline(r, cell, ','))
-        if (key == name) return std::stod(cell);
-    FAIL("no column " << name << " in " << header);
-    return 0;
-}
-
 }  // namespace
 
 TEST_CASE("lab07: a fragment exactly on a node gets the node's value exactly, and one ulp beside it stays finite", "[lab07]") {
@@ -119,14 +110,14 @@ TEST_CASE("lab07: the sweep finds Runge's blow-up on equispaced nodes and float3
     }
     REQUIRE(rows.count("gll16"));
     REQUIRE(rows.count("equispaced16"));
-    CHECK(csv_value(header, rows["equispaced16"], "err_max") > 50.0);
-    CHECK(csv_value(header, rows["gll16"], "err_max") < 0.1);
-    CHECK(csv_value(header, rows["gll16"], "err_max") < csv_value(header, rows["gll4"], "err_max"));
+    CHECK(test::csv_value(header, rows["equispaced16"], "err_max") > 50.0);
+    CHECK(test::csv_value(header, rows["gll16"], "err_max") < 0.1);
+    CHECK(test::csv_value(header, rows["gll16"], "err_max") < test::csv_value(header, rows["gll4"], "err_max"));
     // float32 against double: the GLL floor stays near float's epsilon; equispaced weights amplify it.
-    CHECK(csv_value(header, rows["gll16"], "float_err_max") < 1e-5);
-    CHECK(csv_value(header, rows["equispaced16"], "float_err_max") > 10 * csv_value(header, rows["gll16"], "float_err_max"));
+    CHECK(test::csv_value(header, rows["gll16"], "float_err_max") < 1e-5);
+    CHECK(test::csv_value(header, rows["equispaced16"], "float_err_max") > 10 * test::csv_value(header, rows["gll16"], "float_err_max"));
     // Memory: the basis grows with the degree only.
-    CHECK(csv_value(header, rows["gll16"], "basis_bytes") == 17 * 8);
+    CHECK(test::csv_value(header, rows["gll16"], "basis_bytes") == 17 * 8);
 }
 
 TEST_CASE("lab07: a degree-3 polynomial on degree-3 elements is drawn to float rounding, and the basis does not grow with elements", "[lab07]") {
@@ -144,10 +135,10 @@ TEST_CASE("lab07: a degree-3 polynomial on degree-3 elements is drawn to float r
     std::getline(csv, eight);
     std::getline(csv, many);
     for (const auto* row : {&one, &eight, &many}) {
-        CHECK(csv_value(header, *row, "err_max") < 1e-5);
-        CHECK(csv_value(header, *row, "basis_bytes") == 4 * 8);
+        CHECK(test::csv_value(header, *row, "err_max") < 1e-5);
+        CHECK(test::csv_value(header, *row, "basis_bytes") == 4 * 8);
     }
-    CHECK(csv_value(header, many, "value_bytes") == 64.0 * csv_value(header, one, "value_bytes"));
+    CHECK(test::csv_value(header, many, "value_bytes") == 64.0 * test::csv_value(header, one, "value_bytes"));
 }
 
 TEST_CASE("lab07: the starter draws magenta until the colour map is written, and bad settings are one line", "[lab07]") {

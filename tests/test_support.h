@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <string>
 
 namespace gsv::test {
@@ -65,6 +66,16 @@ inline std::size_t count_of(const std::string& haystack, const std::string& need
     std::size_t count = 0;
     for (auto at = haystack.find(needle); at != std::string::npos; at = haystack.find(needle, at + 1)) ++count;
     return count;
+}
+
+// The cell of `row` under the column `name` of `header` (a sweep's CSV), as a number; throws gsv::Error
+// naming the column when the header has none of that name.
+inline double csv_value(const std::string& header, const std::string& row, const std::string& name) {
+    std::stringstream h(header), r(row);
+    std::string key, cell;
+    while (std::getline(h, key, ',') && std::getline(r, cell, ','))
+        if (key == name) return std::stod(cell);
+    throw Error("no column " + name + " in " + header);
 }
 
 // Replaces the first `from` in `file` with `to` (breaking a copied shader on purpose); throws gsv::Error
