@@ -173,6 +173,8 @@ private:
         // Profiles arrived with GLSL 1.50; older compilers reject the word.
         if (glsl >= 150) header += options_.profile == Profile::Core ? " core" : " compatibility";
         header += "\n";
+        // Line 3 of the header on is numbered kGeneratedHeaderLineOffset + 3 on: see the constant.
+        header += line_directive(kGeneratedHeaderLineOffset + 3, 0);
         header += options_.profile == Profile::Core ? "#define GSV_PROFILE_CORE 1\n" : "#define GSV_PROFILE_COMPAT 1\n";
         header += "#define " + stage_macro(options_.stage) + " 1\n";
         header += "#define GSV_GLSL_VERSION " + std::to_string(glsl) + "\n";
@@ -400,13 +402,20 @@ std::string translate_compile_log(const std::string& log, const ShaderSource& so
         if (!line.empty() && line.back() == '\r') line.pop_back();
         if (!first) translated += "\n";
         first = false;
-        const std::optional<LogLocation> at = parse_log_line(line);
+        std::optional<LogLocation> at = parse_log_line(line);
         if (!at || at->source_string < 0 || static_cast<std::size_t>(at->source_string) >= source.files.size()) {
             translated += line;
             continue;
         }
+        std::string note;
+        if (at->source_string == 0 && at->line > kGeneratedHeaderLineOffset) {
+            at->line -= kGeneratedHeaderLineOffset;
+        } else if (at->source_string == 0 && at->line != 1) {
+            at->source_string = source.main_file_index;
+            note = " (the driver named no file: the main file's line)";
+        }
         translated += source.files[static_cast<std::size_t>(at->source_string)] + ":" + std::to_string(at->line) +
-                      ": " + trim(at->message);
+                      ": " + trim(at->message) + note;
         const std::string quoted = trim(source.file_line_text(at->source_string, at->line));
         if (!quoted.empty()) translated += "\n    " + quoted;
     }

@@ -38,6 +38,11 @@ struct PreprocessOptions {
 // Name of files[0]: the #version line and defines the kit writes are source string 0, so a driver
 // complaint about them (an unsupported #version, a clashing define) is not blamed on the lab's file.
 inline constexpr const char* kGeneratedHeaderName = "<generated header>";
+// The header's lines after the #version line are numbered from this plus their line in the header (a
+// #line directive says so). Mesa reports some errors (an assignment of the wrong type, for one) with source
+// string 0 whatever #line said: a string-0 line below this, other than 1, is then not the header's, and
+// translate_compile_log places it in the main file, saying the driver named no file.
+inline constexpr int kGeneratedHeaderLineOffset = 100000;
 // What messages, #line maps and translated logs call a generated file: "<generated rc_config.glsl>".
 std::string generated_file_label(const std::string& name);
 

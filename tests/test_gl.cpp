@@ -1,6 +1,7 @@
 // The framework against a real (headless) GL context: backends, profiles, GL objects, reload.
 #include "catch.hpp"
 #include "gl_fixture.h"
+#include "test_support.h"
 
 #include "common/buffer.h"
 #include "common/error.h"
@@ -278,4 +279,22 @@ TEST_CASE("timing: median of glFinish-bracketed frames after warm-up", "[gl]") {
     CHECK(stats.min_ms <= stats.median_ms);
     CHECK(stats.median_ms <= stats.max_ms);
     CHECK(summarize({3, 1, 2, 10}).median_ms == 2.5);
+}
+
+TEST_CASE("shader_program: a type error the driver files under no source string still names the shader's file and line", "[gl]") {
+    auto context = test::headless_context();
+    const auto dir = test::temp_dir("lost_source");
+    // Mesa reports an assignment of the wrong type as source string 0, whatever #line said.
+    std::ofstream(dir / "t.vert") << "out vec2 vReference;\n\nvoid main() {\n    vReference = aTexCoord0;\n"
+                                     "    gl_Position = aVertex;\n}\n";
+    std::ofstream(dir / "t.frag") << "in vec2 vReference;\nout vec4 fColor;\nvoid main() { fColor = vec4(vReference, 0.0, 1.0); }\n";
+    PreprocessOptions options;
+    options.version = context->effective_version();
+    options.include_dirs = {test::source_root() / "shaders"};
+    const ProgramSpec spec{"t", {dir / "t.vert", dir / "t.frag"}, {{"SOME_DEFINE", "1"}, {"ANOTHER", "2"}}};
+    const std::string message = test::gsv_error_message([&] { ShaderProgram::build(spec, options); });
+    INFO(message);
+    CHECK(message.find("t.vert:4: ") != std::string::npos);
+    CHECK(message.find("vReference = aTexCoord0;") != std::string::npos);
+    CHECK(message.find(kGeneratedHeaderName) == std::string::npos);
 }

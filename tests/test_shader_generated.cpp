@@ -43,6 +43,7 @@ TEST_CASE("shader_source: a generated file is found by name before any folder an
     const auto source =
         gsv::preprocess_shader(main, bare_options({{"rc_config.glsl", "// generated\nfloat g() { return 1.0; }\n"}}));
     CHECK(source.text == "#version 410 core\n"
+                         "#line 100003 0\n"
                          "#define GSV_PROFILE_CORE 1\n"
                          "#define GSV_STAGE_FRAGMENT 1\n"
                          "#define GSV_GLSL_VERSION 410\n"

@@ -106,7 +106,9 @@ TEST_CASE("shader_source: version line and built-in defines follow profile, vers
     for (const Case& c : cases) {
         INFO("GL " << c.version.str() << " " << gsv::profile_name(c.profile));
         const auto source = gsv::preprocess_shader(main, bare_options(c.version, c.profile));
-        CHECK(source.text.rfind(c.version_line + c.profile_define + "#define GSV_STAGE_FRAGMENT 1\n" + c.glsl_define, 0) ==
+        // Before GLSL 3.30, "#line N" numbers the line after it N + 1.
+        const std::string header_lines = c.version.glsl() >= 330 ? "#line 100003 0\n" : "#line 100002 0\n";
+        CHECK(source.text.rfind(c.version_line + header_lines + c.profile_define + "#define GSV_STAGE_FRAGMENT 1\n" + c.glsl_define, 0) ==
               0);
     }
 
@@ -134,6 +136,7 @@ TEST_CASE("shader_source: user defines come in order after the built-ins and bef
     const auto source = gsv::preprocess_shader(main, options);
 
     const std::string expected_start = "#version 410 core\n"
+                                       "#line 100003 0\n"
                                        "#define GSV_PROFILE_CORE 1\n"
                                        "#define GSV_STAGE_FRAGMENT 1\n"
                                        "#define GSV_GLSL_VERSION 410\n"
@@ -150,7 +153,7 @@ TEST_CASE("shader_source: user defines come in order after the built-ins and bef
     CHECK(source.files[1] == main.lexically_normal().string());
     CHECK(source.files[2] == dir.path("inc/gsv/prelude_core.glsl").string());
     CHECK(source.main_file_index == 1);
-    CHECK(source.file_line_text(0, 5) == "#define LIGHTS 4");
+    CHECK(source.file_line_text(0, 6) == "#define LIGHTS 4");
 }
 
 TEST_CASE("shader_source: define names that GLSL reserves or cannot parse are rejected by name") {
@@ -286,6 +289,7 @@ TEST_CASE("shader_source: #line directives map every line back to its file") {
     SECTION("GLSL 3.30 and later: #line N numbers the next line N") {
         const auto source = gsv::preprocess_shader(main, bare_options({4, 1}));
         CHECK(source.text == "#version 410 core\n"
+                             "#line 100003 0\n"
                              "#define GSV_PROFILE_CORE 1\n"
                              "#define GSV_STAGE_FRAGMENT 1\n"
                              "#define GSV_GLSL_VERSION 410\n"
@@ -299,6 +303,7 @@ TEST_CASE("shader_source: #line directives map every line back to its file") {
     SECTION("before GLSL 3.30: #line N numbers the next line N + 1") {
         const auto source = gsv::preprocess_shader(main, bare_options({3, 0}, Profile::Compat));
         CHECK(source.text == "#version 130\n"
+                             "#line 100002 0\n"
                              "#define GSV_PROFILE_COMPAT 1\n"
                              "#define GSV_STAGE_FRAGMENT 1\n"
                              "#define GSV_GLSL_VERSION 130\n"
@@ -396,12 +401,19 @@ TEST_CASE("shader_source: translate_compile_log understands Mesa, NVIDIA and gls
         const std::string log = "ERROR: 2:3: 'return' : bad\r\n"
                                 "ERROR: 9:1: unknown source string\r\n"
                                 "ERROR: 2 compilation errors.  No code generated.\r\n"
-                                "0:7(1): error: past the end of the header";
+                                "0:100007(1): error: past the end of the header";
         CHECK(gsv::translate_compile_log(log, source) == lib + ":3: error: 'return' : bad\n    return c;\n"
                                                                "ERROR: 9:1: unknown source string\n"
                                                                "ERROR: 2 compilation errors.  No code generated.\n" +
                                                                gsv::kGeneratedHeaderName +
                                                                ":7: error: past the end of the header");
+    }
+    SECTION("Mesa's string 0 for a line it lost the file of is the main file's, said so") {
+        CHECK(gsv::translate_compile_log("0:2(1): error: value of type vec4 cannot be assigned to variable of type vec2", source) ==
+              gooch + ":2: error: value of type vec4 cannot be assigned to variable of type vec2 (the driver named no file: "
+                      "the main file's line)\n    void main() {}");
+        CHECK(gsv::translate_compile_log("0:100004(3): error: bad define", source) ==
+              std::string(gsv::kGeneratedHeaderName) + ":4: error: bad define\n    #define GSV_STAGE_FRAGMENT 1");
     }
     SECTION("the generated header is quoted too") {
         CHECK(gsv::translate_compile_log("0:1(10): error: GLSL 4.10 is not supported", source) ==
