@@ -31,6 +31,22 @@ void write_file(const std::filesystem::path& path, const std::string& text) {
     if (!out || !(out << text)) throw Error("cannot write '" + path.string() + "'");
 }
 
+// Every extra column any row has, in the order first seen: a series may measure what another cannot (lab 06's
+// isosurface rows carry hit errors the DVR rows lack), and each name keeps one column.
+std::vector<std::string> extra_columns(const std::vector<SweepRow>& rows) {
+    std::vector<std::string> names;
+    for (const auto& r : rows)
+        for (const auto& [name, value] : r.extra)
+            if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+    return names;
+}
+
+const double* extra_value(const SweepRow& row, const std::string& name) {
+    for (const auto& [n, value] : row.extra)
+        if (n == name) return &value;
+    return nullptr;
+}
+
 }  // namespace
 
 std::string SweepReport::table() const {
@@ -44,17 +60,19 @@ std::string SweepReport::table() const {
     std::snprintf(line, sizeof line, "%-12s %-10s %10s %8s %10s %8s", series.empty() ? "" : series.c_str(),
                   knob.c_str(), "ms/frame", "x first", "RMSE", "max diff");
     out << line;
-    if (!rows.empty())
-        for (const auto& [name, value] : rows.front().extra) out << " " << std::string(14 - std::min<std::size_t>(14, name.size()), ' ') << name;
+    const std::vector<std::string> extras = extra_columns(rows);
+    for (const auto& name : extras) out << " " << std::string(14 - std::min<std::size_t>(14, name.size()), ' ') << name;
     // Values are right-aligned under their names, however long the names are.
     out << "\n";
     for (const auto& r : rows) {
         std::snprintf(line, sizeof line, "%-12s %-10s %10.3f %8.2f %10.3f %8d", r.series.c_str(), r.knob.c_str(),
                       r.median_ms, base_ms > 0 ? r.median_ms / base_ms : 0.0, r.rmse, r.max_diff);
         out << line;
-        for (const auto& [name, value] : r.extra) {
+        for (const auto& name : extras) {
+            const int width = static_cast<int>(std::max<std::size_t>(14, name.size()));
             // %g: an error of 3e-8 must not print as 0.0000.
-            std::snprintf(line, sizeof line, " %*.4g", static_cast<int>(std::max<std::size_t>(14, name.size())), value);
+            if (const double* value = extra_value(r, name)) std::snprintf(line, sizeof line, " %*.4g", width, *value);
+            else std::snprintf(line, sizeof line, " %*s", width, "-");
             out << line;
         }
         out << "\n";
@@ -65,19 +83,50 @@ std::string SweepReport::table() const {
 std::string SweepReport::csv() const {
     std::ostringstream out;
     out << (series.empty() ? "series" : series) << "," << knob << ",median_ms,min_ms,rmse,max_diff";
-    if (!rows.empty())
-        for (const auto& [name, value] : rows.front().extra) out << "," << name;
+    const std::vector<std::string> extras = extra_columns(rows);
+    for (const auto& name : extras) out << "," << name;
     out << "\n";
     for (const auto& r : rows) {
         out << (r.series.empty() ? "-" : r.series) << "," << r.knob << "," << fixed(r.median_ms, 4) << ","
             << fixed(r.min_ms, 4) << "," << fixed(r.rmse, 4) << "," << r.max_diff;
-        for (const auto& [name, value] : r.extra) {
-            char number[32];
-            std::snprintf(number, sizeof number, "%.6g", value);
+        for (const auto& name : extras) {
+            // An empty cell where this row has no such measure: gnuplot skips it.
+            char number[32] = "";
+            if (const double* value = extra_value(r, name)) std::snprintf(number, sizeof number, "%.6g", *value);
             out << "," << number;
         }
         out << "\n";
     }
+    return out.str();
+}
+
+std::string SweepReport::markdown() const {
+    std::ostringstream out;
+    out << "| " << (series.empty() ? "" : series + " | ") << knob << " | ms/frame | RMSE | max diff";
+    const std::vector<std::string> extras = extra_columns(rows);
+    for (const auto& name : extras) out << " | " << name;
+    out << " |\n|";
+    const std::size_t columns = (series.empty() ? 4 : 5) + extras.size();
+    for (std::size_t i = 0; i < columns; ++i) out << (i < (series.empty() ? 1u : 2u) ? " --- |" : " ---: |");
+    out << "\n";
+    auto number = [](double value) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.4g", value);
+        return std::string(text);
+    };
+    for (const auto& r : rows) {
+        out << "| " << (series.empty() ? "" : r.series + " | ") << r.knob << " | " << number(r.median_ms) << " | "
+            << number(r.rmse) << " | " << r.max_diff;
+        for (const auto& name : extras) {
+            const double* value = extra_value(r, name);
+            out << " | " << (value ? number(*value) : "-");
+        }
+        out << " |\n";
+    }
+    // A pipe table's caption: ": text" after a blank line.
+    out << "\n: " << lab << ", " << width << "x" << height << ", " << gl << "; error against";
+    for (const auto& r : reference) out << " " << r;
+    out << ".\n";
     return out.str();
 }
 
@@ -89,6 +138,8 @@ std::vector<std::string> SweepReport::write(const std::filesystem::path& dir) co
     const auto gp_path = dir / (lab + "-sweep.gp");
     const auto png_path = dir / (lab + "-sweep.png");
     write_file(csv_path, csv());
+    const auto md_path = dir / (lab + "-sweep.md");
+    write_file(md_path, markdown());
 
     // One curve per series; x is the knob (log scale for numeric knobs spanning a decade or more).
     std::vector<std::string> series_values;
@@ -117,19 +168,19 @@ std::vector<std::string> SweepReport::write(const std::filesystem::path& dir) co
     gp << "set logscale y\n";  // errors fall by orders of magnitude as the knob converges
     int error_column = 5;
     std::string error_label = "RMSE against the reference (0-255)";
-    if (!plotted_error.empty() && !rows.empty())
-        for (std::size_t i = 0; i < rows.front().extra.size(); ++i)
-            if (rows.front().extra[i].first == plotted_error) {
-                error_column = 7 + static_cast<int>(i);  // after series, knob, median_ms, min_ms, rmse, max_diff
-                error_label = plotted_error;
-            }
+    const std::vector<std::string> extras = extra_columns(rows);
+    for (std::size_t i = 0; i < extras.size(); ++i)
+        if (!plotted_error.empty() && extras[i] == plotted_error) {
+            error_column = 7 + static_cast<int>(i);  // after series, knob, median_ms, min_ms, rmse, max_diff
+            error_label = plotted_error;
+        }
     plot(error_column, error_label);
     gp << "unset logscale y\n";
     plot(3, "median ms per frame");
     gp << "unset multiplot\n";
     write_file(gp_path, gp.str());
 
-    std::vector<std::string> written{csv_path.string(), gp_path.string()};
+    std::vector<std::string> written{csv_path.string(), md_path.string(), gp_path.string()};
     const std::string command = "cd \"" + dir.string() + "\" && gnuplot \"" + gp_path.filename().string() + "\" 2>&1";
     if (std::system("command -v gnuplot >/dev/null 2>&1") == 0) {
         if (std::system(command.c_str()) == 0) written.push_back(png_path.string());

@@ -26,7 +26,11 @@ struct SweepReport {
 
     std::string table() const;
     std::string csv() const;
-    // Writes <lab>-sweep.csv, <lab>-sweep.gp and, when gnuplot is installed, <lab>-sweep.png; returns the paths.
+    // The table as a Markdown pipe table, numbers to 4 significant digits, with a caption (pandoc's ": text")
+    // naming the machine, the size and the reference: what the slides include.
+    std::string markdown() const;
+    // Writes <lab>-sweep.csv, <lab>-sweep.md, <lab>-sweep.gp and, when gnuplot is installed, <lab>-sweep.png;
+    // returns the paths.
     std::vector<std::string> write(const std::filesystem::path& dir) const;
 };
 

@@ -9,7 +9,7 @@ debian_packages=(
   libegl-dev libgl-dev libgl1-mesa-dri libegl-mesa0 libosmesa6-dev
   libimgui-dev
   python3-glad glslang-tools python-matplotlib-data python3-nibabel
-  xvfb xauth imagemagick gnuplot-nox
+  xvfb xauth imagemagick gnuplot-nox pandoc
 )
 
 if [ "$(uname -s)" = "Darwin" ]; then

@@ -1,6 +1,8 @@
 // Every lab binary, run as students, lecturers, CI and the grader run it.
 #include "catch.hpp"
 #include "test_support.h"
+
+#include "common/sweep_report.h"
 #include "gl_fixture.h"
 #include "grader_fixture.h"
 #include "lab_runner.h"
@@ -258,5 +260,29 @@ TEST_CASE("lab01: sweep mode writes the accuracy-vs-time table, CSV and plot", "
     REQUIRE(rows[18].rfind("fragment,128,", 0) == 0);
     CHECK(column(rows[8], 4) > 1.5 * column(rows[18], 4));
     CHECK(fs::exists(dir / "lab01-sweep.gp"));
+    // The same rows as a Markdown table for the slides: a header, a separator and one line per row.
+    const std::string md = test::read_text(dir / "lab01-sweep.md");
+    CHECK(md.rfind("| shading_rate | mesh_resolution | ms/frame | RMSE | max diff |", 0) == 0);
+    CHECK(md.find("\n| fragment | 512 | ") != std::string::npos);
+    CHECK(test::count_of(md, "\n| ") == 1 + 20);  // the separator, then 2 shading rates x 10 resolutions
     if (std::system("command -v gnuplot >/dev/null 2>&1") == 0) CHECK(fs::file_size(dir / "lab01-sweep.png") > 1000);
+}
+
+TEST_CASE("sweep report: a measure only some rows have gets one column, blank or '-' where a row lacks it", "[labs]") {
+    SweepReport report;
+    report.lab = "labX";
+    report.knob = "k";
+    report.series = "mode";
+    report.rows = {{"a", "1", 2.0, 2.0, 0.5, 3, {{"shared", 1.0}}},
+                   {"b", "1", 4.0, 4.0, 0.25, 2, {{"only_b", 7.0}, {"shared", 2.0}}}};
+    const auto csv = test::lines_of(report.csv());
+    REQUIRE(csv.size() == 3);
+    CHECK(csv[0] == "mode,k,median_ms,min_ms,rmse,max_diff,shared,only_b");
+    CHECK(csv[1] == "a,1,2.0000,2.0000,0.5000,3,1,");
+    CHECK(csv[2] == "b,1,4.0000,4.0000,0.2500,2,2,7");
+    const std::string md = report.markdown();
+    CHECK(md.find("| mode | k | ms/frame | RMSE | max diff | shared | only_b |") == 0);
+    CHECK(md.find("| a | 1 | 2 | 0.5 | 3 | 1 | - |") != std::string::npos);
+    CHECK(md.find("| b | 1 | 4 | 0.25 | 2 | 2 | 7 |") != std::string::npos);
+    CHECK(report.table().find("only_b") != std::string::npos);
 }
