@@ -1,10 +1,9 @@
 // Lab 01, part 1: the classic diffuse + specular shader, the first thing to write in GLSL.
 #pragma once
+#include "gsv/not_done.glsl"
 
 uniform float uShininess;     // the Phong exponent: larger is a smaller, sharper highlight
 uniform float uSpecularStrength;  // strength of the white highlight
-
-const vec3 kNotDone = vec3(1.0, 0.0, 1.0);  // magenta: this part of the lab is still to be written
 
 // TODO(L01-T2): the diffuse (Lambert) term. n and l are unit vectors in eye space.
 // Light arriving from behind the surface (n.l < 0) adds nothing; keep a little ambient light

@@ -51,7 +51,7 @@ public:
             {"grazing-mesh", "the same view of real geometry: the ridges stand up", {"camera_pitch=8", "camera_distance=2", "geometry=mesh", "mesh_n=256"}},
             {"topobathy", "land and sea off Vancouver Island", {"terrain=topobathy", "exaggeration=8"}},
             {"franke", "Franke's function: exact normals known", {"terrain=franke"}},
-            {"terraces", "8-bit heights: terraces", {"terrain=franke", "heights8=on", "grid=512", "exaggeration=6"}},
+            {"terraces", "8-bit heights: terraces", {"terrain=franke", "heights8=on", "grid=512", "exaggeration=6", "colouring=plain"}},
             {"zoomed-out", "far away without mipmaps: the normals alias", {"camera_distance=7"}},
             {"zoomed-out-mipmaps", "far away with mipmaps", {"camera_distance=7", "mipmaps=on"}},
         };
