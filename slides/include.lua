@@ -12,7 +12,8 @@ function CodeBlock(block)
     if file then
       local text = file:read('a')
       file:close()
-      return pandoc.read(text, 'markdown').blocks
+      -- In a div of class "sweep", which the deck style keeps from wrapping numbers like 4.6e-07.
+      return pandoc.Div(pandoc.read(text, 'markdown').blocks, pandoc.Attr('', {'sweep'}))
     end
   end
   error('include: cannot find ' .. name .. ' (looked in ' .. table.concat(PANDOC_STATE.resource_path, ', ') .. ')')

@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Checks the built slide decks in a real browser (headless Chromium, driven over the DevTools protocol on a
-pipe, with nothing but the standard library): each deck opens, every image has loaded with a size, the page
-logs no error and throws no exception, and a screenshot of its first slide is not one flat colour. Also checks
-that every link and image path in the Markdown sources resolves. Usage:
+pipe, with nothing but the standard library): each deck opens, every image has loaded with a size, every slide's
+content fits its page, the page logs no error and throws no exception, and a screenshot of its first slide is
+not one flat colour. Also checks that every link and image path in the Markdown sources resolves. Usage:
     check_slides.py SLIDES_SOURCE_DIR BUILT_SLIDES_DIR
 Exit status 0 when every check passes; each failure is one line naming the deck."""
 import base64
@@ -183,6 +183,15 @@ def check_deck(browser, path):
                                                "returnByValue": True}, session=session)["result"]["value"]
     if slides < 2:
         failures.append(f"{deck}: {slides} slides")
+    # A slide is a fixed 800 x 600 page that hides what does not fit: text or a table past its edge is lost
+    # in the lecture hall.
+    overflowing = browser.call("Runtime.evaluate", {
+        "expression": "Array.from(document.querySelectorAll('section')).map((s, i) => [i + 1, "
+                      "(s.querySelector('h1, h2') || {}).textContent || '', s.scrollWidth - s.clientWidth, "
+                      "s.scrollHeight - s.clientHeight]).filter(a => a[2] > 2 || a[3] > 2)",
+        "returnByValue": True}, session=session)["result"]["value"]
+    for number, title, wide, tall in overflowing:
+        failures.append(f"{deck}: slide {number} '{title}' does not fit its page ({wide} px too wide, {tall} px too tall)")
     shot = base64.b64decode(browser.call("Page.captureScreenshot", {"format": "png"}, session=session)["data"])
     if png_is_flat(shot):
         failures.append(f"{deck}: the screenshot of its first slide is one flat colour")
