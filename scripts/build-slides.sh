@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds the decks in slides/ into BUILD/slides/<deck>.html, offline, with pandoc's dzslides (its JavaScript
-# and CSS are in pandoc's own template, and --self-contained puts every image into the page).
+# and CSS are in pandoc's own template, and --self-contained puts every image into the page), and, where
+# Chromium is installed, prints each to BUILD/slides/<deck>.pdf.
 # First every figure the decks name under figures/ is made by the reference solutions and their sweeps, in
 # BUILD/slides/figures: nothing in a deck is drawn by hand or committed, except the grader's golden images,
 # which the solutions render too. Usage: scripts/build-slides.sh [BUILD]   (default: build)
@@ -40,6 +41,10 @@ mkdir -p "$figures/lab06-debug"
 "$bin/lab06_solution" render --case probe --size 256x256 --debug-images --out "$figures/lab06-debug/probe.png" \
   >"$figures/lab06-debug.log" 2>&1 || { cat "$figures/lab06-debug.log" >&2; exit 1; }
 
+# With Chromium there, each deck is also printed to PDF, a slide a page (deck-style.html's print rules).
+chromium="$(command -v chromium || command -v chromium-browser || command -v google-chrome || true)"
+[ -n "$chromium" ] || echo "build-slides: no Chromium, so HTML only (no PDF)"
+
 status=0
 for deck in "$root"/slides/*.md; do
   name="$(basename "$deck" .md)"
@@ -48,6 +53,17 @@ for deck in "$root"/slides/*.md; do
        --resource-path="$root/slides:$out" \
        --metadata pagetitle="$name" --output "$out/$name.html" "$deck"; then
     echo "build-slides: wrote $out/$name.html"
+    if [ -n "$chromium" ]; then
+      rm -f "$out/$name.pdf"
+      timeout 120 "$chromium" --headless=new --no-sandbox --disable-gpu --no-pdf-header-footer \
+        --user-data-dir="$out/.chromium" --print-to-pdf="$out/$name.pdf" "file://$out/$name.html" >/dev/null 2>&1 || true
+      if [ -s "$out/$name.pdf" ]; then
+        echo "build-slides: wrote $out/$name.pdf"
+      else
+        echo "build-slides: Chromium did not print $out/$name.pdf" >&2
+        status=1
+      fi
+    fi
   else
     echo "build-slides: $deck did not build" >&2
     status=1

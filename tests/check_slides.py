@@ -2,7 +2,8 @@
 """Checks the built slide decks in a real browser (headless Chromium, driven over the DevTools protocol on a
 pipe, with nothing but the standard library): each deck opens, every image has loaded with a size, every slide's
 content fits its page, the page logs no error and throws no exception, and a screenshot of its first slide is
-not one flat colour. Also checks that every link and image path in the Markdown sources resolves. Usage:
+not one flat colour; and that its PDF has a page a slide. Also checks that every link and image path in the
+Markdown sources resolves. Usage:
     check_slides.py SLIDES_SOURCE_DIR BUILT_SLIDES_DIR
 Exit status 0 when every check passes; each failure is one line naming the deck."""
 import base64
@@ -230,6 +231,15 @@ def main():
                 continue
             found, images, slides = check_deck(browser, html)
             failures += found
+            # The printed copy: one page a slide.
+            pdf = os.path.join(built_dir, deck + ".pdf")
+            if not os.path.exists(pdf):
+                failures.append(f"{deck}.md: no {pdf} was printed")
+            else:
+                with open(pdf, "rb") as f:
+                    pages = len(re.findall(rb"/Type\s*/Page[^s]", f.read()))
+                if pages != slides:
+                    failures.append(f"{deck}.pdf: {pages} pages for {slides} slides")
             print(f"check_slides: {deck}.html: {slides} slides, {images} images" + ("" if found else ", fine"))
     finally:
         browser.close()
