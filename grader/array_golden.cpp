@@ -1,7 +1,7 @@
 #include "grader/array_golden.h"
 
-#include "common/error.h"
-#include "common/little_endian.h"
+#include "common/core/error.h"
+#include "common/io/little_endian.h"
 
 #include <algorithm>
 #include <cstring>

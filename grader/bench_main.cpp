@@ -1,6 +1,6 @@
 // gsv-bench-grader: how long grading every public case of every lab takes (student and live reference,
 // no timing checks), and where that time goes. A benchmark, not a test: it prints, it never fails on speed.
-#include "common/error.h"
+#include "common/core/error.h"
 #include "grader/grade.h"
 
 #include <chrono>

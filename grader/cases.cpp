@@ -1,7 +1,8 @@
 #include "grader/cases.h"
 
-#include "common/error.h"
-#include "common/json.h"
+#include "common/app/case_file.h"
+#include "common/core/error.h"
+#include "common/io/json.h"
 #include "grader/draw.h"
 
 #include <algorithm>
@@ -55,19 +56,17 @@ void parse_size(const std::string& size, const std::string& file, int& width, in
 }
 
 GradeCase case_from(const Json& c, const std::string& file) {
-    static const std::regex name_pattern(R"(^[a-z0-9][a-z0-9-]{0,40}$)");
     static const std::regex todo_pattern(R"(^L[0-9]{2}-T[0-9]+$)");
+    RenderCase named = named_case_from(c);
     GradeCase gc;
-    gc.name = c.string_at("name");
-    if (!std::regex_match(gc.name, name_pattern))
-        throw Error(file + ": case name '" + gc.name + "' must be lower-case letters, digits and '-' (it names a folder)");
+    gc.name = std::move(named.name);
+    gc.description = std::move(named.description);
+    gc.settings = std::move(named.settings);
     gc.todo = c.string_at("todo");
     if (!std::regex_match(gc.todo, todo_pattern))
         throw Error(file + ": case '" + gc.name + "' has todo '" + gc.todo + "', expected an id like L01-T2");
-    gc.description = c.string_or("description", "");
     gc.points = c.number_or("points", 1);
     if (gc.points < 0) throw Error(file + ": case '" + gc.name + "' has negative points");
-    for (const Json& s : c.array_at("settings").as_array()) gc.settings.push_back(s.as_string());
     if (const Json* timing = c.find("timing")) {
         gc.timing.points = timing->number_at("points");
         gc.timing.max_ratio = timing->number_or("max_ratio", 2);

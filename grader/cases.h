@@ -2,7 +2,7 @@
 // A lab's grading cases, declared as data: the public ones in grader/cases/<lab>.json (shipped to
 // students, with golden images), the hidden ones in grader/hidden/<lab>.json (instructors only), whose
 // parameters are drawn from the seed given at grading time.
-#include "common/image_compare.h"
+#include "common/image/image_compare.h"
 #include "grader/array_compare.h"
 
 #include <cstdint>
@@ -33,7 +33,7 @@ struct LabCases {
     int width = 256, height = 256;
     ImageTolerance live_tolerance;    // against the reference rendered in the same run, same machine
     ImageTolerance golden_tolerance;  // against committed golden images: another GPU and driver
-    // "tolerance": {"arrays": ...}: the lab hands in numbers that are checked too (common/data_array.h); none:
+    // "tolerance": {"arrays": ...}: the lab hands in numbers that are checked too (common/io/data_array.h); none:
     // only images are. Against goldens "arrays_golden" where given, else "arrays".
     std::optional<ArrayTolerance> live_array_tolerance, golden_array_tolerance;
     bool checks_arrays() const { return live_array_tolerance.has_value(); }

@@ -1,6 +1,6 @@
 #include "grader/data_check.h"
 
-#include "common/error.h"
+#include "common/core/error.h"
 #include "grader/array_golden.h"
 
 

@@ -1,6 +1,6 @@
 #include "grader/draw.h"
 
-#include "common/error.h"
+#include "common/core/error.h"
 
 #include <chrono>
 #include <cstdio>

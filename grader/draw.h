@@ -2,7 +2,7 @@
 // Hidden cases draw their parameters from a seed given at grading time, so an image baked into a
 // submission cannot match. The same seed draws the same cases on every machine (our own splitmix64,
 // not the standard library's distributions, whose output differs between implementations).
-#include "common/json.h"
+#include "common/io/json.h"
 
 #include <cstdint>
 #include <string>

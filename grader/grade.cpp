@@ -1,8 +1,8 @@
 #include "grader/grade.h"
 
-#include "common/error.h"
-#include "common/image.h"
-#include "common/json.h"
+#include "common/core/error.h"
+#include "common/image/image.h"
+#include "common/io/json.h"
 #include "grader/array_golden.h"
 #include "grader/cases.h"
 #include "grader/data_check.h"

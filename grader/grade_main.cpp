@@ -1,8 +1,8 @@
 // gsv-grade: grades a submission (or the kit's own labs/) headless, prints the score table and writes the
 // reports; or grades a folder of submissions with N workers.
-#include "common/assets.h"
-#include "common/error.h"
-#include "common/json.h"
+#include "common/app/assets.h"
+#include "common/core/error.h"
+#include "common/io/json.h"
 #include "grader/batch.h"
 #include "grader/draw.h"
 #include "grader/grade.h"

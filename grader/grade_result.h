@@ -2,7 +2,7 @@
 // What grading found: one result per check (a case's image and the numbers its lab hands in, or its frame
 // time against the reference's), the per-lab builds, and how the run was set up. The reports are written from
 // this.
-#include "common/image_compare.h"
+#include "common/image/image_compare.h"
 #include "grader/array_compare.h"
 
 #include <cstdint>

@@ -1,7 +1,7 @@
 #include "grader/lab_arrays.h"
 
-#include "common/error.h"
-#include "common/json.h"
+#include "common/core/error.h"
+#include "common/io/json.h"
 
 #include <set>
 

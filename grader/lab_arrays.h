@@ -1,10 +1,10 @@
 #pragma once
 // Reads back the arrays a lab's JSON report lists ("arrays": [{"name", "file", "components", "count"}], written
-// by render mode beside the image, common/data_array.h). The lab may be student code, so nothing in the report
+// by render mode beside the image, common/io/data_array.h). The lab may be student code, so nothing in the report
 // is taken on trust: each file must be <png stem>.<name>.f32 beside the image in the lab's working folder, a
 // plain file of exactly count x components float32; names valid and distinct; 1..16 components; at most
 // kMaxArrays arrays of kMaxArrayFloats values in all. Sizes are checked before anything is allocated.
-#include "common/data_array.h"
+#include "common/io/data_array.h"
 
 #include <filesystem>
 #include <vector>

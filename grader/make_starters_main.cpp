@@ -1,6 +1,6 @@
 // gsv-make-starters: generates labs/ (the students' starters) from the annotated solutions/, or checks
 // that the committed starters are what the solutions generate.
-#include "common/error.h"
+#include "common/core/error.h"
 #include "grader/starter.h"
 
 #include <cstdio>

@@ -1,7 +1,7 @@
 #include "grader/report.h"
 #include "grader/report_format.h"
 
-#include "common/json.h"
+#include "common/io/json.h"
 
 #include <cinttypes>
 #include <cmath>

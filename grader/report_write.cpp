@@ -1,6 +1,6 @@
 #include "grader/report.h"
 
-#include "common/error.h"
+#include "common/core/error.h"
 
 #include <fstream>
 #include <system_error>

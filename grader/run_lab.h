@@ -5,8 +5,8 @@
 #include "grader/cases.h"
 #include "grader/grade_result.h"
 #include "grader/process.h"
-#include "common/data_array.h"
-#include "common/image.h"
+#include "common/io/data_array.h"
+#include "common/image/image.h"
 
 #include <filesystem>
 #include <optional>
@@ -35,7 +35,7 @@ struct LabRunner {
 };
 
 // Tells the failure classes apart from how the process ended and the exit status the lab framework
-// gives each (common/app.h); Passed when it exited 0.
+// gives each (common/app/app.h); Passed when it exited 0.
 CaseStatus classify(const ProcessResult& r, std::string& detail);
 
 }  // namespace gsv

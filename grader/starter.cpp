@@ -1,6 +1,6 @@
 #include "grader/starter.h"
 
-#include "common/error.h"
+#include "common/core/error.h"
 
 #include <algorithm>
 #include <fstream>

@@ -1,7 +1,7 @@
 #pragma once
 // Helpers for tests that need a GL context: one headless context per test, programs from tests/shaders.
-#include "common/context.h"
-#include "common/shader_program.h"
+#include "common/context/context.h"
+#include "common/shader/shader_program.h"
 
 #include <filesystem>
 #include <memory>

@@ -6,7 +6,7 @@
 #include "lab_runner.h"
 #include "test_support.h"
 
-#include "common/json.h"
+#include "common/io/json.h"
 #include "grader/grade.h"
 
 #include <algorithm>

@@ -1,7 +1,7 @@
 #pragma once
 // Runs the built lab binaries the way a student, the grader or CI would.
-#include "common/image.h"
-#include "common/json.h"
+#include "common/image/image.h"
+#include "common/io/json.h"
 #include "grader/process.h"
 
 #include <filesystem>

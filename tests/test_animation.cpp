@@ -2,13 +2,13 @@
 #include "catch.hpp"
 #include "test_support.h"
 
-#include "common/animation.h"
-#include "common/app_session.h"
-#include "common/error.h"
-#include "common/gl.h"
-#include "common/gpu_mesh.h"
-#include "common/image.h"
-#include "common/png_chunks.h"
+#include "common/image/animation.h"
+#include "common/app/app_session.h"
+#include "common/core/error.h"
+#include "common/gl/gl.h"
+#include "common/gl/gpu_mesh.h"
+#include "common/image/image.h"
+#include "common/image/png_chunks.h"
 
 #include <cstring>
 #include <fstream>
@@ -209,13 +209,16 @@ public:
     explicit PulseLab(bool animated = true, std::vector<double>* phases_seen = nullptr)
         : animated_(animated), phases_seen_(phases_seen) {}
 
-    LabInfo info() const override { return {"pulse", "animate mode test lab"}; }
-    void declare(Params& params, std::vector<RenderCase>& cases) override {
+    LabInfo info() const override {
+        LabInfo info{"pulse", "animate mode test lab"};
+        info.case_file = "tests/shaders/pulse_cases.json";
+        return info;
+    }
+    void declare(Params& params) override {
         ParamSpec& phase = params.add_float("phase", 0.25, 0, 1, "the animated parameter");
         if (animated_) phase.animated();
         params.add_float("tint", 0, 0, 1, "green, set with --set or a case");
         params.add_bool("poison", false, "NaN from phase 0.5 on");
-        cases.push_back({"green", "tint 1", {"tint=1"}});
     }
     void setup(LabKit& kit) override {
         quad_ = std::make_unique<GpuMesh>(make_fullscreen_quad(), kit.profile());
@@ -255,7 +258,9 @@ std::string usage_error(const std::vector<std::string>& args, bool animated = tr
     Session s;
     s.lab = std::make_unique<PulseLab>(animated);
     s.info = s.lab->info();
-    s.lab->declare(s.params, s.cases);
+    s.lab->declare(s.params);
+    s.defaults = s.params;
+    s.lab_dir = "tests/shaders";
     std::vector<const char*> argv{"pulse"};
     for (const auto& a : args) argv.push_back(a.c_str());
     return test::gsv_error_message([&] {

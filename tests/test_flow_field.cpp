@@ -1,7 +1,7 @@
 #include "catch.hpp"
 
-#include "common/error.h"
-#include "common/flow_field.h"
+#include "common/core/error.h"
+#include "support/flow/flow_field.h"
 #include "test_support.h"
 
 #include <algorithm>

@@ -3,16 +3,16 @@
 #include "gl_fixture.h"
 #include "test_support.h"
 
-#include "common/buffer.h"
-#include "common/error.h"
-#include "common/framebuffer.h"
-#include "common/gl.h"
-#include "common/gpu_mesh.h"
-#include "common/image_compare.h"
-#include "common/shader_library.h"
-#include "common/texture.h"
-#include "common/timing.h"
-#include "common/transforms.h"
+#include "common/gl/buffer.h"
+#include "common/core/error.h"
+#include "common/gl/framebuffer.h"
+#include "common/gl/gl.h"
+#include "common/gl/gpu_mesh.h"
+#include "common/image/image_compare.h"
+#include "common/shader/shader_library.h"
+#include "common/gl/texture.h"
+#include "common/timing/timing.h"
+#include "common/scene/transforms.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

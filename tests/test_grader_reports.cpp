@@ -3,9 +3,9 @@
 #include "catch.hpp"
 #include "test_support.h"
 
-#include "common/error.h"
-#include "common/image.h"
-#include "common/json.h"
+#include "common/core/error.h"
+#include "common/image/image.h"
+#include "common/io/json.h"
 #include "grader/grade_result.h"
 #include "grader/report.h"
 #include "grader/report_format.h"

@@ -1,9 +1,9 @@
 #include "catch.hpp"
 
-#include "common/error.h"
-#include "common/height_field.h"
-#include "common/terrain_normal.h"
-#include "common/terrain_procedural.h"
+#include "common/core/error.h"
+#include "support/terrain/height_field.h"
+#include "support/terrain/terrain_normal.h"
+#include "support/terrain/terrain_procedural.h"
 #include "gl_fixture.h"
 #include "test_support.h"
 

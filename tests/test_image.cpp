@@ -9,9 +9,9 @@
 
 #include "catch.hpp"
 #include "test_support.h"
-#include "common/error.h"
-#include "common/image.h"
-#include "common/image_compare.h"
+#include "common/core/error.h"
+#include "common/image/image.h"
+#include "common/image/image_compare.h"
 
 namespace fs = std::filesystem;
 

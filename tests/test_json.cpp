@@ -7,8 +7,8 @@
 
 #include "catch.hpp"
 #include "test_support.h"
-#include "common/error.h"
-#include "common/json.h"
+#include "common/core/error.h"
+#include "common/io/json.h"
 
 namespace fs = std::filesystem;
 

@@ -11,9 +11,9 @@
 #include "catch.hpp"
 #include "test_support.h"
 
-#include "common/image.h"
-#include "common/json.h"
-#include "common/transforms.h"
+#include "common/image/image.h"
+#include "common/io/json.h"
+#include "common/scene/transforms.h"
 
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -270,7 +270,7 @@ Reference trace_reference(const LabParams& p, int width, int height) {
     return ref;
 }
 
-// to_rgba8 in common/image.cpp: clamp, then round to the nearest of 256 levels.
+// to_rgba8 in common/image/image.cpp: clamp, then round to the nearest of 256 levels.
 int to_level(double value) { return static_cast<int>(std::lround(std::clamp(value, 0.0, 1.0) * 255.0)); }
 
 // Compared: well inside the outline, on one side of the surface (the whole 3x3 neighbourhood is

@@ -20,10 +20,10 @@
 #include "lab_runner.h"
 #include "test_support.h"
 
-#include "common/flow_field.h"
-#include "common/image.h"
-#include "common/json.h"
-#include "common/noise.h"
+#include "support/flow/flow_field.h"
+#include "common/image/image.h"
+#include "common/io/json.h"
+#include "support/flow/noise.h"
 
 #include <glm/glm.hpp>
 
@@ -252,7 +252,7 @@ std::vector<LicPixel> cpu_image(const CpuLic& lic, int width, int height) {
     return image;
 }
 
-// to_rgba8 in common/image.cpp: clamp, then round to the nearest of 256 levels.
+// to_rgba8 in common/image/image.cpp: clamp, then round to the nearest of 256 levels.
 int to_level(double value) { return static_cast<int>(std::lround(std::clamp(value, 0.0, 1.0) * 255.0)); }
 
 // ---------------------------------------------------------------------------------------------

@@ -4,16 +4,16 @@
 #include "lab_runner.h"
 #include "test_support.h"
 
-#include "common/animation.h"
-#include "common/flow_field.h"
-#include "common/framebuffer.h"
-#include "common/gl.h"
-#include "common/gpu_mesh.h"
-#include "common/image_compare.h"
-#include "common/mesh_data.h"
-#include "common/splitmix64.h"
-#include "common/texture.h"
-#include "common/time_slices.h"
+#include "common/image/animation.h"
+#include "support/flow/flow_field.h"
+#include "common/gl/framebuffer.h"
+#include "common/gl/gl.h"
+#include "common/gl/gpu_mesh.h"
+#include "common/image/image_compare.h"
+#include "common/scene/mesh_data.h"
+#include "common/core/splitmix64.h"
+#include "common/gl/texture.h"
+#include "support/flow/time_slices.h"
 
 #include <cctype>
 #include <cmath>

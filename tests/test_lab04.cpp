@@ -5,7 +5,7 @@
 #include "lab_runner.h"
 #include "test_support.h"
 
-#include "common/image.h"
+#include "common/image/image.h"
 
 #include <cstdlib>
 #include <map>

@@ -1,15 +1,15 @@
 // Lab 05's hard cases, through the lab's own compute shader (solutions/lab05_particles/advect.comp) on
 // buffers the test fills: particles placed exactly where things go wrong, checked against the CPU's update
 // (common/particle_*) in float and in double.
-#include "common/buffer.h"
-#include "common/compute.h"
-#include "common/context.h"
-#include "common/error.h"
-#include "common/gl.h"
-#include "common/particle_cpu.h"
-#include "common/particle_grid.h"
-#include "common/particle_motion.h"
-#include "common/texture.h"
+#include "common/gl/buffer.h"
+#include "common/gl/compute.h"
+#include "common/context/context.h"
+#include "common/core/error.h"
+#include "common/gl/gl.h"
+#include "support/particles/particle_cpu.h"
+#include "support/particles/particle_grid.h"
+#include "support/particles/particle_motion.h"
+#include "common/gl/texture.h"
 #include "gl_fixture.h"
 
 #include "catch.hpp"

@@ -1,6 +1,6 @@
 // Lab 05 as students and lecturers run it: the lab binary's render, animate and sweep modes, its refusals,
 // and the particle buffers it hands the grader.
-#include "common/image.h"
+#include "common/image/image.h"
 #include "lab_runner.h"
 #include "test_support.h"
 

@@ -1,8 +1,8 @@
 // Lab 06 as students and lecturers run it: its network (in code and from files), the visual debugging
 // images, the camera inside the volume, clipping everything away, the errors a processor reports, and the
 // sweep against the analytic Marschner-Lobb isosurface.
-#include "common/image.h"
-#include "common/image_compare.h"
+#include "common/image/image.h"
+#include "common/image/image_compare.h"
 #include "gl_fixture.h"
 #include "lab_runner.h"
 #include "test_support.h"

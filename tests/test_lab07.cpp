@@ -6,14 +6,14 @@
 #include "lab_runner.h"
 #include "test_support.h"
 
-#include "common/buffer_texture.h"
-#include "common/framebuffer.h"
-#include "common/gl.h"
-#include "common/gpu_mesh.h"
-#include "common/image.h"
-#include "common/lagrange.h"
-#include "common/shader_program.h"
-#include "common/spectral_mesh.h"
+#include "common/gl/buffer_texture.h"
+#include "common/gl/framebuffer.h"
+#include "common/gl/gl.h"
+#include "common/gl/gpu_mesh.h"
+#include "common/image/image.h"
+#include "support/spectral/lagrange.h"
+#include "common/shader/shader_program.h"
+#include "support/spectral/spectral_mesh.h"
 
 #include <cmath>
 #include <map>

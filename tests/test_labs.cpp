@@ -2,12 +2,13 @@
 #include "catch.hpp"
 #include "test_support.h"
 
-#include "common/sweep_report.h"
+#include "common/app/case_file.h"
+#include "common/app/sweep_report.h"
 #include "gl_fixture.h"
 #include "grader_fixture.h"
 #include "lab_runner.h"
 
-#include "common/image_compare.h"
+#include "common/image/image_compare.h"
 #include "grader/grade.h"
 
 #include <fstream>
@@ -26,6 +27,28 @@ std::vector<std::string> labs_on_gl41() {
     for (std::string lab; std::getline(list, lab, ',');)
         if (!lab.empty() && lab != "lab05") labs.push_back(lab);
     return labs;
+}
+
+// The public case file is the one declaration of a lab's named cases: `list` shows every one, and each renders
+// by name in the solution and in the starter (which draws its "not done" colour, but must know the case).
+void every_case_renders_by_name(const std::string& lab) {
+    INFO(lab);
+    const std::vector<RenderCase> cases = read_case_file(test::source_root() / "grader" / "cases" / (lab + ".json"), lab);
+    REQUIRE(cases.size() >= 8);
+    const auto dir = test::temp_dir("cases-" + lab);
+    const test::LabRun list = test::run_lab(lab + "_solution", {"list"}, dir);
+    REQUIRE(list.exit_code() == 0);
+    for (const auto& c : cases) {
+        INFO(c.name);
+        CHECK(list.process.output.find("  " + c.name + " ") != std::string::npos);
+        for (const std::string binary : {lab + "_solution", lab}) {
+            const test::LabRun run = test::run_lab(binary, {"render", "--case", c.name, "--size", "24x24", "--frames", "1",
+                                                            "--warmup", "0", "--out", (dir / (c.name + ".png")).string()},
+                                                   dir);
+            INFO(binary << ": " << run.process.output);
+            CHECK(run.exit_code() == 0);
+        }
+    }
 }
 
 Image must_render(const test::LabRun& run) {
@@ -55,6 +78,49 @@ int line_of(const fs::path& file, const std::string& needle) {
 
 }  // namespace
 
+TEST_CASE("labs: every case and demo of each public case file renders by name, starter and solution", "[labs]") {
+    for (const auto& lab : labs_on_gl41()) every_case_renders_by_name(lab);
+}
+
+TEST_CASE("lab05: every case and demo of its public case file renders by name, starter and solution", "[labs][gl43]") {
+    every_case_renders_by_name("lab05");
+}
+
+TEST_CASE("labs: a case file's mistake is named where it is written, and without the file --set still works", "[labs]") {
+    const fs::path root = copy_of_lab01("case-file");
+    fs::create_directories(root / "grader" / "cases");
+    const std::string original = test::read_text(test::source_root() / "grader" / "cases" / "lab01.json");
+    const auto write_cases = [&](const std::string& from, const std::string& to) {
+        std::string text = original;
+        REQUIRE(text.find(from) != std::string::npos);
+        text.replace(text.find(from), from.size(), to);
+        std::ofstream(root / "grader" / "cases" / "lab01.json") << text;
+        return line_of(root / "grader" / "cases" / "lab01.json", to);
+    };
+    const std::vector<std::string> env{"GSV_ROOT=" + root.string()};
+    const auto dir = test::temp_dir("case-file-out");
+    const int line = write_cases("\"mesh_resolution=8\"", "\"mesh_resolutoin=8\"");
+    for (const std::vector<std::string> args : {std::vector<std::string>{"list"},
+                                               std::vector<std::string>{"render", "--case", "gooch", "--out", "x.png"}}) {
+        const test::LabRun run = test::run_lab("lab01_solution", args, dir, env);
+        INFO(run.process.output);
+        CHECK(run.exit_code() != 0);
+        CHECK(run.process.output.find("lab01.json:" + std::to_string(line) + ":") != std::string::npos);
+        CHECK(run.process.output.find("unknown parameter 'mesh_resolutoin'") != std::string::npos);
+    }
+    write_cases("\"mesh_resolution=8\"", "\"mesh_resolution=99999\"");
+    const test::LabRun range = test::run_lab("lab01_solution", {"list"}, dir, env);
+    CHECK(range.exit_code() != 0);
+    CHECK(range.process.output.find("99999") != std::string::npos);
+    // Without its case file a lab still renders what --set asks for, as the grader runs it; --case names the file.
+    fs::remove(root / "grader" / "cases" / "lab01.json");
+    CHECK(test::render("lab01_solution", {"shading=phong"}, dir, "no-case-file", {}, env).exit_code() == 0);
+    const test::LabRun missing = test::run_lab("lab01_solution", {"render", "--case", "gooch", "--out", "y.png"}, dir, env);
+    CHECK(missing.exit_code() != 0);
+    CHECK(missing.process.output.find("cannot find the case file") != std::string::npos);
+    CHECK(missing.process.output.find("lab01.json") != std::string::npos);
+}
+
 TEST_CASE("labs: every lab but 05 runs on an OpenGL 4.1 core context and renders the same image", "[labs]") {
     const auto dir = test::temp_dir("gl41");
     for (const auto& lab : labs_on_gl41()) {
@@ -81,7 +147,7 @@ TEST_CASE("labs: a context below what the lab needs stops with one clear line an
 
 TEST_CASE("lab01: core and compat profiles, EGL and OSMesa backends give the same image", "[labs]") {
     const auto dir = test::temp_dir("profiles");
-    for (const char* name : {"gooch", "phong", "teapot", "cut-open", "per-vertex"}) {
+    for (const char* name : {"gooch", "phong", "silhouette", "back-faces", "per-vertex"}) {
         INFO(name);
         const Image core = must_render(test::render("lab01_solution", {}, dir, std::string(name) + "-core", {"--case", name}));
         const Image compat = must_render(test::render("lab01_solution", {}, dir, std::string(name) + "-compat",

@@ -1,11 +1,11 @@
-// Lab 07's interpolation and meshes on the CPU (common/lagrange.h, common/spectral_mesh.h): the node sets,
+// Lab 07's interpolation and meshes on the CPU (support/spectral/lagrange.h, support/spectral/spectral_mesh.h): the node sets,
 // barycentric evaluation exact at the nodes with no 0/0, the Lebesgue constants that separate GLL from
 // equispaced nodes, and the element layout the shaders read.
 #include "catch.hpp"
 
-#include "common/error.h"
-#include "common/lagrange.h"
-#include "common/spectral_mesh.h"
+#include "common/core/error.h"
+#include "support/spectral/lagrange.h"
+#include "support/spectral/spectral_mesh.h"
 
 #include <cmath>
 #include <limits>

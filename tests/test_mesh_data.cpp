@@ -1,8 +1,8 @@
 #include "catch.hpp"
 #include "gl_fixture.h"
 
-#include "common/error.h"
-#include "common/mesh_data.h"
+#include "common/core/error.h"
+#include "common/scene/mesh_data.h"
 
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>

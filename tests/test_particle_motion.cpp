@@ -1,9 +1,9 @@
 #include "catch.hpp"
 
-#include "common/error.h"
-#include "common/particle_cpu.h"
-#include "common/particle_grid.h"
-#include "common/particle_motion.h"
+#include "common/core/error.h"
+#include "support/particles/particle_cpu.h"
+#include "support/particles/particle_grid.h"
+#include "support/particles/particle_motion.h"
 #include "test_support.h"
 
 #include <glm/glm.hpp>

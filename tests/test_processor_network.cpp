@@ -5,10 +5,10 @@
 
 #include "catch.hpp"
 #include "test_support.h"
-#include "common/error.h"
-#include "common/network_file.h"
-#include "common/processor_network.h"
-#include "common/processor_registry.h"
+#include "common/core/error.h"
+#include "support/network/network_file.h"
+#include "support/network/processor_network.h"
+#include "support/network/processor_registry.h"
 
 namespace {
 

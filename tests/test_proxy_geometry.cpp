@@ -1,14 +1,14 @@
-// The raycaster's proxy geometry (common/proxy_geometry.h), its clipper (common/convex_polyhedron.h), the
-// texture-to-model map (common/volume_box.h) and the exact ray reference (common/proxy_ray.h).
+// The raycaster's proxy geometry (support/raycast/proxy_geometry.h), its clipper (support/geometry/convex_polyhedron.h), the
+// texture-to-model map (support/volume/volume_box.h) and the exact ray reference (support/raycast/proxy_ray.h).
 #include "catch.hpp"
 #include "test_support.h"
 
-#include "common/convex_polyhedron.h"
-#include "common/error.h"
-#include "common/proxy_geometry.h"
-#include "common/proxy_ray.h"
-#include "common/splitmix64.h"
-#include "common/volume_box.h"
+#include "support/geometry/convex_polyhedron.h"
+#include "common/core/error.h"
+#include "support/raycast/proxy_geometry.h"
+#include "support/raycast/proxy_ray.h"
+#include "common/core/splitmix64.h"
+#include "support/volume/volume_box.h"
 
 #include <algorithm>
 #include <array>

@@ -1,4 +1,4 @@
-// Lab 06's modular ray caster (solutions/lab06_raycasting/, common/raycast_config.h): the generated configuration
+// Lab 06's modular ray caster (solutions/lab06_raycasting/, support/raycast/raycast_config.h): the generated configuration
 // header, that each configuration compiles only its own modules, and what the shaders draw against
 // closed forms and CPU references, including the hard cases (entry == exit, a zero gradient, the
 // isosurface's 0/0, opacity correction, early termination). The uber-shader and the hand-written DVR
@@ -7,15 +7,15 @@
 #include "gl_fixture.h"
 #include "test_support.h"
 
-#include "common/error.h"
-#include "common/framebuffer.h"
-#include "common/gl.h"
-#include "common/gpu_mesh.h"
-#include "common/image.h"
-#include "common/mesh_data.h"
-#include "common/raycast_config.h"
-#include "common/shader_source.h"
-#include "common/texture.h"
+#include "common/core/error.h"
+#include "common/gl/framebuffer.h"
+#include "common/gl/gl.h"
+#include "common/gl/gpu_mesh.h"
+#include "common/image/image.h"
+#include "common/scene/mesh_data.h"
+#include "support/raycast/raycast_config.h"
+#include "common/shader/shader_source.h"
+#include "common/gl/texture.h"
 
 #include <glm/glm.hpp>
 
@@ -485,7 +485,7 @@ TEST_CASE("raycast: MIP along z is the largest sample of each column", "[raycast
                 const float* p = r.pixel(i, j);
                 worst = std::max({worst, std::abs(p[3] - expected), std::abs(p[0] - expected)});
             }
-        // Hardware may round interpolation weights to 8 bits (common/volume.h): 1/512 of a neighbour difference.
+        // Hardware may round interpolation weights to 8 bits (support/volume/volume.h): 1/512 of a neighbour difference.
         CHECK(worst <= (samples == n ? 1e-6f : 1.0f / 256));
         CHECK(all_finite(r));
     }

@@ -3,10 +3,10 @@
 #include "catch.hpp"
 #include "test_support.h"
 
-#include "common/app.h"
-#include "common/gl.h"
-#include "common/json.h"
-#include "common/little_endian.h"
+#include "common/app/app.h"
+#include "common/gl/gl.h"
+#include "common/io/json.h"
+#include "common/io/little_endian.h"
 
 #include <memory>
 #include <string>
@@ -21,7 +21,7 @@ class ArraysLab : public Lab {
 public:
     explicit ArraysLab(std::vector<DataArray> arrays) : arrays_(std::move(arrays)) {}
     LabInfo info() const override { return {"arrays", "render mode arrays test lab"}; }
-    void declare(Params& params, std::vector<RenderCase>&) override { params.add_float("shade", 0.5, 0, 1, "grey"); }
+    void declare(Params& params) override { params.add_float("shade", 0.5, 0, 1, "grey"); }
     void setup(LabKit&) override {}
     void render(LabKit& kit, const Frame&) override {
         const float v = kit.params().get_float("shade");

@@ -4,12 +4,12 @@
 #include "gl_fixture.h"
 #include "test_support.h"
 
-#include "common/error.h"
-#include "common/framebuffer.h"
-#include "common/gpu_mesh.h"
-#include "common/mesh_data.h"
-#include "common/shader_library.h"
-#include "common/shader_source.h"
+#include "common/core/error.h"
+#include "common/gl/framebuffer.h"
+#include "common/gl/gpu_mesh.h"
+#include "common/scene/mesh_data.h"
+#include "common/shader/shader_library.h"
+#include "common/shader/shader_source.h"
 
 #include <chrono>
 #include <string>

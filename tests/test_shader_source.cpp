@@ -1,8 +1,8 @@
 #include "catch.hpp"
 #include "test_support.h"
 
-#include "common/error.h"
-#include "common/shader_source.h"
+#include "common/core/error.h"
+#include "common/shader/shader_source.h"
 
 #include <atomic>
 #include <chrono>

@@ -1,6 +1,6 @@
 #pragma once
 // Small helpers the test files share.
-#include "common/error.h"
+#include "common/core/error.h"
 
 #include <atomic>
 #include <chrono>

@@ -3,13 +3,13 @@
 // CPU reference.
 #include "catch.hpp"
 
-#include "common/error.h"
-#include "common/gradient.h"
-#include "common/marschner_lobb.h"
-#include "common/nifti_file.h"
-#include "common/ray_box.h"
-#include "common/splitmix64.h"
-#include "common/volume.h"
+#include "common/core/error.h"
+#include "support/volume/gradient.h"
+#include "support/volume/marschner_lobb.h"
+#include "support/volume/nifti_file.h"
+#include "support/geometry/ray_box.h"
+#include "common/core/splitmix64.h"
+#include "support/volume/volume.h"
 #include "test_support.h"
 
 #include <algorithm>
@@ -70,7 +70,7 @@ glm::dvec3 texel_centre(const Volume& volume, int i, int j, int k) {
 
 // ---------------------------------------------------------------------------------------------------------
 // NIfTI-1 files built byte by byte, in either byte order, with every field the tests break settable: the
-// header layout is the standard's nifti1.h, written out here independently of common/nifti_format.h.
+// header layout is the standard's nifti1.h, written out here independently of support/volume/nifti_format.h.
 
 struct NiftiSpec {
     bool big_endian = false;

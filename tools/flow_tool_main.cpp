@@ -1,7 +1,7 @@
 // gsv-flow: writes the kit's analytic flows as .flow files and describes .flow files. data/flows/ is made
 // with it (data/README.md), and a test regenerates that data to prove it still matches this generator.
-#include "common/error.h"
-#include "common/flow_field.h"
+#include "common/core/error.h"
+#include "support/flow/flow_field.h"
 
 #include <algorithm>
 #include <cstdint>

@@ -1,9 +1,9 @@
 #include "time_flow.h"
 
-#include "common/error.h"
-#include "common/framebuffer.h"
-#include "common/gl.h"
-#include "common/time_slices.h"
+#include "common/core/error.h"
+#include "common/gl/framebuffer.h"
+#include "common/gl/gl.h"
+#include "support/flow/time_slices.h"
 
 #include <algorithm>
 #include <cmath>

@@ -3,11 +3,11 @@
 // The heights are a float texture; one quad is drawn, and the fragment stage builds each pixel's normal
 // from the heights around it (normal.glsl). Beside it, real geometry: an N x N grid displaced by the same
 // heights, to see what the trick saves and where it shows.
-#include "common/app.h"
-#include "common/gl.h"
-#include "common/gpu_mesh.h"
-#include "common/mesh_data.h"
-#include "common/texture.h"
+#include "common/app/app.h"
+#include "common/gl/gl.h"
+#include "common/gl/gpu_mesh.h"
+#include "common/scene/mesh_data.h"
+#include "common/gl/texture.h"
 #include "terrain_source.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -21,7 +21,7 @@ class TerrainLab final : public gsv::Lab {
 public:
     gsv::LabInfo info() const override { return {"lab04", "Bump-mapped terrain", {4, 1}, "the kit's baseline"}; }
 
-    void declare(gsv::Params& p, std::vector<gsv::RenderCase>& cases) override {
+    void declare(gsv::Params& p) override {
         p.add_choice("terrain", "jacksboro", {"jacksboro", "topobathy", "franke", "sin_cos", "flat"},
                      "real elevation models (data/terrain), or procedural ones whose exact normals are known");
         p.add_int("grid", 256, 2, 2048, "samples per side of a procedural terrain");
@@ -44,17 +44,6 @@ public:
         p.add_float("pan_east", 0, -1, 1, "the point looked at, east of the centre, in model units").with_step(0.05);
         p.add_float("pan_south", 0, -1, 1, "the point looked at, south of the centre").with_step(0.05);
         gsv::add_orbit_camera(p, 0, 60, 2.6f);
-
-        cases = {
-            {"jacksboro", "the Jacksboro fault, bump-mapped, from above", {}},
-            {"grazing", "a grazing view of the bump-mapped quad: flat where the real surface would rise", {"camera_pitch=8", "camera_distance=2"}},
-            {"grazing-mesh", "the same view of real geometry: the ridges stand up", {"camera_pitch=8", "camera_distance=2", "geometry=mesh", "mesh_n=256"}},
-            {"topobathy", "land and sea off Vancouver Island", {"terrain=topobathy", "exaggeration=8"}},
-            {"franke", "Franke's function: exact normals known", {"terrain=franke"}},
-            {"terraces", "8-bit heights: terraces", {"terrain=franke", "heights8=on", "grid=512", "exaggeration=6", "colouring=plain"}},
-            {"zoomed-out", "far away without mipmaps: the normals alias", {"camera_distance=7"}},
-            {"zoomed-out-mipmaps", "far away with mipmaps", {"camera_distance=7", "mipmaps=on"}},
-        };
     }
 
     void setup(gsv::LabKit& kit) override {

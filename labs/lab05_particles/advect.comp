@@ -12,7 +12,7 @@ uniform float uTimeStep;  // h, the accuracy knob; 0 recolours without moving
 
 void main() {
     // TODO(L05-T2): which particle is this invocation's? The C++ lays the work groups out in rows
-    // (common/compute.h) when there are more than one row may hold, so count the rows above this one too.
+    // (common/gl/compute.h) when there are more than one row may hold, so count the rows above this one too.
     // The last groups run past the particle count: those invocations must touch nothing.
     uint index = gl_GlobalInvocationID.x;
     vec3 p = positions[index].xyz;

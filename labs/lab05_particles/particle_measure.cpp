@@ -1,10 +1,10 @@
 #include "particle_measure.h"
 
-#include "common/buffer.h"
-#include "common/gl.h"
-#include "common/particle_cpu.h"
-#include "common/particle_grid.h"
-#include "common/timing.h"
+#include "common/gl/buffer.h"
+#include "common/gl/gl.h"
+#include "support/particles/particle_cpu.h"
+#include "support/particles/particle_grid.h"
+#include "common/timing/timing.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,8 +1,8 @@
 #pragma once
 // Lab 05's sweep columns: what a step costs on the GPU and on the CPU, how close the GPU's float steps
 // come to the double-precision truth, and how near the GPU runs to the memory's speed limit.
-#include "common/app.h"
-#include "common/particle_motion.h"
+#include "common/app/app.h"
+#include "support/particles/particle_motion.h"
 #include "particle_stepper.h"
 
 namespace lab05 {

@@ -1,8 +1,8 @@
 #pragma once
 // Lab 05: running the compute shader over the particle buffers, one dispatch per time step.
-#include "common/app.h"
-#include "common/compute.h"
-#include "common/texture.h"
+#include "common/app/app.h"
+#include "common/gl/compute.h"
+#include "common/gl/texture.h"
 #include "particle_buffers.h"
 
 #include <cstdint>

@@ -5,7 +5,7 @@
 // and a pixel where the geometry lies in front of the volume gets no ray at all.
 #include "lab_processor.h"
 
-#include "common/shader_library.h"
+#include "common/shader/shader_library.h"
 
 namespace lab06 {
 

@@ -5,10 +5,10 @@
 // proxy geometry, entry and exit points, the ray traversal and a canvas. The ray traversal is one shader
 // skeleton (raycast.frag) whose placeholders are filled, at compile time, with only the modules chosen:
 // gradient, classification, shading and compositing.
-#include "common/app.h"
-#include "common/error.h"
-#include "common/gl.h"
-#include "common/network_file.h"
+#include "common/app/app.h"
+#include "common/core/error.h"
+#include "common/gl/gl.h"
+#include "support/network/network_file.h"
 #include "network.h"
 #include "ray_measure.h"
 #include "ray_traversal.h"
@@ -27,7 +27,7 @@ class RaycastLab final : public gsv::Lab {
 public:
     gsv::LabInfo info() const override { return {"lab06", "Modular GPU volume raycasting", {4, 1}, "the kit's baseline"}; }
 
-    void declare(gsv::Params& p, std::vector<gsv::RenderCase>& cases) override {
+    void declare(gsv::Params& p) override {
         p.add_file("network", "", "a network file, as typed or one in the lab folder (raycast.network, probe.network); "
                                   "empty: built in code. Properties the file sets win over these parameters");
         p.add_bool("probe", false, "an opaque sphere embedded in the volume: rays stop at it (network built in code)");
@@ -60,25 +60,6 @@ public:
         p.add_vec3("background", {0.08f, 0.09f, 0.12f}, 0, 1, "the canvas behind everything");
         p.add_bool("compare_shaders", false, "sweep: also time the uber-shader and the hand-written DVR");
         gsv::add_orbit_camera(p, 30, 25, 3.6f, 0.1f);  // down to 0.1: inside the volume
-
-        cases = {
-            {"dvr", "Marschner-Lobb by DVR: three shells of the transfer function, shaded", {}},
-            {"mip", "maximum intensity projection of the raw values", {"compositing=mip", "classification=raw"}},
-            {"iso", "the isosurface rho = 0.5, shaded, refined between samples", {"compositing=iso"}},
-            {"first-hit", "the first sample the transfer function makes visible", {"compositing=fhp"}},
-            {"forward", "forward differences: normals half a voxel off", {"gradient=forward", "camera_yaw=-40"}},
-            {"precomputed", "a gradient volume looked up once a sample", {"gradient=precomputed", "camera_pitch=60"}},
-            {"head", "the MRI head: skin and brain", {"volume=anatomical", "transfer_function=tissue", "camera_yaw=60", "camera_pitch=10"}},
-            {"mip-head", "the MRI head by MIP through the tissue transfer function",
-             {"volume=anatomical", "compositing=mip", "transfer_function=tissue", "camera_yaw=90", "camera_pitch=0"}},
-            {"clipped", "a clipping plane cuts the proxy: the rays start at the cut", {"clip_normal=1,0.3,0", "clip_offset=0.05"}},
-            {"inside", "the camera inside the volume: rays start at the near plane", {"camera_distance=0.5", "transfer_function=grey"}},
-            {"probe", "an opaque probe embedded in the volume: rays stop at it",
-             {"probe=on", "transfer_function=grey", "probe_position=0,0,0.2", "probe_radius=0.35"}},
-            {"uncorrected", "four samples a voxel without opacity correction: too opaque",
-             {"gradient=none", "shading=none", "samples_per_voxel=4", "opacity_correction=off"}},
-            {"constant", "a constant volume: no gradient, ambient light only, no NaN", {"volume=constant", "transfer_function=grey"}},
-        };
     }
 
     void setup(gsv::LabKit&) override { registry_ = lab06::make_registry(); }

@@ -1,15 +1,15 @@
 #pragma once
 // What lab 06's processors share: the frame they draw (size, camera, the kit for shaders and data), the
 // data their ports carry, and reading their text properties as numbers with one-line errors.
-#include "common/app.h"
-#include "common/framebuffer.h"
-#include "common/gpu_mesh.h"
-#include "common/mesh_data.h"
-#include "common/processor.h"
-#include "common/proxy_geometry.h"
-#include "common/texture.h"
-#include "common/volume.h"
-#include "common/volume_box.h"
+#include "common/app/app.h"
+#include "common/gl/framebuffer.h"
+#include "common/gl/gpu_mesh.h"
+#include "common/scene/mesh_data.h"
+#include "support/network/processor.h"
+#include "support/raycast/proxy_geometry.h"
+#include "common/gl/texture.h"
+#include "support/volume/volume.h"
+#include "support/volume/volume_box.h"
 
 #include <glm/glm.hpp>
 

@@ -1,7 +1,7 @@
 #pragma once
 // Lab 06's sweep columns: where the rays hit against the exact Marschner-Lobb isosurface, and what the
 // same image costs through the uber-shader and the hand-written DVR.
-#include "common/app.h"
+#include "common/app/app.h"
 #include "lab_processor.h"
 #include "ray_traversal.h"
 

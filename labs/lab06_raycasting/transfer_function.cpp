@@ -1,7 +1,7 @@
 #include "transfer_function.h"
 
-#include "common/error.h"
-#include "common/processor.h"
+#include "common/core/error.h"
+#include "support/network/processor.h"
 
 #include <algorithm>
 #include <array>

@@ -1,7 +1,7 @@
 #include "element_data.h"
 
-#include "common/error.h"
-#include "common/gl.h"
+#include "common/core/error.h"
+#include "common/gl/gl.h"
 
 #include <algorithm>
 

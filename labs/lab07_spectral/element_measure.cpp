@@ -1,8 +1,8 @@
 #include "element_measure.h"
 
-#include "common/framebuffer.h"
-#include "common/gl.h"
-#include "common/timing.h"
+#include "common/gl/framebuffer.h"
+#include "common/gl/gl.h"
+#include "common/timing/timing.h"
 
 #include <algorithm>
 #include <cmath>

@@ -3,12 +3,12 @@
 // Model for Automatic Technical Illustration" (SIGGRAPH 1998).
 // The lesson is in the shaders (shade.vert, shade.frag, phong.glsl, gooch.glsl); this file declares
 // the lab's parameters and draws one mesh.
-#include "common/app.h"
-#include "common/framebuffer.h"
-#include "common/gl.h"
-#include "common/gpu_mesh.h"
-#include "common/image.h"
-#include "common/mesh_data.h"
+#include "common/app/app.h"
+#include "common/gl/framebuffer.h"
+#include "common/gl/gl.h"
+#include "common/gl/gpu_mesh.h"
+#include "common/image/image.h"
+#include "common/scene/mesh_data.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -20,7 +20,7 @@ class GoochLab final : public gsv::Lab {
 public:
     gsv::LabInfo info() const override { return {"lab01", "GLSL basics and Gooch shading", {4, 1}, "the kit's baseline"}; }
 
-    void declare(gsv::Params& p, std::vector<gsv::RenderCase>& cases) override {
+    void declare(gsv::Params& p) override {
         p.add_choice("model", "sphere", {"sphere", "torus", "teapot"}, "the mesh: two procedural ones, one loaded from data/meshes");
         p.add_choice("shading", "gooch", {"phong", "gooch"}, "the lighting model").at_compile_time();
         p.add_choice("shading_rate", "fragment", {"vertex", "fragment"},
@@ -41,18 +41,6 @@ public:
         p.add_vec3("scale", {1.0f, 1.0f, 1.0f}, 0.1, 4, "model scale; unequal axes need the inverse-transpose for normals");
         p.add_float("cut", 2, -1, 2, "cut the model open beyond x = cut, so its back faces show");
         gsv::add_orbit_camera(p, 30, 20, 3.4f);
-
-        cases = {
-            {"gooch", "Gooch shading of the sphere, the lab's default view", {}},
-            {"phong", "diffuse + specular, the first shader of the lab", {"shading=phong"}},
-            {"torus", "Gooch shading of a torus", {"model=torus"}},
-            {"teapot", "the loaded mesh, with silhouettes", {"model=teapot", "silhouette=on", "camera_distance=2.4", "camera_pitch=15"}},
-            {"coarse", "a 8-segment sphere lit per fragment: renormalized normals hide the facets", {"mesh_resolution=8", "shading=phong"}},
-            {"per-vertex", "the same sphere lit per vertex: the highlight falls between vertices",
-             {"mesh_resolution=8", "shading=phong", "shading_rate=vertex"}},
-            {"stretched", "non-uniform scale: normals through the inverse transpose", {"scale=1.3,0.6,1", "shading=phong", "camera_distance=4"}},
-            {"cut-open", "the sphere cut open: back faces lit from their own side", {"cut=0.25", "camera_yaw=70"}},
-        };
     }
 
     void setup(gsv::LabKit& kit) override {

@@ -3,14 +3,14 @@
 // Using Line Integral Convolution" (SIGGRAPH 1993).
 // The lesson is in the shaders (lic.frag, streamline.glsl); this file makes the two textures LIC reads
 // (white noise or a photograph, and the flow in texels per step) and draws one full-screen quad.
-#include "common/app.h"
-#include "common/flow_field.h"
-#include "common/gl.h"
-#include "common/gpu_mesh.h"
-#include "common/image.h"
-#include "common/mesh_data.h"
-#include "common/noise.h"
-#include "common/texture.h"
+#include "common/app/app.h"
+#include "support/flow/flow_field.h"
+#include "common/gl/gl.h"
+#include "common/gl/gpu_mesh.h"
+#include "common/image/image.h"
+#include "common/scene/mesh_data.h"
+#include "support/flow/noise.h"
+#include "common/gl/texture.h"
 
 #include <algorithm>
 #include <vector>
@@ -21,7 +21,7 @@ class LicLab final : public gsv::Lab {
 public:
     gsv::LabInfo info() const override { return {"lab02", "Line integral convolution", {4, 1}, "the kit's baseline"}; }
 
-    void declare(gsv::Params& p, std::vector<gsv::RenderCase>& cases) override {
+    void declare(gsv::Params& p) override {
         p.add_choice("field", "rotation", {"rotation", "saddle", "source", "double_gyre", "vortices", "swirl", "file"},
                      "the flow: analytic fields, a swirl confined to a disc for the photograph, or field_file");
         p.add_file("field_file", "flows/vortex_street.flow",
@@ -37,18 +37,6 @@ public:
         p.add_int("seed", 1, 0, 1000000, "the white noise and the vortices");
         p.add_float("time", 0, 0, 10, "the double gyre's time; the frame of a .flow sequence").with_step(0.5).animated();
         p.add_float("swirl_radius", 0.28, 0.05, 0.7, "radius of the swirl around the photograph's face").with_step(0.02);
-
-        cases = {
-            {"rotation", "circles: the rotation (-y, x)", {}},
-            {"saddle", "a saddle: streamlines come in along one axis and leave along the other", {"field=saddle"}},
-            {"source", "a source: a zero at the centre, streamlines leaving the field", {"field=source", "length=40"}},
-            {"gyre", "the double gyre at t = 2.5", {"field=double_gyre", "time=2.5"}},
-            {"vortices", "six vortices drawn from the seed", {"field=vortices", "seed=7"}},
-            {"normalized", "unit steps: slow regions streak as long as fast ones", {"field=source", "normalized=on"}},
-            {"midpoint", "second-order steps keep long circles closed", {"step=midpoint", "length=80"}},
-            {"file", "a field read from a .flow file: one frame of a von Karman vortex street", {"field=file", "time=5"}},
-            {"photo", "photographic LIC: a swirl around Grace Hopper's face", {"input=photo", "field=swirl", "length=30"}},
-        };
     }
 
     void setup(gsv::LabKit& kit) override {

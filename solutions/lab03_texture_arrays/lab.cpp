@@ -3,14 +3,14 @@
 // T time slices of a flow go into ONE texture array; the fragment stage picks the slice of the
 // playhead with a vec3 lookup whose third component is the layer. Beside it the same slices in a 3D
 // texture (filtering runs across slices) and in T separate textures (one texture unit each).
-#include "common/app.h"
-#include "common/flow_field.h"
-#include "common/framebuffer.h"
-#include "common/gl.h"
-#include "common/gpu_mesh.h"
-#include "common/mesh_data.h"
-#include "common/noise.h"
-#include "common/texture.h"
+#include "common/app/app.h"
+#include "support/flow/flow_field.h"
+#include "common/gl/framebuffer.h"
+#include "common/gl/gl.h"
+#include "common/gl/gpu_mesh.h"
+#include "common/scene/mesh_data.h"
+#include "support/flow/noise.h"
+#include "common/gl/texture.h"
 #include "time_flow.h"
 
 
@@ -23,7 +23,7 @@ class TextureArrayLab final : public gsv::Lab {
 public:
     gsv::LabInfo info() const override { return {"lab03", "Texture arrays: time-varying LIC", {4, 1}, "the kit's baseline"}; }
 
-    void declare(gsv::Params& p, std::vector<gsv::RenderCase>& cases) override {
+    void declare(gsv::Params& p) override {
         p.add_choice("field", "double_gyre", {"double_gyre", "vortex_street", "file"},
                      "the time-varying flow: analytic, or the sequence in field_file");
         p.add_file("field_file", "flows/vortex_street.flow", "a .flow sequence (data/README.md) for field=file");
@@ -43,16 +43,6 @@ public:
         p.add_int("grid", 256, 16, 1024, "flow texels across (the domain is twice as wide as high)");
         p.add_float("speed", 1.0, 0, 4, "largest speed, in flow texels per step").with_step(0.1);
         p.add_int("seed", 1, 0, 1000000, "the white noise");
-
-        cases = {
-            {"gyre", "the double gyre at t = 3.3, 16 slices in a texture array", {}},
-            {"wrap", "near the end of the period the nearest slice is slice 0 again", {"time=9.8"}},
-            {"linear", "linear in time between two layers", {"blend=linear"}},
-            {"volume", "the same slices in a 3D texture, slice centres at (k + 0.5) / T", {"storage=volume"}},
-            {"volume-linear", "the 3D texture's filter blends time for free", {"storage=volume", "blend=linear"}},
-            {"separate", "8 separate textures, one unit each", {"storage=separate", "slices=8"}},
-            {"street", "a vortex street loaded from a file", {"field=file", "time=2"}},
-        };
     }
 
     void setup(gsv::LabKit& kit) override {

@@ -1,9 +1,9 @@
 #include "terrain_source.h"
 
-#include "common/framebuffer.h"
-#include "common/gl.h"
-#include "common/shader_program.h"
-#include "common/terrain_normal.h"
+#include "common/gl/framebuffer.h"
+#include "common/gl/gl.h"
+#include "common/shader/shader_program.h"
+#include "support/terrain/terrain_normal.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,10 +1,10 @@
 #pragma once
 // Lab 04's support code, not part of the lesson: the terrain to draw, where it sits in the world, and the
 // sweep's measurement of the shader's normals.
-#include "common/app.h"
-#include "common/gpu_mesh.h"
-#include "common/height_field.h"
-#include "common/terrain_procedural.h"
+#include "common/app/app.h"
+#include "common/gl/gpu_mesh.h"
+#include "support/terrain/height_field.h"
+#include "support/terrain/terrain_procedural.h"
 
 #include <functional>
 #include <optional>

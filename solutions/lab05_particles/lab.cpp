@@ -4,13 +4,13 @@
 // (advect.comp) and the same buffers are drawn as points: nothing comes back to the CPU to draw. The CPU
 // does the same update in double precision (common/particle_*) to say how wrong the GPU's float steps
 // are, and in float on every core to say whether the GPU is worth it.
-#include "common/app.h"
-#include "common/compute.h"
-#include "common/error.h"
-#include "common/gl.h"
-#include "common/particle_grid.h"
-#include "common/particle_motion.h"
-#include "common/texture.h"
+#include "common/app/app.h"
+#include "common/gl/compute.h"
+#include "common/core/error.h"
+#include "common/gl/gl.h"
+#include "support/particles/particle_grid.h"
+#include "support/particles/particle_motion.h"
+#include "common/gl/texture.h"
 #include "particle_buffers.h"
 #include "particle_measure.h"
 #include "particle_stepper.h"
@@ -31,7 +31,7 @@ public:
         return {"lab05", "SSBOs and compute-shader particle advection", {4, 3}, "compute shaders and storage buffers"};
     }
 
-    void declare(gsv::Params& p, std::vector<gsv::RenderCase>& cases) override {
+    void declare(gsv::Params& p) override {
         p.add_choice("field", "abc", {"gravity", "rotation", "saddle", "abc"},
                      "a fountain under gravity, or a velocity field: rotation (-y, x, 0), saddle (x, -y, 0), or the ABC flow")
             .at_compile_time();
@@ -54,19 +54,6 @@ public:
         gsv::add_orbit_camera(p, 30, 20, 5.0f);
 
         const std::string small = "particles=65536";
-        cases = {
-            {"abc", "the ABC flow, Euler steps", {small}},
-            {"rotation-euler", "one turn of the rotation by Euler steps of 0.1: the cloud spirals out",
-             {small, "field=rotation", "time_step=0.1", "time=6.3"}},
-            {"rotation-rk4", "the same turn by RK4: the circles kept", {small, "field=rotation", "time_step=0.1", "time=6.3", "integrator=rk4"}},
-            {"saddle", "out along x and back to the start", {small, "field=saddle", "time=3"}},
-            {"fountain", "a fountain under gravity, Euler steps", {small, "field=gravity", "time=2.5"}},
-            {"fountain-exact", "the same fountain by the midpoint rule: exact", {small, "field=gravity", "time=2.5", "integrator=midpoint"}},
-            {"texture", "the ABC flow from a 16^3 texture", {small, "source=texture", "grid=16"}},
-            {"ragged", "1000 particles in groups of 64: the last group runs past the end", {"particles=1000", "local_size=64", "point_size=3"}},
-            {"split", "131072 groups of 1: more than one row of work groups", {"particles=131072", "local_size=1", "time=0.5"}},
-            {"colours", "speeds drawn against a lower scale, in bigger points", {small, "speed_scale=0.6", "point_size=2"}},
-        };
     }
 
     void setup(gsv::LabKit& kit) override {

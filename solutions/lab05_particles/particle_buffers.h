@@ -1,10 +1,10 @@
 #pragma once
 // Lab 05: the particles in shader storage buffers, bound to the indexed points particles.glsl declares,
 // and the same buffers bound as vertex arrays to draw them: the positions never travel back to the CPU.
-#include "common/buffer.h"
-#include "common/gl_object.h"
-#include "common/particle_motion.h"
-#include "common/shader_program.h"
+#include "common/gl/buffer.h"
+#include "common/gl/gl_object.h"
+#include "support/particles/particle_motion.h"
+#include "common/shader/shader_program.h"
 
 #include <cstddef>
 #include <vector>

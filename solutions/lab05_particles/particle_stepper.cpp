@@ -1,6 +1,6 @@
 #include "particle_stepper.h"
 
-#include "common/gl.h"
+#include "common/gl/gl.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,11 +1,11 @@
 // Lab 05: the velocity field u(p) on the domain [-1,1]^3, in domain lengths per unit time. The same fields
-// in C++ (common/particle_motion.cpp) give the double-precision reference. Only the chosen field is compiled.
+// in C++ (support/particles/particle_motion.cpp) give the double-precision reference. Only the chosen field is compiled.
 #pragma once
 
 const float kPi = 3.14159265358979323846;
 
 #if defined(SOURCE_TEXTURE)
-// The field sampled at texel centres over the domain (common/particle_grid.cpp), filtered linearly and
+// The field sampled at texel centres over the domain (support/particles/particle_grid.cpp), filtered linearly and
 // clamped at the edges: the seed's Figure 9, where the velocities come from data, not a formula.
 uniform sampler3D uVelocityTexture;
 #endif

@@ -1,7 +1,7 @@
 #include "image_processors.h"
 
-#include "common/gl.h"
-#include "common/transforms.h"
+#include "common/gl/gl.h"
+#include "common/scene/transforms.h"
 
 namespace lab06 {
 

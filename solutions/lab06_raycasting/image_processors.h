@@ -3,8 +3,8 @@
 // image over it and over the background.
 #include "lab_processor.h"
 
-#include "common/gpu_mesh.h"
-#include "common/shader_library.h"
+#include "common/gl/gpu_mesh.h"
+#include "common/shader/shader_library.h"
 
 namespace lab06 {
 

@@ -1,9 +1,9 @@
 #include "lab_processor.h"
 
-#include "common/error.h"
-#include "common/gradient.h"
-#include "common/number_text.h"
-#include "common/transforms.h"
+#include "common/core/error.h"
+#include "support/volume/gradient.h"
+#include "common/core/number_text.h"
+#include "common/scene/transforms.h"
 
 #include <sstream>
 #include <vector>

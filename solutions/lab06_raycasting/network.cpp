@@ -1,7 +1,7 @@
 #include "network.h"
 
-#include "common/error.h"
-#include "common/image.h"
+#include "common/core/error.h"
+#include "common/image/image.h"
 #include "entry_exit.h"
 #include "image_processors.h"
 #include "ray_traversal.h"

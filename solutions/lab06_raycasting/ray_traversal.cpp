@@ -1,7 +1,7 @@
 #include "ray_traversal.h"
 
-#include "common/error.h"
-#include "common/gl.h"
+#include "common/core/error.h"
+#include "common/gl/gl.h"
 #include "transfer_function.h"
 
 #include <algorithm>

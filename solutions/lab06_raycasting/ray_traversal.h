@@ -7,10 +7,10 @@
 // The last two exist to measure what the first saves and costs.
 #include "lab_processor.h"
 
-#include "common/gpu_mesh.h"
-#include "common/raycast_config.h"
-#include "common/shader_library.h"
-#include "common/texture.h"
+#include "common/gl/gpu_mesh.h"
+#include "support/raycast/raycast_config.h"
+#include "common/shader/shader_library.h"
+#include "common/gl/texture.h"
 
 #include <string>
 

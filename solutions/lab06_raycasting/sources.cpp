@@ -1,8 +1,8 @@
 #include "sources.h"
 
-#include "common/error.h"
-#include "common/marschner_lobb.h"
-#include "common/nifti_file.h"
+#include "common/core/error.h"
+#include "support/volume/marschner_lobb.h"
+#include "support/volume/nifti_file.h"
 
 #include <cmath>
 

@@ -2,11 +2,11 @@
 // Lab 07's GPU side of a spectral element mesh: the basis (nodes and barycentric weights, 2 (p + 1) uniform
 // floats whatever the number of elements), every element's node values in one buffer texture, and the
 // patches that place the elements. Rebuilt when the mesh, field, degree, node set or time changes.
-#include "common/app.h"
-#include "common/buffer_texture.h"
-#include "common/gpu_mesh.h"
-#include "common/shader_program.h"
-#include "common/spectral_mesh.h"
+#include "common/app/app.h"
+#include "common/gl/buffer_texture.h"
+#include "common/gl/gpu_mesh.h"
+#include "common/shader/shader_program.h"
+#include "support/spectral/spectral_mesh.h"
 
 #include <string>
 #include <vector>

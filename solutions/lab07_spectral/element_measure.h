@@ -2,9 +2,9 @@
 // Lab 07's sweep columns: the per-fragment evaluation against the analytic field and against the same
 // polynomial evaluated in double on the CPU, what it costs against drawing from the corners only, and the
 // memory the basis and the values take.
-#include "common/app.h"
-#include "common/shader_library.h"
-#include "common/transforms.h"
+#include "common/app/app.h"
+#include "common/shader/shader_library.h"
+#include "common/scene/transforms.h"
 #include "element_data.h"
 
 namespace lab07 {

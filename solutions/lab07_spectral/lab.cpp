@@ -4,8 +4,8 @@
 // degree-p Lagrange polynomial at its own reference point (spectral.glsl), with no tessellation of the field
 // and no texture per element: the basis (nodes and barycentric weights) is 2 (p + 1) uniform floats, the
 // values one buffer. Beside it, the same elements drawn from their corner values only.
-#include "common/app.h"
-#include "common/gl.h"
+#include "common/app/app.h"
+#include "common/gl/gl.h"
 #include "element_data.h"
 #include "element_measure.h"
 
@@ -21,7 +21,7 @@ class SpectralLab final : public gsv::Lab {
 public:
     gsv::LabInfo info() const override { return {"lab07", "Rendering spectral elements", {4, 1}, "the kit's baseline"}; }
 
-    void declare(gsv::Params& p, std::vector<gsv::RenderCase>& cases) override {
+    void declare(gsv::Params& p) override {
         p.add_choice("mesh", "annulus", {"annulus", "grid"}, "curved elements around a ring, or square elements tiling [-1,1]^2");
         p.add_int("columns", 32, 1, 4096, "elements around the ring (annulus) or across (grid)");
         p.add_int("rows", 4, 1, 4096, "elements across the ring (annulus) or up (grid)");
@@ -43,21 +43,6 @@ public:
         p.add_float("zoom", 1, 0.5, 500, "magnification (1: the whole mesh)").with_step(0.25);
         p.add_float("centre_x", 0, -1.2, 1.2, "the point looked at").with_step(0.02);
         p.add_float("centre_y", 0, -1.2, 1.2, "the point looked at").with_step(0.02);
-
-        cases = {
-            {"annulus", "128 curved elements of degree 4 on GLL nodes, travelling waves", {}},
-            {"corners", "the same elements drawn from their corner values only", {"evaluation=corners"}},
-            {"degree-1", "degree 1: the polynomial is the bilinear blend of the corners", {"degree=1"}},
-            {"fine", "512 elements of degree 8", {"columns=64", "rows=8", "degree=8"}},
-            {"time", "the waves later", {"time=2"}},
-            {"runge-equispaced", "one element, Runge's function, degree 16 on equispaced nodes: Runge's phenomenon",
-             {"mesh=grid", "columns=1", "rows=1", "field=runge", "degree=16", "node_set=equispaced", "auto_range=off", "range_min=-0.2", "range_max=1"}},
-            {"runge-gll", "the same on GLL nodes: no blow-up",
-             {"mesh=grid", "columns=1", "rows=1", "field=runge", "degree=16", "auto_range=off", "range_min=-0.2", "range_max=1"}},
-            {"polynomial", "a degree-3 polynomial on degree-3 elements: reproduced exactly", {"mesh=grid", "columns=2", "rows=2", "field=polynomial", "degree=3"}},
-            {"one-element", "zoomed into one element with the range narrowed to its values",
-             {"zoom=7", "centre_x=0.915", "centre_y=0.09", "auto_range=off", "range_min=-0.5", "range_max=0.3"}},
-        };
     }
 
     void setup(gsv::LabKit& kit) override {

@@ -1,0 +1,197 @@
+#include "common/app/app.h"
+
+#include "common/app/app_session.h"
+#include "common/core/error.h"
+#include "common/gl/gl.h"
+
+#include <cstdio>
+#include <iostream>
+
+namespace gsv {
+
+LabKit::LabKit(Context& context, Params& params, const Assets& assets, Profile profile)
+    : context_(context), params_(params), assets_(assets), profile_(profile),
+      shaders_([&] {
+          PreprocessOptions options;
+          options.profile = profile;
+          options.version = context.effective_version();
+          options.include_dirs = assets.shader_include_dirs();
+          return options;
+      }()) {}
+
+const ShaderLibrary::Entry& LabKit::program(const std::string& name, const std::vector<std::string>& files) {
+    ProgramSpec spec;
+    spec.name = name;
+    for (const auto& f : files) spec.files.push_back(assets_.shader_file(f));
+    return shaders_.add(std::move(spec), params_.defines());
+}
+
+const ShaderProgram& LabKit::use(const ShaderLibrary::Entry& entry) const {
+    const ShaderProgram& program = entry.program();
+    program.use();
+    params_.apply_uniforms(program);
+    return program;
+}
+
+void add_orbit_camera(Params& params, float yaw, float pitch, float distance, float min_distance) {
+    params.add_float("camera_yaw", yaw, -360, 360, "camera azimuth in degrees (drag the mouse)").with_step(5);
+    params.add_float("camera_pitch", pitch, -89, 89, "camera elevation in degrees (drag the mouse)").with_step(5);
+    params.add_float("camera_distance", distance, min_distance, 20, "camera distance from the origin (scroll)").with_step(0.1);
+}
+
+OrbitCamera orbit_camera(const Params& params) {
+    OrbitCamera camera;
+    camera.yaw_degrees = params.get_float("camera_yaw");
+    camera.pitch_degrees = params.get_float("camera_pitch");
+    camera.distance = params.get_float("camera_distance");
+    return camera;
+}
+
+Session::~Session() {
+    lab.reset();
+    kit.reset();
+    context.reset();
+}
+
+void Session::open(Backend backend) {
+    ContextOptions context_options;
+    context_options.backend = backend;
+    context_options.profile = options.profile;
+    context_options.version = options.gl.value_or(info.needs < GlVersion{4, 1} ? GlVersion{4, 1} : info.needs);
+    context_options.width = options.width;
+    context_options.height = options.height;
+    context_options.title = title();
+    try {
+        context = create_context(context_options);
+    } catch (const UnsupportedError& e) {
+        throw UnsupportedError(std::string(e.what()) + "; " + info.id + " needs OpenGL " + info.needs.str() + " (" +
+                               info.needs_why + ")");
+    }
+    std::fprintf(stderr, "%s: %s\n", info.id.c_str(), context->describe().c_str());
+    context->require(info.needs, info.needs_why);
+    kit = std::make_unique<LabKit>(*context, params, *assets, options.profile);
+    lab->setup(*kit);
+    compiled_signature_ = params.compile_signature();
+}
+
+const Assets& Session::find_assets() {
+    if (!assets) assets = std::make_unique<Assets>(lab_dir, executable);
+    return *assets;
+}
+
+const std::vector<RenderCase>& Session::named_cases() {
+    if (!cases) {
+        cases = read_case_file(case_file(), info.id, defaults);
+    }
+    return *cases;
+}
+
+std::filesystem::path Session::case_file() {
+    return find_assets().root() / (info.case_file.empty() ? "grader/cases/" + info.id + ".json" : info.case_file);
+}
+
+void Session::apply_case(const std::string& name) {
+    std::string known;
+    for (const auto& c : named_cases()) {
+        if (c.name == name) {
+            for (const auto& s : c.settings) params.set_assignment(s);
+            return;
+        }
+        known += (known.empty() ? "" : ", ") + c.name;
+    }
+    throw Error("unknown case '" + name + "' (this lab has: " + known + ")");
+}
+
+void Session::apply_command_line_settings() {
+    if (!options.case_name.empty()) apply_case(options.case_name);
+    for (const auto& a : options.assignments) params.set_assignment(a);
+}
+
+void Session::render_frame(const Frame& frame) {
+    glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    lab->render(*kit, frame);
+}
+
+std::optional<std::string> Session::sync_params() {
+    // The lab first: it may refuse the new values (a GL limit) with a clearer line than the shader
+    // compiler would give for them.
+    lab->params_changed(*kit);
+    std::optional<std::string> error;
+    const std::string signature = params.compile_signature();
+    if (signature != compiled_signature_) {
+        error = kit->shaders().rebuild_all(params.defines());
+        compiled_signature_ = signature;
+    }
+    return error;
+}
+
+static void print_list(Session& s) {
+    const std::vector<RenderCase>& cases = s.named_cases();
+    std::printf("%s: %s (%s), needs OpenGL %s\nparameters:\n%s", s.info.id.c_str(), s.info.title.c_str(),
+                s.variant.c_str(), s.info.needs.str().c_str(), s.params.describe().c_str());
+    std::printf("cases (%s; graded ones name their TODO):\n", s.case_file().lexically_normal().string().c_str());
+    for (const auto& c : cases) {
+        std::printf("  %-18s %s%s\n", c.name.c_str(), c.todo.empty() ? "(demo) " : ("(" + c.todo + ") ").c_str(), c.description.c_str());
+        if (!c.settings.empty()) {
+            std::printf("  %-18s", "");
+            for (const auto& setting : c.settings) std::printf(" %s", setting.c_str());
+            std::printf("\n");
+        }
+    }
+}
+
+int run_lab(std::unique_ptr<Lab> lab, const char* lab_dir, const char* variant, int argc, const char* const* argv) {
+    Session session;
+    std::string stage = "command line";
+    try {
+        session.lab = std::move(lab);
+        session.info = session.lab->info();
+        session.variant = variant;
+        session.lab_dir = lab_dir;
+        session.executable = Assets::executable_path(argc > 0 ? argv[0] : nullptr);
+        session.lab->declare(session.params);
+        session.defaults = session.params;
+        try {
+            session.options = parse_cli(argc, argv);
+            session.apply_command_line_settings();
+            if (session.options.mode == RunMode::Animate && !session.options.help) check_animate_command(session);
+            if (session.options.mode == RunMode::Sweep && !session.options.help) check_sweep_command(session);
+            if (session.options.mode != RunMode::Sweep && (!session.options.knob.empty() || !session.options.values.empty()))
+                throw Error("--knob and --values are for sweep mode");
+        } catch (const Error& e) {
+            std::fprintf(stderr, "%s: %s\n", session.info.id.c_str(), e.what());
+            return kExitUsage;
+        }
+        if (session.options.help) {
+            std::printf("%s: %s (%s)\n%s", session.info.id.c_str(), session.info.title.c_str(), variant,
+                        cli_usage(argc > 0 ? argv[0] : session.info.id).c_str());
+            return kExitOk;
+        }
+        if (session.options.mode == RunMode::List) {
+            print_list(session);
+            return kExitOk;
+        }
+        stage = "start";
+        session.find_assets();
+        switch (session.options.mode) {
+        case RunMode::Window: return run_window(session);
+        case RunMode::Render: return run_render(session);
+        case RunMode::Sweep: return run_sweep(session);
+        case RunMode::Animate: return run_animate(session);
+        case RunMode::List: break;
+        }
+        return kExitOk;
+    } catch (const UnsupportedError& e) {
+        std::fprintf(stderr, "%s: %s\n", session.info.id.c_str(), e.what());
+        return kExitUnsupported;
+    } catch (const Error& e) {
+        std::fprintf(stderr, "%s: %s\n", session.info.id.c_str(), e.what());
+        return kExitError;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "%s: internal error during %s: %s\n", session.info.id.c_str(), stage.c_str(), e.what());
+        return kExitError;
+    }
+}
+
+}  // namespace gsv

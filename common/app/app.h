@@ -1,0 +1,121 @@
+#pragma once
+// The lab app. A lab declares what it is (parameters with their ranges, effects and accuracy knob) and how it
+// draws; its named cases come from its public case file (common/app/case_file.h). The framework gives it the
+// window, headless rendering, sweeps, the command line, hot reload, timing and image output. A lab's main() is
+// one line: return gsv::run_lab<MyLab>(argc, argv);
+#include "common/app/assets.h"
+#include "common/app/case_file.h"
+#include "common/context/context.h"
+#include "common/io/data_array.h"
+#include "common/app/params.h"
+#include "common/shader/shader_library.h"
+#include "common/scene/transforms.h"
+
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace gsv {
+
+struct LabInfo {
+    std::string id;               // "lab01": names outputs and reports
+    std::string title;            // "GLSL basics and Gooch shading"
+    GlVersion needs{4, 1};        // labs other than 05 run on macOS's 4.1 core
+    std::string needs_why = "the kit's baseline";
+    // Its named cases, relative to the kit's root; empty: grader/cases/<id>.json.
+    std::string case_file;
+};
+
+struct Frame {
+    int width = 0, height = 0;
+    double time_s = 0;  // seconds since start in window mode; 0 headless, so images are reproducible
+    // Window mode: a lab may spread work over frames (lab 05 catches its simulation up a few steps a frame).
+    // Headless, every frame must show the full result of the current settings.
+    bool interactive = false;
+    float aspect() const { return height > 0 ? static_cast<float>(width) / static_cast<float>(height) : 1.0f; }
+};
+
+using SweepMetrics = std::vector<std::pair<std::string, double>>;
+
+class LabKit;
+
+class Lab {
+public:
+    virtual ~Lab() = default;
+    virtual LabInfo info() const = 0;
+    virtual void declare(Params& params) = 0;
+    virtual void setup(LabKit& kit) = 0;
+    virtual void render(LabKit& kit, const Frame& frame) = 0;
+    // A parameter changed (window keys, the next sweep point or animation frame): rebuild what depends on it,
+    // e.g. a mesh.
+    virtual void params_changed(LabKit&) {}
+    // The settings of the converged reference a sweep measures error against; empty: the knob's last value.
+    virtual std::vector<std::string> sweep_reference() const { return {}; }
+    // True: each curve of the series is measured against the reference drawn with its own series value
+    // (lab 06: an isosurface against an isosurface, not against DVR). False: one reference for all curves.
+    virtual bool sweep_reference_per_series() const { return false; }
+    // Lab-specific error columns for a sweep, measured at the current settings.
+    virtual SweepMetrics sweep_metrics(LabKit&, const Frame&) { return {}; }
+    // The error the sweep's plot shows: one of sweep_metrics' columns, where the image's RMSE against the
+    // reference says little (lab 05: particles restart at times that depend on the step); empty: the RMSE.
+    virtual std::string sweep_error_column() const { return {}; }
+    // What render mode writes beside the image for the grader to compare with the reference's; most labs none.
+    virtual std::vector<DataArray> readback(LabKit&) { return {}; }
+    // Visual debugging: the intermediate images of the last frame (lab 06: every port of its network), written
+    // into `folder` (created); returns the files. Called by `render --debug-images` and by window screenshots.
+    virtual std::vector<std::filesystem::path> write_debug_images(LabKit&, const std::filesystem::path&) { return {}; }
+};
+
+// What a lab gets from the framework.
+class LabKit {
+public:
+    LabKit(Context& context, Params& params, const Assets& assets, Profile profile);
+
+    const Params& params() const { return params_; }
+    Profile profile() const { return profile_; }
+    GlVersion gl_version() const { return context_.effective_version(); }
+    const Assets& assets() const { return assets_; }
+    Context& context() { return context_; }
+
+    // A program from the lab's shader files (e.g. {"gooch.vert", "gooch.frag"}), built with the
+    // parameters' #defines and kept up to date by the framework.
+    const ShaderLibrary::Entry& program(const std::string& name, const std::vector<std::string>& files);
+    // Binds the program and sets every runtime parameter as its uniform; set the rest yourself.
+    const ShaderProgram& use(const ShaderLibrary::Entry& entry) const;
+    void set_transforms(const ShaderProgram& program, const Transforms& transforms) const {
+        apply_transforms(program, transforms, profile_);
+    }
+
+    ShaderLibrary& shaders() { return shaders_; }
+
+private:
+    Context& context_;
+    Params& params_;
+    const Assets& assets_;
+    Profile profile_;
+    ShaderLibrary shaders_;
+};
+
+// Declares the camera parameters (camera_yaw, camera_pitch, camera_distance) that window mode drives with
+// the mouse and that cases and hidden grader cases set.
+// min_distance: how close the camera may come; the default keeps it outside the unit sphere the labs
+// frame, and lab 06 lets it into the volume.
+void add_orbit_camera(Params& params, float yaw, float pitch, float distance, float min_distance = 1.2f);
+OrbitCamera orbit_camera(const Params& params);
+
+// Exit statuses shared by every lab binary (the grader tells failure classes apart by them).
+enum ExitStatus { kExitOk = 0, kExitError = 1, kExitUsage = 2, kExitUnsupported = 3, kExitNonFinite = 4 };
+
+int run_lab(std::unique_ptr<Lab> lab, const char* lab_dir, const char* variant, int argc, const char* const* argv);
+
+#ifdef GSV_LAB_DIR  // defined for lab executables by cmake/labs.cmake
+template <class L>
+int run_lab(int argc, char** argv) {
+    return run_lab(std::make_unique<L>(), GSV_LAB_DIR, GSV_LAB_VARIANT, argc, argv);
+}
+#endif
+
+}  // namespace gsv

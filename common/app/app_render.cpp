@@ -1,0 +1,138 @@
+// Headless render mode: one case to PNG, plus a JSON with timings and what GL really was, and beside them the
+// arrays a lab hands in (common/io/data_array.h).
+#include "common/app/app_session.h"
+#include "common/io/data_array.h"
+#include "common/core/error.h"
+#include "common/gl/framebuffer.h"
+#include "common/gl/gl.h"
+#include "common/image/image.h"
+#include "common/image/image_compare.h"
+#include "common/io/json.h"
+#include "common/timing/timing.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+namespace gsv {
+
+Json params_json(const Params& params) {
+    Json out = Json::object();
+    for (const auto& spec : params.specs()) out[spec.name] = params.get_text(spec.name);
+    return out;
+}
+
+Json gl_json(const Context& context) {
+    const ContextInfo& info = context.info();
+    Json gl = Json::object();
+    gl["renderer"] = info.renderer;
+    gl["vendor"] = info.vendor;
+    gl["version"] = info.version_string;
+    gl["glsl"] = info.glsl_version_string;
+    gl["profile"] = profile_name(info.profile);
+    gl["backend"] = backend_name(info.backend);
+    gl["requested"] = info.requested.str();
+    gl["effective"] = context.effective_version().str();
+    return gl;
+}
+
+Json timing_json(const TimingStats& t, int warmup) {
+    Json j = Json::object();
+    j["median_ms"] = t.median_ms;
+    j["min_ms"] = t.min_ms;
+    j["max_ms"] = t.max_ms;
+    j["mean_ms"] = t.mean_ms;
+    j["frames"] = t.frames;
+    j["warmup"] = warmup;
+    return j;
+}
+
+// Writes each array beside the PNG; returns the report's list of them.
+Json write_arrays(const std::vector<DataArray>& arrays, const std::string& png) {
+    check_data_arrays(arrays);
+    Json listed = Json::array();
+    for (const auto& a : arrays) {
+        const std::string file = data_array_path(png, a.name).string();
+        write_f32_file(file, a.values);
+        Json entry = Json::object();
+        entry["name"] = a.name;
+        entry["file"] = file;
+        entry["components"] = a.components;
+        entry["count"] = static_cast<double>(a.count());
+        listed.push_back(entry);
+    }
+    return listed;
+}
+
+Readback read_back(const Framebuffer& float_target) {
+    const ImageF pixels = float_target.read_rgba32f();
+    return {to_rgba8(pixels), float_stats(pixels)};
+}
+
+int run_render(Session& s) {
+    const Backend backend = s.options.backend.value_or(Backend::Egl);
+    s.open(backend);
+    if (auto error = s.sync_params()) throw Error(*error);
+
+    const int width = s.options.width, height = s.options.height;
+    // Float target so NaN and Inf survive to the readback instead of silently turning black.
+    Framebuffer target(width, height, ColorFormat::RGBA32F);
+    const Frame frame{width, height, 0.0};
+    const int warmup = s.options.warmup >= 0 ? s.options.warmup : 1;
+    const int frames = s.options.frames > 0 ? s.options.frames : 3;
+    const TimingStats timing = time_frames([&] {
+        target.bind();
+        s.render_frame(frame);
+    }, warmup, frames);
+    check_gl_error("rendering the frame");
+
+    const Readback shot = read_back(target);
+    const Image& image = shot.image;
+    const FloatStats& stats = shot.stats;
+
+    std::string png = s.options.out;
+    if (png.empty()) png = s.info.id + (s.options.case_name.empty() ? "" : "-" + s.options.case_name) + ".png";
+    std::string json_path = s.options.json;
+    if (json_path.empty()) json_path = std::filesystem::path(png).replace_extension(".json").string();
+    write_png(png, image);
+    // After the last timed frame, so what is handed in is what the image shows. Only when asked: a million
+    // particles are 32 MiB that a student's render does not need.
+    const std::vector<DataArray> arrays = s.options.arrays ? s.lab->readback(*s.kit) : std::vector<DataArray>{};
+    check_gl_error("reading back the lab's arrays");
+    const Json listed = write_arrays(arrays, png);
+    std::vector<std::filesystem::path> debug_images;
+    if (s.options.debug_images)
+        debug_images = s.lab->write_debug_images(*s.kit, std::filesystem::path(png).replace_extension().string() + "-debug");
+
+    Json report = Json::object();
+    report["lab"] = s.info.id;
+    report["variant"] = s.variant;
+    report["case"] = s.options.case_name;
+    report["width"] = width;
+    report["height"] = height;
+    report["image"] = png;
+    report["params"] = params_json(s.params);
+    report["timing"] = timing_json(timing, warmup);
+    report["gl"] = gl_json(*s.context);
+    report["nan_pixels"] = static_cast<double>(stats.nan_count);
+    report["inf_pixels"] = static_cast<double>(stats.inf_count);
+    report["blank"] = is_blank(image);
+    if (!arrays.empty()) report["arrays"] = listed;
+    std::ofstream out(json_path);
+    if (!out || !(out << report.dump(2) << "\n")) throw Error("cannot write '" + json_path + "'");
+
+    std::printf("%s: wrote %s (%dx%d), median %.2f ms/frame over %d frames\n", s.info.id.c_str(), png.c_str(), width,
+                height, timing.median_ms, timing.frames);
+    for (const auto& file : debug_images) std::printf("%s: wrote %s\n", s.info.id.c_str(), file.string().c_str());
+    for (const auto& a : arrays)
+        std::printf("%s: wrote %s (%zu x %d floats)\n", s.info.id.c_str(), data_array_path(png, a.name).string().c_str(),
+                    a.count(), a.components);
+    if (shot.non_finite()) {
+        std::fprintf(stderr, "%s: the image has %ld NaN and %ld Inf pixel values (painted magenta in %s)\n",
+                     s.info.id.c_str(), stats.nan_count, stats.inf_count, png.c_str());
+        return kExitNonFinite;
+    }
+    return kExitOk;
+}
+
+}  // namespace gsv

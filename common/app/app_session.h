@@ -1,0 +1,74 @@
+#pragma once
+// One run of a lab binary: what the modes share (internal to the framework).
+#include "common/app/app.h"
+#include "common/app/cli.h"
+#include "common/gl/framebuffer.h"
+#include "common/image/image_compare.h"
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gsv {
+
+struct Session {
+    Session() = default;
+    ~Session();  // the lab's GL objects go before the context that owns them
+    std::unique_ptr<Lab> lab;
+    LabInfo info;
+    std::string variant;  // "starter" or "solution"
+    CliOptions options;
+    Params params;
+    Params defaults;  // as the lab declared them, before any case or --set
+    // The lab's named cases, read from its case file when first asked for (a render the grader runs with --set
+    // needs none): see named_cases().
+    std::optional<std::vector<RenderCase>> cases;
+    std::string lab_dir;               // relative to the kit's root: "solutions/lab02_lic"
+    std::filesystem::path executable;  // where the kit's files are looked for beside it
+    std::unique_ptr<Assets> assets;
+    std::unique_ptr<Context> context;
+    std::unique_ptr<LabKit> kit;
+
+    // Creates the context, checks the lab's GL needs, builds the kit and runs lab->setup.
+    void open(Backend backend);
+    // Finds the kit's files (once): the lab's folder, shaders/, data/ and its case file.
+    const Assets& find_assets();
+    // The cases of the lab's case file, each checked against the declared parameters. Throws gsv::Error naming the
+    // file and line of a bad case.
+    const std::vector<RenderCase>& named_cases();
+    std::filesystem::path case_file();
+    // Applies the named case's settings over the current values; throws naming the unknown case and the known ones.
+    void apply_case(const std::string& name);
+    // Applies the case then the --set assignments, as the command line asked.
+    void apply_command_line_settings();
+    // Renders one frame into the bound framebuffer: clear, then the lab.
+    void render_frame(const Frame& frame);
+    // After a parameter change: rebuild shaders if a compile-time parameter moved, tell the lab.
+    // Returns a shader error (the last good program keeps running), if any.
+    std::optional<std::string> sync_params();
+    std::string title() const { return info.id + " (" + variant + ")"; }
+
+private:
+    std::string compiled_signature_;
+};
+
+// A float target read back: the 8-bit image (NaN painted magenta) and how many values were NaN or Inf.
+struct Readback {
+    Image image;
+    FloatStats stats;
+    bool non_finite() const { return stats.nan_count > 0 || stats.inf_count > 0; }
+};
+Readback read_back(const Framebuffer& float_target);
+
+int run_window(Session& session);
+int run_render(Session& session);
+int run_sweep(Session& session);
+// Throws the one-line usage error (exit 2) for a sweep this lab cannot run (no knob, a bad --knob or --values).
+void check_sweep_command(const Session& session);
+// Throws the one-line usage error (exit 2) for an animate command this lab cannot run, before any GL.
+void check_animate_command(const Session& session);
+int run_animate(Session& session);
+
+}  // namespace gsv

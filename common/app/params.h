@@ -1,0 +1,95 @@
+#pragma once
+// A lab's parameters, declared once and then served everywhere: the command line (--set name=value),
+// window controls, sweeps, grader cases, uniforms (u<Name>) and compile-time #defines.
+#include "common/shader/shader_source.h"
+
+#include <glm/glm.hpp>
+
+#include <string>
+#include <vector>
+
+namespace gsv {
+
+class ShaderProgram;
+
+enum class ParamType { Float, Int, Bool, Choice, Vec3, File };
+
+struct ParamSpec {
+    std::string name;   // as typed on the command line: "alpha", "mesh_resolution"
+    ParamType type = ParamType::Float;
+    std::string help;
+    double min = 0, max = 1;           // Float, Int, and each Vec3 component
+    double step = 0;                   // window-mode increment; 0 = (max - min) / 50, or 1 for Int
+    std::vector<std::string> choices;  // Choice
+    bool compile_time = false;         // a #define: changing it rebuilds the lab's shaders
+    bool effect = false;               // a compile-time switch: an effect that is off is not compiled in
+    std::string uniform;               // runtime parameters reach shaders through this uniform
+    std::string define;                // compile-time parameters through this macro
+    std::vector<std::string> sweep_values;  // set on the accuracy knob: its values, least accurate first
+    bool sweep_series = false;         // a Choice swept as separate curves beside the knob
+    bool animation_axis = false;       // a Float that window mode plays and `animate` steps through
+
+    // Chainable refinements for declarations that read like a table.
+    ParamSpec& at_compile_time(std::string macro = "");
+    ParamSpec& with_uniform(std::string name) { uniform = std::move(name); return *this; }
+    ParamSpec& with_step(double s) { step = s; return *this; }
+    ParamSpec& accuracy_knob(std::vector<std::string> values_least_accurate_first);
+    ParamSpec& series() { sweep_series = true; return *this; }
+    ParamSpec& animated() { animation_axis = true; return *this; }
+};
+
+class Params {
+public:
+    ParamSpec& add_float(const std::string& name, double value, double min, double max, const std::string& help);
+    ParamSpec& add_int(const std::string& name, int value, int min, int max, const std::string& help);
+    ParamSpec& add_bool(const std::string& name, bool value, const std::string& help);
+    ParamSpec& add_choice(const std::string& name, const std::string& value, std::vector<std::string> choices,
+                          const std::string& help);
+    ParamSpec& add_vec3(const std::string& name, glm::vec3 value, double min, double max, const std::string& help);
+    // A path typed by the user (a data file). Never a uniform or a define; the lab resolves it with
+    // Assets::user_file, which gives one-line errors naming the path.
+    ParamSpec& add_file(const std::string& name, const std::string& value, const std::string& help);
+    // A compile-time switch named EFFECT_<NAME> in GLSL.
+    ParamSpec& add_effect(const std::string& name, bool on, const std::string& help);
+
+    // Parses and validates; throws gsv::Error naming the parameter, the value and the allowed range.
+    void set(const std::string& name, const std::string& text);
+    // "name=value"
+    void set_assignment(const std::string& assignment);
+    std::string get_text(const std::string& name) const;
+
+    float get_float(const std::string& name) const;
+    int get_int(const std::string& name) const;
+    bool get_bool(const std::string& name) const;
+    const std::string& get_choice(const std::string& name) const;
+    glm::vec3 get_vec3(const std::string& name) const;
+    const std::string& get_file(const std::string& name) const;
+
+    // Window controls: move a parameter by `steps` increments (Bool toggles, Choice cycles), clamped.
+    void nudge(const std::string& name, int steps);
+
+    std::vector<ShaderDefine> defines() const;
+    std::string compile_signature() const;  // changes exactly when defines() would
+    // Sets every runtime parameter's uniform on `program`, which must be in use.
+    void apply_uniforms(const ShaderProgram& program) const;
+
+    const std::vector<ParamSpec>& specs() const { return specs_; }
+    const ParamSpec& spec(const std::string& name) const;  // throws naming the unknown parameter and the known ones
+    const ParamSpec* knob() const;
+    const ParamSpec* series() const;
+    const ParamSpec* animation_axis() const;
+    std::string describe() const;  // one line per parameter: name, type, range, default, help
+
+private:
+    struct Value {
+        double number = 0;
+        glm::vec3 vec{0};
+        std::string choice;
+    };
+    ParamSpec& add(ParamSpec spec, Value value);
+    std::size_t index_of(const std::string& name) const;
+    std::vector<ParamSpec> specs_;
+    std::vector<Value> values_;
+};
+
+}  // namespace gsv

@@ -1,0 +1,150 @@
+#include "common/context/context.h"
+
+#include "common/core/error.h"
+#include "common/gl/gl.h"
+
+#include <cstdio>
+#include <regex>
+
+namespace gsv {
+
+std::unique_ptr<Context> make_glfw_context(const ContextOptions& options);
+#if GSV_HAVE_EGL
+std::unique_ptr<Context> make_egl_context(const ContextOptions& options);
+#endif
+#if GSV_HAVE_OSMESA
+std::unique_ptr<Context> make_osmesa_context(const ContextOptions& options);
+#endif
+
+std::unique_ptr<Context> create_context(const ContextOptions& options) {
+    switch (options.backend) {
+    case Backend::Window: return make_glfw_context(options);
+    case Backend::Egl:
+#if GSV_HAVE_EGL
+        return make_egl_context(options);
+#else
+        throw UnsupportedError("backend 'egl' is not compiled into this build (EGL was not found); use --backend window");
+#endif
+    case Backend::OSMesa:
+#if GSV_HAVE_OSMESA
+        return make_osmesa_context(options);
+#else
+        throw UnsupportedError("backend 'osmesa' is not compiled into this build (libOSMesa was not found)");
+#endif
+    }
+    throw Error("unknown backend");
+}
+
+std::vector<Backend> compiled_backends() {
+    std::vector<Backend> backends{Backend::Window};
+#if GSV_HAVE_EGL
+    backends.push_back(Backend::Egl);
+#endif
+#if GSV_HAVE_OSMESA
+    backends.push_back(Backend::OSMesa);
+#endif
+    return backends;
+}
+
+const char* backend_name(Backend backend) {
+    switch (backend) {
+    case Backend::Window: return "window";
+    case Backend::Egl: return "egl";
+    case Backend::OSMesa: return "osmesa";
+    }
+    return "?";
+}
+
+Backend parse_backend(const std::string& text) {
+    if (text == "window" || text == "glfw") return Backend::Window;
+    if (text == "egl") return Backend::Egl;
+    if (text == "osmesa") return Backend::OSMesa;
+    throw Error("unknown backend '" + text + "' (expected window, egl or osmesa)");
+}
+
+Profile parse_profile(const std::string& text) {
+    if (text == "core") return Profile::Core;
+    if (text == "compat" || text == "compatibility") return Profile::Compat;
+    throw Error("unknown profile '" + text + "' (expected core or compat)");
+}
+
+GlVersion parse_gl_version(const std::string& text) {
+    std::smatch m;
+    static const std::regex pattern(R"(^([0-9])\.([0-9])$)");
+    if (!std::regex_match(text, m, pattern))
+        throw Error("bad GL version '" + text + "' (expected MAJOR.MINOR, e.g. 4.1)");
+    GlVersion v{std::stoi(m[1]), std::stoi(m[2])};
+    if (v < GlVersion{3, 3} || GlVersion{4, 6} < v)
+        throw Error("GL version '" + text + "' is out of range [3.3, 4.6]");
+    return v;
+}
+
+GlVersion Context::effective_version() const {
+    return info_.obtained < info_.requested ? info_.obtained : info_.requested;
+}
+
+void Context::require(GlVersion needed, const std::string& what_for) const {
+    const GlVersion have = effective_version();
+    if (have < needed) {
+        std::string why = "needs OpenGL " + needed.str() + " (" + what_for + ") but this run has " + have.str();
+        if (info_.obtained < info_.requested || info_.obtained < needed)
+            why += " (the driver offers " + info_.obtained.str() + ": " + info_.renderer + ")";
+        else
+            why += " (asked for with --gl " + info_.requested.str() + ")";
+        throw UnsupportedError(why);
+    }
+}
+
+std::string Context::describe() const {
+    return info_.renderer + ", OpenGL " + info_.version_string + ", " + profile_name(info_.profile) +
+           " profile, " + backend_name(info_.backend) + " backend";
+}
+
+static std::string gl_string(GLenum name) {
+    const auto* s = reinterpret_cast<const char*>(glGetString(name));
+    return s ? s : "";
+}
+
+void Context::load_gl(void* (*get_proc)(const char*), const ContextOptions& options) {
+    const int loaded = gladLoadGL(reinterpret_cast<GLADloadfunc>(get_proc));
+    if (loaded == 0) throw Error(std::string("could not load OpenGL functions through the ") +
+                                 backend_name(options.backend) + " backend");
+    info_.backend = options.backend;
+    info_.requested = options.version;
+    info_.obtained = GlVersion{GLAD_VERSION_MAJOR(loaded), GLAD_VERSION_MINOR(loaded)};
+    info_.renderer = gl_string(GL_RENDERER);
+    info_.vendor = gl_string(GL_VENDOR);
+    info_.version_string = gl_string(GL_VERSION);
+    info_.glsl_version_string = gl_string(GL_SHADING_LANGUAGE_VERSION);
+    GLint mask = 0;
+    glGetIntegerv(GL_CONTEXT_PROFILE_MASK, &mask);
+    info_.profile = (mask & GL_CONTEXT_CORE_PROFILE_BIT) ? Profile::Core : Profile::Compat;
+    if (info_.profile != options.profile)
+        throw UnsupportedError(std::string("asked for a ") + profile_name(options.profile) +
+                               " profile context but the driver gave " + profile_name(info_.profile) +
+                               " (" + info_.version_string + "); macOS offers only core: use --profile core");
+    glGetError();  // some drivers leave an error from context creation
+}
+
+void check_gl_error(const char* what) {
+    const GLenum error = glGetError();
+    if (error == GL_NO_ERROR) return;
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    throw Error(std::string("GL error ") + gl_error_name(error) + " after " + what);
+}
+
+const char* gl_error_name(unsigned error) {
+    switch (error) {
+    case GL_INVALID_ENUM: return "GL_INVALID_ENUM";
+    case GL_INVALID_VALUE: return "GL_INVALID_VALUE";
+    case GL_INVALID_OPERATION: return "GL_INVALID_OPERATION";
+    case GL_INVALID_FRAMEBUFFER_OPERATION: return "GL_INVALID_FRAMEBUFFER_OPERATION";
+    case GL_OUT_OF_MEMORY: return "GL_OUT_OF_MEMORY";
+    case GL_STACK_OVERFLOW: return "GL_STACK_OVERFLOW";
+    case GL_STACK_UNDERFLOW: return "GL_STACK_UNDERFLOW";
+    default: return "GL_UNKNOWN_ERROR";
+    }
+}
+
+}  // namespace gsv

@@ -1,0 +1,65 @@
+#pragma once
+// Comparing a rendered image with a reference the way web-platform-tests reftests do: a pixel
+// "differs" when some channel is off by more than a per-channel tolerance, and the test passes
+// when no more than a budget of pixels differ. GPUs and drivers legitimately disagree by a level
+// or two on rasterisation edges and rounding, so exact equality would fail correct solutions.
+#include <array>
+#include <string>
+
+#include "common/image/image.h"
+
+namespace gsv {
+
+struct ImageTolerance {
+    int max_channel_diff = 0;             // a pixel differs when any RGBA channel is off by more
+    double max_differing_fraction = 0.0;  // of all pixels, allowed to differ
+};
+
+struct ImageDiff {
+    bool size_mismatch = false;
+    int actual_width = 0, actual_height = 0, expected_width = 0, expected_height = 0;
+
+    int max_channel_diff = 0;    // over all pixels and channels (RGBA)
+    long differing_pixels = 0;   // pixels with some channel diff > the tolerance's max_channel_diff
+    long total_pixels = 0;
+    double rmse = 0, psnr = 0;   // over RGB in [0,255]; psnr = +inf when RGB is identical
+    double ssim = 1;             // ssim_luma(actual, expected)
+    int diff_x0 = 0, diff_y0 = 0, diff_x1 = -1, diff_y1 = -1;  // inclusive box of differing pixels
+
+    // Pixel counts by their largest channel difference, so within() can judge any tolerance,
+    // not only the one compare_images counted differing_pixels with.
+    std::array<long, 256> pixels_by_max_diff{};
+
+    // Passes when the sizes match and the number of pixels with some channel diff greater than
+    // tolerance.max_channel_diff is at most floor(max_differing_fraction * total_pixels).
+    bool within(const ImageTolerance& tolerance) const;
+
+    // One line, e.g. "max diff 37, 120 of 65536 px differ (0.18%) in [10,20]-[40,60],
+    // PSNR 41.2 dB, SSIM 0.993"; for a size mismatch, both sizes.
+    std::string summary() const;
+};
+
+// Throws nothing for a size mismatch: the result says so and within() fails.
+ImageDiff compare_images(const Image& actual, const Image& expected,
+                         const ImageTolerance& tolerance);
+
+// Per-pixel largest channel difference through a black -> red -> yellow -> white ramp (linear in
+// the difference, white = 255), opaque. Throws gsv::Error when the sizes differ.
+Image difference_heatmap(const Image& actual, const Image& expected);
+
+// Mean SSIM (Wang, Bovik, Sheikh, Simoncelli 2004) of the luma Y = 0.299R + 0.587G + 0.114B;
+// alpha is ignored. Throws gsv::Error when the sizes differ. See image_compare.cpp for the window
+// and the border, which match scikit-image's structural_similarity.
+double ssim_luma(const Image& a, const Image& b);
+
+// True when every pixel has the same RGBA (vacuously for an empty image): a render that drew
+// nothing, or only the clear colour.
+bool is_blank(const Image& image);
+
+struct FloatStats {
+    long nan_count = 0, inf_count = 0;  // counted per channel value
+    float min = 0, max = 0;             // over finite values; 0 when there are none
+};
+FloatStats float_stats(const ImageF& image);
+
+}  // namespace gsv

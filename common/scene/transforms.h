@@ -1,0 +1,31 @@
+#pragma once
+// Model, view and projection for a draw, handed to shaders as uModelViewProjectionMatrix & co. in core,
+// or loaded into the fixed-function matrix stacks that feed gl_ModelViewProjectionMatrix in compat.
+#include "common/gl/gl_version.h"
+#include "common/shader/shader_program.h"
+
+#include <glm/glm.hpp>
+
+namespace gsv {
+
+struct Transforms {
+    glm::mat4 model{1.0f};
+    glm::mat4 view{1.0f};
+    glm::mat4 projection{1.0f};
+};
+
+// An orbit camera around the origin, the way every 3D lab is looked at.
+struct OrbitCamera {
+    float yaw_degrees = 30.0f;
+    float pitch_degrees = 20.0f;
+    float distance = 3.0f;
+    float fov_degrees = 40.0f;
+    glm::mat4 view() const;
+    glm::mat4 projection(float aspect) const;
+    glm::vec3 eye() const;
+};
+
+// Must be called with `program` in use.
+void apply_transforms(const ShaderProgram& program, const Transforms& transforms, Profile profile);
+
+}  // namespace gsv

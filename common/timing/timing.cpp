@@ -1,0 +1,55 @@
+#include "common/timing/timing.h"
+
+#include "common/gl/gl.h"
+
+#include <algorithm>
+#include <chrono>
+#include <numeric>
+
+namespace gsv {
+
+double now_seconds() {
+    using clock = std::chrono::steady_clock;
+    return std::chrono::duration<double>(clock::now().time_since_epoch()).count();
+}
+
+TimingStats summarize(std::vector<double> samples_ms) {
+    TimingStats stats;
+    if (samples_ms.empty()) return stats;
+    std::sort(samples_ms.begin(), samples_ms.end());
+    const std::size_t n = samples_ms.size();
+    stats.frames = static_cast<int>(n);
+    stats.min_ms = samples_ms.front();
+    stats.max_ms = samples_ms.back();
+    stats.median_ms = n % 2 ? samples_ms[n / 2] : 0.5 * (samples_ms[n / 2 - 1] + samples_ms[n / 2]);
+    stats.mean_ms = std::accumulate(samples_ms.begin(), samples_ms.end(), 0.0) / static_cast<double>(n);
+    return stats;
+}
+
+TimingStats time_frames(const std::function<void()>& frame, int warmup, int frames) {
+    glFinish();  // nothing queued before us may be charged to the first frame
+    for (int i = 0; i < warmup; ++i) {
+        frame();
+        glFinish();
+    }
+    std::vector<double> samples;
+    samples.reserve(static_cast<std::size_t>(std::max(frames, 0)));
+    for (int i = 0; i < frames; ++i) {
+        const double t0 = now_seconds();
+        frame();
+        glFinish();
+        samples.push_back(1000.0 * (now_seconds() - t0));
+    }
+    return summarize(std::move(samples));
+}
+
+void FrameClock::tick() {
+    const double t = now_seconds();
+    if (last_s_ >= 0) {
+        const double ms = 1000.0 * (t - last_s_);
+        smoothed_ms_ = smoothed_ms_ == 0 ? ms : 0.9 * smoothed_ms_ + 0.1 * ms;
+    }
+    last_s_ = t;
+}
+
+}  // namespace gsv

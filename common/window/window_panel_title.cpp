@@ -1,0 +1,37 @@
+// Without Dear ImGui the panel is the window title: frame time and the selected parameter.
+#include "common/window/window_panel.h"
+
+#include <GLFW/glfw3.h>
+
+#include <cstdio>
+
+namespace gsv {
+namespace {
+
+class TitlePanel final : public WindowPanel {
+public:
+    explicit TitlePanel(GLFWwindow* window) : window_(window) {}
+    bool draw(PanelState& state) override {
+        const auto& spec = state.params.specs()[static_cast<std::size_t>(state.selected)];
+        char title[512];
+        std::snprintf(title, sizeof title, "%s | %.2f ms render, %.1f fps | %s = %s  (H: keys)%s%s",
+                      state.heading.c_str(), state.render_ms, state.frame_ms > 0 ? 1000.0 / state.frame_ms : 0.0,
+                      spec.name.c_str(), state.params.get_text(spec.name).c_str(),
+                      state.status.empty() ? "" : " | ", state.status.substr(0, 80).c_str());
+        glfwSetWindowTitle(window_, title);
+        return false;
+    }
+
+private:
+    GLFWwindow* window_;
+};
+
+}  // namespace
+
+#if !GSV_HAVE_IMGUI
+std::unique_ptr<WindowPanel> make_window_panel(GLFWwindow* window, GlVersion) {
+    return std::make_unique<TitlePanel>(window);
+}
+#endif
+
+}  // namespace gsv

@@ -1,0 +1,150 @@
+#include "support/network/processor.h"
+
+#include "common/core/error.h"
+
+#include <algorithm>
+#include <cctype>
+
+namespace gsv {
+namespace {
+
+const Port* find_port(const std::vector<Port>& ports, const std::string& name) {
+    for (const Port& p : ports)
+        if (p.name == name) return &p;
+    return nullptr;
+}
+
+}  // namespace
+
+const char* port_type_name(PortType type) {
+    switch (type) {
+    case PortType::Volume: return "volume";
+    case PortType::Image: return "image";
+    case PortType::Geometry: return "geometry";
+    }
+    return "?";
+}
+
+const char* run_state_name(RunState state) {
+    switch (state) {
+    case RunState::Pending: return "pending";
+    case RunState::Ran: return "ran";
+    case RunState::Failed: return "failed";
+    case RunState::Skipped: return "skipped";
+    }
+    return "?";
+}
+
+std::vector<std::string> port_names(const std::vector<Port>& ports) {
+    std::vector<std::string> names;
+    for (const Port& p : ports) names.push_back(p.name);
+    return names;
+}
+
+std::string list_or_none(const std::vector<std::string>& names) {
+    std::string out;
+    for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
+    return out.empty() ? "none" : out;
+}
+
+bool is_network_name(const std::string& name) {
+    return !name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
+    });
+}
+
+std::string join_names(const std::vector<std::string>& names) {
+    std::string out;
+    for (std::size_t i = 0; i < names.size(); ++i)
+        out += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
+    return out;
+}
+
+Processor::Processor(std::string type_name) : type_name_(std::move(type_name)) {
+    if (!is_network_name(type_name_))
+        throw Error("processor type name '" + type_name_ + "' may only use letters, digits, '_' and '-'");
+}
+
+std::string Processor::describe() const { return name_.empty() ? type_name_ : name_ + " (" + type_name_ + ")"; }
+
+std::string Processor::qualified(const std::string& member) const {
+    return (name_.empty() ? type_name_ : name_) + "." + member;
+}
+
+const Port* Processor::find_input(const std::string& port) const { return find_port(inputs_, port); }
+const Port* Processor::find_output(const std::string& port) const { return find_port(outputs_, port); }
+
+void Processor::add_input(const std::string& name, PortType type) {
+    if (!is_network_name(name))
+        throw Error(type_name_ + ": input name '" + name + "' may only use letters, digits, '_' and '-'");
+    if (find_input(name)) throw Error(type_name_ + ": input '" + name + "' declared twice");
+    inputs_.push_back(Port{name, type, false, {}});
+}
+
+void Processor::add_optional_input(const std::string& name, PortType type) {
+    add_input(name, type);
+    inputs_.back().optional = true;
+}
+
+void Processor::add_output(const std::string& name, PortType type) {
+    if (!is_network_name(name))
+        throw Error(type_name_ + ": output name '" + name + "' may only use letters, digits, '_' and '-'");
+    if (find_output(name)) throw Error(type_name_ + ": output '" + name + "' declared twice");
+    outputs_.push_back(Port{name, type, false, {}});
+}
+
+void Processor::add_property(const std::string& name, const std::string& default_value,
+                             std::vector<std::string> choices) {
+    if (!is_network_name(name))
+        throw Error(type_name_ + ": property name '" + name + "' may only use letters, digits, '_' and '-'");
+    for (const Property& p : properties_)
+        if (p.name == name) throw Error(type_name_ + ": property '" + name + "' declared twice");
+    if (!choices.empty() && std::find(choices.begin(), choices.end(), default_value) == choices.end())
+        throw Error(type_name_ + ": property '" + name + "' defaults to '" + default_value +
+                    "', which is not one of: " + list_or_none(choices));
+    properties_.push_back(Property{name, default_value, default_value, std::move(choices), false});
+}
+
+std::size_t Processor::property_index(const std::string& name) const {
+    for (std::size_t i = 0; i < properties_.size(); ++i)
+        if (properties_[i].name == name) return i;
+    std::vector<std::string> known;
+    for (const Property& p : properties_) known.push_back(p.name);
+    throw Error(describe() + " has no property '" + name + "' (its properties: " + list_or_none(known) + ")");
+}
+
+void Processor::set_property(const std::string& name, const std::string& value) {
+    Property& p = properties_[property_index(name)];
+    if (!p.choices.empty() && std::find(p.choices.begin(), p.choices.end(), value) == p.choices.end())
+        throw Error(qualified(name) + " = '" + value + "' is not one of: " + list_or_none(p.choices));
+    p.value = value;
+    p.set = true;
+}
+
+const std::string& Processor::property(const std::string& name) const {
+    return properties_[property_index(name)].value;
+}
+
+const Port& Processor::input_port(const std::string& port) const {
+    const Port* in = find_input(port);
+    if (!in)
+        throw Error(describe() + " has no input '" + port + "' (its inputs: " + list_or_none(port_names(inputs_)) +
+                    ")");
+    // The network runs a processor only with every required input filled, so this is a processor run by hand.
+    if (in->data.empty() && !in->optional) throw Error("input " + qualified(port) + " holds nothing");
+    return *in;
+}
+
+Port& Processor::output_port(const std::string& port) {
+    for (Port& p : outputs_)
+        if (p.name == port) return p;
+    throw Error(describe() + " has no output '" + port + "' (its outputs: " + list_or_none(port_names(outputs_)) +
+                ")");
+}
+
+void Processor::fail_input_type(const std::string& port) const {
+    // typeid names are mangled, so the message says where to look rather than which types.
+    throw Error("input " + qualified(port) + " holds another C++ type than process() asks for");
+}
+
+}  // namespace gsv
