@@ -12,11 +12,13 @@
 #include "common/shader/shader_library.h"
 #include "common/gl/texture.h"
 #include "common/timing/timing.h"
+#include "common/scene/mesh_data.h"
 #include "common/scene/transforms.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <chrono>
+#include <set>
 #include <fstream>
 #include <thread>
 
@@ -297,4 +299,41 @@ TEST_CASE("shader_program: a type error the driver files under no source string 
     CHECK(message.find("t.vert:4: ") != std::string::npos);
     CHECK(message.find("vReference = aTexCoord0;") != std::string::npos);
     CHECK(message.find(kGeneratedHeaderName) == std::string::npos);
+}
+
+TEST_CASE("shader program: every sampler gets a texture unit of its own at link time, array elements too", "[gl]") {
+    auto context = test::headless_context();
+    const ShaderProgram program = test::test_program(*context, Profile::Core, {"quad.vert", "samplers.frag"});
+    std::set<int> units;
+    for (const char* sampler : {"uFirst", "uVolume", "uLayers[0]", "uLayers[1]", "uLayers[2]"}) {
+        INFO(sampler);
+        const int unit = program.texture_unit(sampler);
+        CHECK(unit >= 0);
+        units.insert(unit);
+        GLint set = -1;
+        glGetUniformiv(program.id(), program.location(sampler), &set);
+        CHECK(set == unit);
+    }
+    CHECK(units.size() == 5);
+    CHECK(program.texture_unit("uLayers") == program.texture_unit("uLayers[0]"));
+    CHECK(program.texture_unit("uMissing") == -1);
+    // Each unit drawn with a texture of one grey level: the sum the shader computes says every one was read from
+    // its own unit.
+    std::vector<Texture> textures;
+    const float levels[] = {0.1f, 0.2f, 0.05f, 0.1f, 0.03f};
+    for (int i = 0; i < 5; ++i) {
+        const std::vector<float> texel(4, levels[i]);
+        textures.push_back(i == 1 ? Texture::create_3d(1, 1, 1, TexelFormat::RGBA32F, texel.data())
+                                  : Texture::create_2d(1, 1, TexelFormat::RGBA32F, texel.data()));
+    }
+    Framebuffer target(4, 4, ColorFormat::RGBA32F);
+    target.bind();
+    program.use();
+    const char* names[] = {"uFirst", "uVolume", "uLayers[0]", "uLayers[1]", "uLayers[2]"};
+    for (int i = 0; i < 5; ++i) program.bind(names[i], textures[static_cast<std::size_t>(i)]);
+    program.bind("uMissing", textures[0]);  // skipped, as set() skips
+    GpuMesh quad(make_fullscreen_quad(), Profile::Core);
+    quad.draw();
+    const ImageF pixels = target.read_rgba32f();
+    CHECK(pixels.at(1, 1)[0] == Approx(0.1 + 0.2 + 0.05 * 1 + 0.1 * 2 + 0.03 * 3).epsilon(1e-5));
 }

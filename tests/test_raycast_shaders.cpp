@@ -13,6 +13,7 @@
 #include "common/gl/gpu_mesh.h"
 #include "common/image/image.h"
 #include "common/scene/mesh_data.h"
+#include "support/raycast/raycast_components.h"
 #include "support/raycast/raycast_config.h"
 #include "common/shader/shader_source.h"
 #include "common/gl/texture.h"
@@ -436,6 +437,38 @@ TEST_CASE("raycast: every valid configuration compiles and links on a GL 4.1 cor
         INFO(fragment);
         CHECK_NOTHROW(build_program(*context, fragment, {}));
     }
+}
+
+TEST_CASE("raycast: every uniform of every program the ray caster builds is set by exactly one module's component", "[raycast][gl]") {
+    auto context = test::headless_context();
+    const Texture none;
+    RaySetup rays(none, none, none);
+    const VoxelGeometry voxels;
+    const GradientLookup gradients(none);
+    const TransferFunctionLookup classification(none);
+    const PhongShading phong;
+    const DvrCompositing dvr;
+    const IsoCompositing iso;
+    const UberModes modes;
+    const ShaderComponents modules{&rays, &voxels, &gradients, &classification, &phong, &dvr, &iso};
+    const auto check = [&](const ShaderProgram& program, ShaderComponents components) {
+        const std::vector<std::string> problems = uniform_ownership_problems(program, components);
+        std::string lines;
+        for (const auto& p : problems) lines += p + "\n";
+        INFO(lines);
+        CHECK(problems.empty());
+        CHECK_FALSE(program.active_uniforms().empty());
+    };
+    for (const Config& config : configs_with_termination_off()) {
+        INFO(describe(config));
+        check(specialised(*context, config), modules);
+    }
+    ShaderComponents uber = modules;
+    uber.push_back(&modes);
+    check(build_program(*context, "raycast_uber.frag", {}), uber);
+    check(build_program(*context, "raycast_dvr_handwritten.frag", {}), modules);
+    // Without the uber-shader's modes, five of its uniforms have no owner: the check sees what is left out.
+    CHECK(uniform_ownership_problems(build_program(*context, "raycast_uber.frag", {}), modules).size() == 5);
 }
 
 TEST_CASE("raycast: MIP compiles no gradient and no shading, DVR with central gradients and Phong exactly those", "[raycast][gl]") {

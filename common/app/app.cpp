@@ -71,7 +71,7 @@ void Session::open(Backend backend) {
     context->require(info.needs, info.needs_why);
     kit = std::make_unique<LabKit>(*context, params, *assets, options.profile);
     lab->setup(*kit);
-    compiled_signature_ = params.compile_signature();
+    compiled_defines_ = params.defines();
 }
 
 const Assets& Session::find_assets() {
@@ -118,10 +118,10 @@ std::optional<std::string> Session::sync_params() {
     // compiler would give for them.
     lab->params_changed(*kit);
     std::optional<std::string> error;
-    const std::string signature = params.compile_signature();
-    if (signature != compiled_signature_) {
-        error = kit->shaders().rebuild_all(params.defines());
-        compiled_signature_ = signature;
+    std::vector<ShaderDefine> defines = params.defines();
+    if (defines != compiled_defines_) {
+        error = kit->shaders().rebuild_all(defines);
+        compiled_defines_ = std::move(defines);
     }
     return error;
 }

@@ -51,7 +51,7 @@ struct Session {
     std::string title() const { return info.id + " (" + variant + ")"; }
 
 private:
-    std::string compiled_signature_;
+    std::vector<ShaderDefine> compiled_defines_;  // what the lab's programs were last built with
 };
 
 // A float target read back: the 8-bit image (NaN painted magenta) and how many values were NaN or Inf.

@@ -137,6 +137,22 @@ std::size_t Params::index_of(const std::string& name) const {
     throw Error("unknown parameter '" + name + "' (this lab has: " + known + ")");
 }
 
+std::size_t Params::read_index(const std::string& name) const {
+    const std::size_t i = index_of(name);
+    if (read_log_.log) read_log_.log->push_back(i);
+    return i;
+}
+
+std::vector<std::size_t>* Params::swap_read_log(std::vector<std::size_t>* log) const {
+    std::vector<std::size_t>* previous = read_log_.log;
+    read_log_.log = log;
+    return previous;
+}
+
+void Params::note_reads(const std::vector<std::size_t>& indices) const {
+    if (read_log_.log) read_log_.log->insert(read_log_.log->end(), indices.begin(), indices.end());
+}
+
 const ParamSpec& Params::spec(const std::string& name) const { return specs_[index_of(name)]; }
 
 void Params::set(const std::string& name, const std::string& text) {
@@ -203,9 +219,10 @@ void Params::set_assignment(const std::string& assignment) {
     set(assignment.substr(0, eq), assignment.substr(eq + 1));
 }
 
-std::string Params::get_text(const std::string& name) const {
-    const std::size_t i = index_of(name);
-    const Value& v = values_[i];
+std::string Params::get_text(const std::string& name) const { return text_at(read_index(name)); }
+
+std::string Params::text_at(std::size_t i) const {
+    const Value& v = values_.at(i);
     switch (specs_[i].type) {
     case ParamType::Float: return format_number(v.number);
     case ParamType::Int: return std::to_string(static_cast<long>(v.number));
@@ -217,12 +234,12 @@ std::string Params::get_text(const std::string& name) const {
     return "";
 }
 
-float Params::get_float(const std::string& name) const { return static_cast<float>(values_[index_of(name)].number); }
-int Params::get_int(const std::string& name) const { return static_cast<int>(values_[index_of(name)].number); }
-bool Params::get_bool(const std::string& name) const { return values_[index_of(name)].number != 0; }
-const std::string& Params::get_choice(const std::string& name) const { return values_[index_of(name)].choice; }
-glm::vec3 Params::get_vec3(const std::string& name) const { return values_[index_of(name)].vec; }
-const std::string& Params::get_file(const std::string& name) const { return values_[index_of(name)].choice; }
+float Params::get_float(const std::string& name) const { return static_cast<float>(values_[read_index(name)].number); }
+int Params::get_int(const std::string& name) const { return static_cast<int>(values_[read_index(name)].number); }
+bool Params::get_bool(const std::string& name) const { return values_[read_index(name)].number != 0; }
+const std::string& Params::get_choice(const std::string& name) const { return values_[read_index(name)].choice; }
+glm::vec3 Params::get_vec3(const std::string& name) const { return values_[read_index(name)].vec; }
+const std::string& Params::get_file(const std::string& name) const { return values_[read_index(name)].choice; }
 
 void Params::nudge(const std::string& name, int steps) {
     const std::size_t i = index_of(name);
@@ -273,23 +290,21 @@ std::vector<ShaderDefine> Params::defines() const {
             break;
         case ParamType::Int: out.push_back({s.define, std::to_string(static_cast<long>(v.number))}); break;
         case ParamType::Float: out.push_back({s.define, format_number(v.number)}); break;
-        case ParamType::Vec3: out.push_back({s.define, "vec3(" + get_text(s.name) + ")"}); break;
+        case ParamType::Vec3: out.push_back({s.define, "vec3(" + text_at(i) + ")"}); break;
         case ParamType::File: break;
         }
     }
     return out;
 }
 
-std::string Params::compile_signature() const {
-    std::string signature;
-    for (const auto& d : defines()) signature += d.name + "=" + d.value + ";";
-    return signature;
-}
-
 void Params::apply_uniforms(const ShaderProgram& program) const {
     for (std::size_t i = 0; i < specs_.size(); ++i) {
         const ParamSpec& s = specs_[i];
-        if (s.compile_time) continue;
+        // A sampler of the same name (lab 02's `input` and its texture uInput) keeps the unit the program gave it.
+        const bool sampler = !s.compile_time && program.texture_unit(s.uniform) >= 0;
+        if (read_log_.log && (s.compile_time || (s.type != ParamType::File && !sampler && program.has(s.uniform))))
+            read_log_.log->push_back(i);
+        if (s.compile_time || sampler) continue;
         const Value& v = values_[i];
         switch (s.type) {
         case ParamType::Float: program.set(s.uniform, static_cast<float>(v.number)); break;

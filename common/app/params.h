@@ -69,9 +69,18 @@ public:
     void nudge(const std::string& name, int steps);
 
     std::vector<ShaderDefine> defines() const;
-    std::string compile_signature() const;  // changes exactly when defines() would
-    // Sets every runtime parameter's uniform on `program`, which must be in use.
+    // Sets every runtime parameter's uniform on `program`, which must be in use; a sampler of that name is left on
+    // its texture unit.
     void apply_uniforms(const ShaderProgram& program) const;
+
+    // Change tracking (common/app/change_tracker.h). While a read log is set, every parameter read is added to it:
+    // through a getter, as an active uniform of a program in use (apply_uniforms), and every compile-time one
+    // when a program is used (each is compiled into every program). Returns the log that was set before.
+    std::vector<std::size_t>* swap_read_log(std::vector<std::size_t>* log) const;
+    // Adds reads to the log in place, if any (a nested tracker that had nothing to remake reports what it read).
+    void note_reads(const std::vector<std::size_t>& indices) const;
+    // The value of the parameter at `index` as text, without noting a read.
+    std::string text_at(std::size_t index) const;
 
     const std::vector<ParamSpec>& specs() const { return specs_; }
     const ParamSpec& spec(const std::string& name) const;  // throws naming the unknown parameter and the known ones
@@ -88,8 +97,17 @@ private:
     };
     ParamSpec& add(ParamSpec spec, Value value);
     std::size_t index_of(const std::string& name) const;
+    std::size_t read_index(const std::string& name) const;  // index_of, noted in the read log
+    // The read log belongs to this object: a copy starts without one, and assigning values keeps this one's.
+    struct ReadLogSlot {
+        std::vector<std::size_t>* log = nullptr;
+        ReadLogSlot() = default;
+        ReadLogSlot(const ReadLogSlot&) {}
+        ReadLogSlot& operator=(const ReadLogSlot&) { return *this; }
+    };
     std::vector<ParamSpec> specs_;
     std::vector<Value> values_;
+    mutable ReadLogSlot read_log_;
 };
 
 }  // namespace gsv

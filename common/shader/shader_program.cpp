@@ -81,10 +81,96 @@ ShaderProgram ShaderProgram::build(const ProgramSpec& spec, const PreprocessOpti
                     info_log(program.name_.get(), true));
     }
     for (const auto& shader : shaders) glDetachShader(program.name_.get(), shader.get());
+    program.assign_texture_units(spec.name);
     std::sort(program.dependencies_.begin(), program.dependencies_.end());
     program.dependencies_.erase(std::unique(program.dependencies_.begin(), program.dependencies_.end()),
                                 program.dependencies_.end());
     return program;
+}
+
+namespace {
+
+bool is_sampler(GLenum type) {
+    switch (type) {
+    case GL_SAMPLER_1D: case GL_SAMPLER_2D: case GL_SAMPLER_3D: case GL_SAMPLER_CUBE:
+    case GL_SAMPLER_1D_SHADOW: case GL_SAMPLER_2D_SHADOW: case GL_SAMPLER_1D_ARRAY: case GL_SAMPLER_2D_ARRAY:
+    case GL_SAMPLER_1D_ARRAY_SHADOW: case GL_SAMPLER_2D_ARRAY_SHADOW: case GL_SAMPLER_2D_MULTISAMPLE:
+    case GL_SAMPLER_2D_MULTISAMPLE_ARRAY: case GL_SAMPLER_CUBE_SHADOW: case GL_SAMPLER_BUFFER: case GL_SAMPLER_2D_RECT:
+    case GL_SAMPLER_2D_RECT_SHADOW: case GL_INT_SAMPLER_1D: case GL_INT_SAMPLER_2D: case GL_INT_SAMPLER_3D:
+    case GL_INT_SAMPLER_CUBE: case GL_INT_SAMPLER_1D_ARRAY: case GL_INT_SAMPLER_2D_ARRAY: case GL_INT_SAMPLER_BUFFER:
+    case GL_INT_SAMPLER_2D_RECT: case GL_UNSIGNED_INT_SAMPLER_1D: case GL_UNSIGNED_INT_SAMPLER_2D:
+    case GL_UNSIGNED_INT_SAMPLER_3D: case GL_UNSIGNED_INT_SAMPLER_CUBE: case GL_UNSIGNED_INT_SAMPLER_1D_ARRAY:
+    case GL_UNSIGNED_INT_SAMPLER_2D_ARRAY: case GL_UNSIGNED_INT_SAMPLER_BUFFER: case GL_UNSIGNED_INT_SAMPLER_2D_RECT:
+        return true;
+    default: return false;
+    }
+}
+
+struct ActiveUniform {
+    std::string name;  // as GL reports it: "uSlices[0]" for an array
+    GLenum type = 0;
+    GLint size = 1;
+};
+
+std::vector<ActiveUniform> active_uniforms_of(GLuint program) {
+    GLint count = 0, longest = 0;
+    glGetProgramiv(program, GL_ACTIVE_UNIFORMS, &count);
+    glGetProgramiv(program, GL_ACTIVE_UNIFORM_MAX_LENGTH, &longest);
+    std::vector<ActiveUniform> uniforms;
+    std::string name(static_cast<std::size_t>(std::max(longest, 1)), '\0');
+    for (GLint i = 0; i < count; ++i) {
+        ActiveUniform u;
+        GLsizei length = 0;
+        glGetActiveUniform(program, static_cast<GLuint>(i), longest, &length, &u.size, &u.type, name.data());
+        u.name.assign(name.data(), static_cast<std::size_t>(length));
+        uniforms.push_back(std::move(u));
+    }
+    return uniforms;
+}
+
+}  // namespace
+
+void ShaderProgram::assign_texture_units(const std::string& program_name) {
+    GLint available = 0;
+    glGetIntegerv(GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS, &available);
+    int next = 0;
+    for (const ActiveUniform& u : active_uniforms_of(name_.get())) {
+        if (!is_sampler(u.type)) continue;
+        const std::string base = u.name.size() > 3 && u.name.compare(u.name.size() - 3, 3, "[0]") == 0
+                                     ? u.name.substr(0, u.name.size() - 3)
+                                     : u.name;
+        for (GLint k = 0; k < u.size; ++k) {
+            if (next >= available)
+                throw UnsupportedError("program '" + program_name + "' samples more textures than this GPU's " +
+                                       std::to_string(available) + " texture units");
+            const std::string element = u.size > 1 || base != u.name ? base + "[" + std::to_string(k) + "]" : base;
+            texture_units_[element] = next;
+            if (k == 0 && element != base) texture_units_[base] = next;
+            // Element locations are looked up one by one: only explicit locations are promised to be consecutive.
+            glProgramUniform1i(name_.get(), glGetUniformLocation(name_.get(), element.c_str()), next);
+            ++next;
+        }
+    }
+}
+
+int ShaderProgram::texture_unit(const std::string& sampler) const {
+    const auto it = texture_units_.find(sampler);
+    return it == texture_units_.end() ? -1 : it->second;
+}
+
+void ShaderProgram::bind(const std::string& sampler, const Texture& texture) const {
+    if (const int unit = texture_unit(sampler); unit >= 0) texture.bind(unit);
+}
+
+void ShaderProgram::bind(const std::string& sampler, const BufferTexture& texture) const {
+    if (const int unit = texture_unit(sampler); unit >= 0) texture.bind(unit);
+}
+
+std::vector<std::string> ShaderProgram::active_uniforms() const {
+    std::vector<std::string> names;
+    for (const ActiveUniform& u : active_uniforms_of(name_.get()))
+        if (u.name.rfind("gl_", 0) != 0) names.push_back(u.name);  // built-ins (gl_DepthRange) are GL's to set
+    return names;
 }
 
 GLint ShaderProgram::location(const std::string& uniform) const {

@@ -1,6 +1,11 @@
 #pragma once
 // A linked GLSL program built from shader files through the kit's preprocessor, with uniforms set by name.
+// Texture units are the program's business, not the lab's: at link time every active sampler (each element of a
+// sampler array) gets a unit of its own, so `program.bind("uVolume", texture)` is all a lab writes. Two samplers
+// of different types on one unit fail every draw; this cannot happen.
+#include "common/gl/buffer_texture.h"
 #include "common/gl/gl_object.h"
+#include "common/gl/texture.h"
 #include "common/shader/shader_source.h"
 
 #include <glm/glm.hpp>
@@ -48,11 +53,23 @@ public:
     void set(const std::string& uniform, const glm::mat3& value) const;
     void set(const std::string& uniform, const glm::mat4& value) const;
 
+    // Binds `texture` to the unit the program gave sampler `sampler` ("uFlowSlices[3]" for an array element);
+    // skips a sampler the program does not have, as set() does.
+    void bind(const std::string& sampler, const Texture& texture) const;
+    void bind(const std::string& sampler, const BufferTexture& texture) const;
+    // The texture unit of a sampler, -1 when the program has no such sampler.
+    int texture_unit(const std::string& sampler) const;
+    // The names of the program's active uniforms as GL reports them ("uNodes[0]" for an array), samplers included,
+    // built-ins (gl_DepthRange) left out.
+    std::vector<std::string> active_uniforms() const;
+
 private:
+    void assign_texture_units(const std::string& program_name);
     ProgramName name_;
     std::vector<std::filesystem::path> dependencies_;
     std::vector<std::string> compiled_sources_;
     mutable std::unordered_map<std::string, GLint> locations_;
+    std::unordered_map<std::string, int> texture_units_;
 };
 
 }  // namespace gsv

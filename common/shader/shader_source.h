@@ -13,6 +13,8 @@ namespace gsv {
 struct ShaderDefine {
     std::string name;
     std::string value;
+    friend bool operator==(const ShaderDefine& a, const ShaderDefine& b) { return a.name == b.name && a.value == b.value; }
+    friend bool operator!=(const ShaderDefine& a, const ShaderDefine& b) { return !(a == b); }
 };
 
 // A file that exists only in memory: GLSL glue the C++ side writes for one configuration (lab 06's

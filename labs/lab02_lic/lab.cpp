@@ -4,6 +4,7 @@
 // The lesson is in the shaders (lic.frag, streamline.glsl); this file makes the two textures LIC reads
 // (white noise or a photograph, and the flow in texels per step) and draws one full-screen quad.
 #include "common/app/app.h"
+#include "common/app/change_tracker.h"
 #include "support/flow/flow_field.h"
 #include "common/gl/gl.h"
 #include "common/gl/gpu_mesh.h"
@@ -46,38 +47,20 @@ public:
     }
 
     void render(gsv::LabKit& kit, const gsv::Frame& frame) override {
-        update_textures(kit, frame);
+        // Each texture is remade only when what it was made from changes: not for `length` or the step, and not
+        // on every frame while `time` plays a field from a file (which is read once).
+        flow_.update(kit.params(), [&] { return make_flow_texture(kit, frame); }, frame.width, frame.height);
+        input_.update(kit.params(), [&] { return make_input_texture(kit, frame); }, frame.width, frame.height);
         glDisable(GL_DEPTH_TEST);
         const gsv::ShaderProgram& program = kit.use(*lic_);
-        input_.bind(0);
-        flow_.bind(1);
-        program.set("uInput", 0);
-        program.set("uFlow", 1);
+        program.bind("uInput", *input_);
+        program.bind("uFlow", *flow_);
         quad_.draw();
     }
 
     std::vector<std::string> sweep_reference() const override { return {"length=200"}; }
 
 private:
-    // Each texture is remade only when what it shows changes: not for `length` or the step, and not on
-    // every frame while `time` plays a field from a file (which is read once).
-    void update_textures(gsv::LabKit& kit, const gsv::Frame& frame) {
-        const auto& p = kit.params();
-        const std::string size = std::to_string(frame.width) + "x" + std::to_string(frame.height);
-        std::string flow_signature = size;
-        for (const char* name : {"field", "field_file", "speed", "time", "seed", "swirl_radius"})
-            flow_signature += ";" + p.get_text(name);
-        if (flow_signature != flow_signature_) {
-            flow_ = make_flow_texture(kit, frame);
-            flow_signature_ = flow_signature;
-        }
-        const std::string input_signature = size + ";" + p.get_text("input") + ";" + p.get_text("seed");
-        if (input_signature != input_signature_) {
-            input_ = make_input_texture(kit, frame);
-            input_signature_ = input_signature;
-        }
-    }
-
     // One flow texel per pixel: a step of one texel is a step of one pixel.
     gsv::Texture make_flow_texture(gsv::LabKit& kit, const gsv::Frame& frame) {
         const auto& p = kit.params();
@@ -110,13 +93,10 @@ private:
     // frame, as it moves the double gyre through its period.
     gsv::FlowField field_from_file(gsv::LabKit& kit, double speed) {
         const auto& p = kit.params();
-        if (p.get_file("field_file") != loaded_file_) {
-            file_ = gsv::load_flow_sequence(kit.assets().user_file(p.get_file("field_file")));
-            loaded_file_ = p.get_file("field_file");
-        }
-        const int frames = static_cast<int>(file_.frames.size());
+        file_.update(p, [&] { return gsv::load_flow_sequence(kit.assets().user_file(p.get_file("field_file"))); });
+        const int frames = static_cast<int>(file_->frames.size());
         const int index = std::min(frames - 1, static_cast<int>(p.get_float("time") / 10.0 * frames));
-        gsv::FlowField field = file_.frames[static_cast<std::size_t>(index)];
+        gsv::FlowField field = file_->frames[static_cast<std::size_t>(index)];
         const float fastest = field.max_speed();
         if (fastest > 0)
             for (float& v : field.velocity) v = static_cast<float>(v * (speed / fastest));
@@ -126,10 +106,8 @@ private:
     const gsv::ShaderLibrary::Entry* lic_ = nullptr;
     gsv::GpuMesh quad_;
     gsv::Image photo_;
-    gsv::Texture input_, flow_;
-    std::string flow_signature_, input_signature_;
-    gsv::FlowSequence file_;
-    std::string loaded_file_;
+    gsv::Tracked<gsv::Texture> input_, flow_;
+    gsv::Tracked<gsv::FlowSequence> file_;
 };
 
 }  // namespace

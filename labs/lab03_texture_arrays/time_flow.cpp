@@ -75,13 +75,6 @@ std::vector<double> slice_times(int slices) {
 
 }  // namespace
 
-std::string flow_signature(const gsv::Params& p) {
-    std::string signature;
-    for (const char* name : {"field", "field_file", "slices", "storage", "time_wrap", "grid", "speed"})
-        signature += p.get_text(name) + ";";
-    return signature;
-}
-
 gsv::FlowSequence make_time_flow(gsv::LabKit& kit) { return flow_at_times(kit, slice_times(kit.params().get_int("slices"))); }
 
 void check_storage_limits(const gsv::Params& p) {

@@ -10,9 +10,6 @@
 
 namespace lab03 {
 
-// Everything the uploaded slices depend on; the playhead is not in it, so playing costs no upload.
-std::string flow_signature(const gsv::Params& params);
-
 // T slices over one period, T = the `slices` parameter, slice k at time k * 10 / T: the analytic flows
 // sampled there, or a file's F frames (spread over the period the same way) blended linearly in time.
 // Velocities in flow texels per step; the scale does not depend on T, so slices of any T agree where

@@ -5,6 +5,7 @@
 // does the same update in double precision (common/particle_*) to say how wrong the GPU's float steps
 // are, and in float on every core to say whether the GPU is worth it.
 #include "common/app/app.h"
+#include "common/app/change_tracker.h"
 #include "common/gl/compute.h"
 #include "common/core/error.h"
 #include "common/gl/gl.h"
@@ -52,8 +53,6 @@ public:
         p.add_float("speed_scale", 1.5, 0.01, 100, "the speed drawn red").with_step(0.1);
         p.add_float("point_size", 1, 1, 16, "points' size in pixels").with_step(1);
         gsv::add_orbit_camera(p, 30, 20, 5.0f);
-
-        const std::string small = "particles=65536";
     }
 
     void setup(gsv::LabKit& kit) override {
@@ -103,7 +102,7 @@ public:
 
     gsv::SweepMetrics sweep_metrics(gsv::LabKit& kit, const gsv::Frame&) override {
         gsv::SweepMetrics metrics = lab05::measure(kit, stepper(kit), initial_, done_);
-        state_signature_.clear();  // measuring restarted the buffers
+        state_.invalidate();  // measuring restarted the buffers
         return metrics;
     }
 
@@ -113,59 +112,40 @@ public:
     }
 
 private:
-    // Everything that decides the particles' state except the time shown.
-    static std::string state_signature(const gsv::Params& p) {
-        std::string s;
-        for (const char* name : {"field", "source", "grid", "integrator", "time_step", "particles", "local_size", "seed",
-                                 "gravity", "colour_by_speed", "speed_scale"})
-            s += p.get_text(name) + ";";
-        return s;
-    }
-
     lab05::Stepper stepper(gsv::LabKit& kit) {
-        return lab05::Stepper{kit, *advect_, buffers_, velocity_texture_, limits_};
+        return lab05::Stepper{kit, *advect_, buffers_, *velocity_texture_, limits_};
     }
 
     void update(gsv::LabKit& kit, const gsv::Frame& frame) {
         const auto& p = kit.params();
-        const auto count = static_cast<std::size_t>(p.get_int("particles"));
-        const auto local = static_cast<std::uint32_t>(p.get_int("local_size"));
         const gsv::ParticleScene scene = gsv::particle_scene_from_name(p.get_choice("field"));
-        const std::string particles = p.get_text("field") + ";" + p.get_text("particles") + ";" + p.get_text("seed") +
-                                      ";" + p.get_text("local_size") + ";" + p.get_text("gravity");
-        if (particles != particles_signature_) {
-            const std::size_t capacity = lab05::capacity_for(count, local, limits_);
+        particles_.run_if_changed(p, [&] {
+            const auto count = static_cast<std::size_t>(p.get_int("particles"));
+            const std::size_t capacity =
+                lab05::capacity_for(count, static_cast<std::uint32_t>(p.get_int("local_size")), limits_);
             initial_ = gsv::pad_particles(
                 gsv::make_particles(scene, count, static_cast<std::uint64_t>(p.get_int("seed")), p.get_float("gravity")),
                 capacity);
             buffers_ = lab05::allocate_particle_buffers(count, capacity);
-            particles_signature_ = particles;
-            state_signature_.clear();
-        }
-        const bool textured = p.get_choice("source") == "texture";
-        const std::string grid = textured ? p.get_text("field") + ";" + p.get_text("grid") : "";
-        if (grid != grid_signature_) {
-            velocity_texture_ = gsv::Texture();
-            if (textured) {
-                const gsv::VelocityGrid samples = gsv::VelocityGrid::sample(scene, p.get_int("grid"));
-                const gsv::Sampling sampling{GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE};
-                velocity_texture_ = gsv::Texture::create_3d(samples.n, samples.n, samples.n, gsv::TexelFormat::RGB32F,
-                                                            samples.texels.data(), sampling);
-            }
-            grid_signature_ = grid;
-            state_signature_.clear();
-        }
+        });
+        velocity_texture_.update(p, [&] {
+            if (p.get_choice("source") != "texture") return gsv::Texture();
+            const gsv::VelocityGrid samples = gsv::VelocityGrid::sample(scene, p.get_int("grid"));
+            const gsv::Sampling sampling{GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE};
+            return gsv::Texture::create_3d(samples.n, samples.n, samples.n, gsv::TexelFormat::RGB32F, samples.texels.data(),
+                                           sampling);
+        });
 
-        // Headless, a frame that asks for the state already shown recomputes it from the start, so its time
-        // is the cost of the whole run; a later time (animate) carries on from the last frame, which gives
-        // the same numbers as starting over.
+        // The state is what the first step made of the particles: remade when they, the velocity texture, or
+        // what the compute shader was compiled with or reads changed, but not for the time shown. Headless, a
+        // frame that asks for the state already shown recomputes it from the start, so its time is the cost of
+        // the whole run; a later time (animate) carries on from the last frame, which gives the same numbers as
+        // starting over.
         const long target = lab05::steps_for(p.get_float("time"), p.get_float("time_step"));
-        const std::string state = state_signature(p);
-        if (state != state_signature_ || target < done_ || (!frame.interactive && target == done_)) {
-            stepper(kit).restart(initial_);
+        if (target < done_ || (!frame.interactive && target == done_)) state_.invalidate();
+        if (state_.run_if_changed(p, [&] { stepper(kit).restart(initial_); }, particles_.version(),
+                                  velocity_texture_.version()))
             done_ = 0;
-            state_signature_ = state;
-        }
         long steps = target - done_;
         if (frame.interactive) steps = std::min(steps, kMaxStepsPerFrame);
         stepper(kit).run(steps, p.get_float("time_step"));
@@ -184,8 +164,8 @@ private:
     gsv::ComputeLimits limits_;
     gsv::ParticleSet initial_;
     lab05::ParticleBuffers buffers_;
-    gsv::Texture velocity_texture_;
-    std::string particles_signature_, grid_signature_, state_signature_;
+    gsv::ChangeTracker particles_, state_;
+    gsv::Tracked<gsv::Texture> velocity_texture_;
     long done_ = 0;  // steps the buffers have taken since the start
 };
 

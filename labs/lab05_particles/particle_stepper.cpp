@@ -27,10 +27,7 @@ void Stepper::run(long steps, float h) const {
     const gsv::ShaderProgram& program = kit.use(advect);
     program.set("uCount", static_cast<int>(buffers.count));
     program.set("uTimeStep", h);
-    if (velocity_texture.id()) {
-        velocity_texture.bind(0);
-        program.set("uVelocityTexture", 0);
-    }
+    if (velocity_texture.id()) program.bind("uVelocityTexture", velocity_texture);
     bind_particle_buffers(buffers);
     const auto local = static_cast<std::uint32_t>(kit.params().get_int("local_size"));
     for (long i = 0; i < steps; ++i) {

@@ -53,10 +53,8 @@ void Canvas::process() {
     glClearDepth(1.0);
     glClear(GL_DEPTH_BUFFER_BIT);  // a picture, not a scene: no depth
     program.use();
-    volume->color().bind(0);
-    program.set("uImage", 0);
-    (geometry ? geometry : volume)->color().bind(1);
-    program.set("uGeometryImage", 1);
+    program.bind("uImage", volume->color());
+    program.bind("uGeometryImage", (geometry ? geometry : volume)->color());
     program.set("uHasGeometry", geometry != nullptr);
     program.set("uBackground", vec3("background"));
     quad_.draw();

@@ -114,35 +114,33 @@ void RayTraversal::process() {
     glClearDepth(1.0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     program.use();
-    // One texture unit per sampler: a sampler3D and a sampler2D on one unit fail every draw.
-    entry->color().bind(0);
-    exit->color().bind(1);
-    volume->texture.bind(2);
-    transfer_function().bind(3);
-    program.set("uEntryPoints", 0);
-    program.set("uExitPoints", 1);
-    program.set("uVolume", 2);
-    program.set("uTransferFunction", 3);
-    // The uber-shader declares the gradient volume whatever it computes: give it a 3D texture either way.
-    (requested.gradient == Config::Gradient::Precomputed ? volume->gradients() : volume->texture).bind(4);
-    program.set("uGradientVolume", 4);
-    program.set("uStepSize", step);
+    // Each module's component sets what the module's file declares; the program gave every sampler its own unit.
+    gsv::RaySetup rays(entry->color(), exit->color(), volume->texture);
+    rays.step_size = step;
+    rays.texture_to_clip = v.projection * v.view * volume->box.model_from_texture_matrix();
+    gsv::VoxelGeometry voxels;
+    voxels.spacing = glm::vec3(vol.spacing);
+    const gsv::GradientLookup gradients(requested.gradient == Config::Gradient::Precomputed ? volume->gradients()
+                                                                                            : volume->texture);
+    const gsv::TransferFunctionLookup classification(transfer_function());
+    gsv::PhongShading phong;
+    phong.camera_position = glm::vec3(volume->box.texture_from_model(glm::dvec3(v.eye)));
+    phong.light_position = phong.camera_position;  // a headlight
+    phong.ambient = static_cast<float>(number("ambient", 0, 1));
+    phong.diffuse = static_cast<float>(number("diffuse", 0, 1));
+    phong.specular = static_cast<float>(number("specular", 0, 1));
+    phong.shininess = static_cast<float>(number("shininess", 1, 256));
+    gsv::DvrCompositing dvr;
     // Opacity correction off: a reference of 0 keeps every sample's opacity as the transfer function gives it.
-    program.set("uReferenceStepSize", flag("opacity_correction") ? voxel : 0.0f);
-    program.set("uEarlyRayThreshold", static_cast<float>(number("early_ray_threshold", 0, 1)));
-    program.set("uIsoValue", static_cast<float>(number("iso_value", 0, 1)));
-    program.set("uVoxelSpacing", glm::vec3(vol.spacing));
-    const glm::vec3 eye_texture(volume->box.texture_from_model(glm::dvec3(v.eye)));
-    program.set("uCameraPosition", eye_texture);
-    program.set("uLightPosition", eye_texture);  // a headlight
-    program.set("uAmbient", static_cast<float>(number("ambient", 0, 1)));
-    program.set("uDiffuse", static_cast<float>(number("diffuse", 0, 1)));
-    program.set("uSpecular", static_cast<float>(number("specular", 0, 1)));
-    program.set("uShininess", static_cast<float>(number("shininess", 1, 256)));
-    program.set("uTextureToClip", v.projection * v.view * volume->box.model_from_texture_matrix());
-    program.set("uBackground", glm::vec4(0.0f));
-    if (property("shader") == "uber")
-        for (const auto& [uniform, value] : gsv::raycast_uber_uniforms(requested)) program.set(uniform, value);
+    dvr.reference_step_size = flag("opacity_correction") ? voxel : 0.0f;
+    dvr.early_ray_threshold = static_cast<float>(number("early_ray_threshold", 0, 1));
+    gsv::IsoCompositing iso;
+    iso.iso_value = static_cast<float>(number("iso_value", 0, 1));
+    gsv::UberModes modes;
+    modes.config = requested;
+    gsv::ShaderComponents components{&rays, &voxels, &gradients, &classification, &phong, &dvr, &iso};
+    if (property("shader") == "uber") components.push_back(&modes);
+    gsv::apply_components(program, components);
     if (!quad_.vertex_count()) quad_ = gsv::GpuMesh(gsv::make_fullscreen_quad(), kit().profile());
     quad_.draw();
     glDepthFunc(GL_LESS);

@@ -8,6 +8,7 @@
 #include "lab_processor.h"
 
 #include "common/gl/gpu_mesh.h"
+#include "support/raycast/raycast_components.h"
 #include "support/raycast/raycast_config.h"
 #include "common/shader/shader_library.h"
 #include "common/gl/texture.h"

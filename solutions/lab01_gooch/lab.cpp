@@ -4,6 +4,7 @@
 // The lesson is in the shaders (shade.vert, shade.frag, phong.glsl, gooch.glsl); this file declares
 // the lab's parameters and draws one mesh.
 #include "common/app/app.h"
+#include "common/app/change_tracker.h"
 #include "common/gl/framebuffer.h"
 #include "common/gl/gl.h"
 #include "common/gl/gpu_mesh.h"
@@ -51,16 +52,16 @@ public:
         params_changed(kit);
     }
 
+    // The mesh is remade only when the model or (for the procedural ones) its resolution changes.
     void params_changed(gsv::LabKit& kit) override {
-        const auto& p = kit.params();
-        const std::string model = p.get_choice("model");
-        const int n = p.get_int("mesh_resolution");
-        if (model == mesh_model_ && (model == "teapot" || n == mesh_resolution_)) return;
-        if (model == "sphere") mesh_ = gsv::GpuMesh(gsv::make_uv_sphere(n, std::max(2, n / 2)), kit.profile());
-        else if (model == "torus") mesh_ = gsv::GpuMesh(gsv::make_torus(n, std::max(3, n / 2), 0.7f, 0.3f), kit.profile());
-        else mesh_ = gsv::GpuMesh(teapot_, kit.profile());
-        mesh_model_ = model;
-        mesh_resolution_ = n;
+        mesh_.update(kit.params(), [&] {
+            const auto& p = kit.params();
+            const std::string model = p.get_choice("model");
+            if (model == "teapot") return gsv::GpuMesh(teapot_, kit.profile());
+            const int n = p.get_int("mesh_resolution");
+            if (model == "sphere") return gsv::GpuMesh(gsv::make_uv_sphere(n, std::max(2, n / 2)), kit.profile());
+            return gsv::GpuMesh(gsv::make_torus(n, std::max(3, n / 2), 0.7f, 0.3f), kit.profile());
+        });
     }
 
     void render(gsv::LabKit& kit, const gsv::Frame& frame) override {
@@ -109,15 +110,13 @@ private:
         const gsv::ShaderProgram& program = kit.use(entry);
         kit.set_transforms(program, t);
         program.set("uLightEye", glm::vec3(t.view * glm::vec4(p.get_vec3("light_position"), 1.0f)));
-        mesh_.draw();
+        mesh_->draw();
     }
 
     const gsv::ShaderLibrary::Entry* shade_ = nullptr;
     const gsv::ShaderLibrary::Entry* normal_error_ = nullptr;
     gsv::MeshData teapot_;
-    gsv::GpuMesh mesh_;
-    std::string mesh_model_;
-    int mesh_resolution_ = 0;
+    gsv::Tracked<gsv::GpuMesh> mesh_;
 };
 
 }  // namespace

@@ -4,6 +4,7 @@
 // playhead with a vec3 lookup whose third component is the layer. Beside it the same slices in a 3D
 // texture (filtering runs across slices) and in T separate textures (one texture unit each).
 #include "common/app/app.h"
+#include "common/app/change_tracker.h"
 #include "support/flow/flow_field.h"
 #include "common/gl/framebuffer.h"
 #include "common/gl/gl.h"
@@ -55,13 +56,16 @@ public:
     void params_changed(gsv::LabKit& kit) override { check_limits(kit); }
 
     void render(gsv::LabKit& kit, const gsv::Frame& frame) override {
-        upload_if_changed(kit, frame);
+        // The slices are uploaded only when what they were made from changes: playing the time costs no upload.
+        const gsv::Params& p = kit.params();
+        flow_.update(p, [&] { return lab03::make_time_flow(kit); });
+        uploaded_.run_if_changed(p, [&] { upload(p); }, flow_.version());
+        noise_.update(p, [&] { return make_noise(p, frame); }, frame.width, frame.height);
         glDisable(GL_DEPTH_TEST);
         const gsv::ShaderProgram& program = kit.use(*lic_);
-        noise_.bind(0);
-        program.set("uNoise", 0);
+        program.bind("uNoise", *noise_);
         bind_flow(program);
-        program.set("uFlowTexel", glm::vec2(1.0f / float(flow_.width), 1.0f / float(flow_.height)));
+        program.set("uFlowTexel", glm::vec2(1.0f / float(flow_->width), 1.0f / float(flow_->height)));
         quad_.draw();
     }
 
@@ -69,38 +73,30 @@ public:
     std::vector<std::string> sweep_reference() const override { return {"slices=256", "blend=linear", "storage=array"}; }
 
     gsv::SweepMetrics sweep_metrics(gsv::LabKit& kit, const gsv::Frame&) override {
-        return lab03::measure_sampling(kit, *probe_, quad_, flow_, [&](const gsv::ShaderProgram& p) { bind_flow(p); });
+        return lab03::measure_sampling(kit, *probe_, quad_, *flow_, [&](const gsv::ShaderProgram& p) { bind_flow(p); });
     }
 
 private:
     void check_limits(gsv::LabKit& kit) const { lab03::check_storage_limits(kit.params()); }
 
-    void upload_if_changed(gsv::LabKit& kit, const gsv::Frame& frame) {
-        const auto& p = kit.params();
-        const std::string signature = lab03::flow_signature(p) + " " + std::to_string(frame.width) + "x" +
-                                      std::to_string(frame.height) + " " + p.get_text("seed");
-        if (signature == uploaded_) return;
-        flow_ = lab03::make_time_flow(kit);
-        upload(p);
-        noise_ = gsv::Texture::create_2d(frame.width, frame.height, gsv::TexelFormat::R32F,
-                                         gsv::white_noise(frame.width, frame.height,
-                                                          static_cast<std::uint64_t>(p.get_int("seed"))).data());
-        uploaded_ = signature;
+    static gsv::Texture make_noise(const gsv::Params& p, const gsv::Frame& frame) {
+        const std::vector<float> noise = gsv::white_noise(frame.width, frame.height, static_cast<std::uint64_t>(p.get_int("seed")));
+        return gsv::Texture::create_2d(frame.width, frame.height, gsv::TexelFormat::R32F, noise.data());
     }
 
     void upload(const gsv::Params& p) {
-        const int slices = static_cast<int>(flow_.frames.size());
-        const int w = flow_.width, h = flow_.height;
+        const int slices = static_cast<int>(flow_->frames.size());
+        const int w = flow_->width, h = flow_->height;
         // TODO(L03-T1): one buffer with all T slices, slice k straight after slice k - 1 (at
         // k * w * h * 2 floats): the layout glTexImage3D takes for an array and for a 3D texture alike.
         std::vector<float> packed;
 //@solution L03-T1
         packed.reserve(static_cast<std::size_t>(slices) * static_cast<std::size_t>(w * h * 2));
-        for (const gsv::FlowField& slice : flow_.frames)
+        for (const gsv::FlowField& slice : flow_->frames)
             packed.insert(packed.end(), slice.velocity.begin(), slice.velocity.end());
 //@starter
 //        packed.assign(static_cast<std::size_t>(slices) * static_cast<std::size_t>(w * h * 2), 0.0f);
-//        std::copy(flow_.frames[0].velocity.begin(), flow_.frames[0].velocity.end(), packed.begin());
+//        std::copy(flow_->frames[0].velocity.begin(), flow_->frames[0].velocity.end(), packed.begin());
 //@end
         const std::string storage = p.get_choice("storage");
         array_ = gsv::Texture();
@@ -113,35 +109,32 @@ private:
             sampling.wrap_r = p.get_choice("time_wrap") == "repeat" ? GL_REPEAT : GL_CLAMP_TO_EDGE;
             volume_ = gsv::Texture::create_3d(w, h, slices, gsv::TexelFormat::RG32F, packed.data(), sampling);
         } else {
-            for (const gsv::FlowField& slice : flow_.frames)
+            for (const gsv::FlowField& slice : flow_->frames)
                 separate_.push_back(gsv::Texture::create_2d(w, h, gsv::TexelFormat::RG32F, slice.velocity.data(), sampling));
         }
     }
 
-    // Units from 1 up; unit 0 is the noise. T separate textures are bound every frame: the cost (and
-    // the unit limit) the array removes.
+    // T separate textures take a unit each and are bound every frame: the cost (and the unit limit) the array
+    // removes.
     void bind_flow(const gsv::ShaderProgram& program) const {
         if (array_.id()) {
-            array_.bind(1);
-            program.set("uFlowArray", 1);
+            program.bind("uFlowArray", array_);
         } else if (volume_.id()) {
-            volume_.bind(1);
-            program.set("uFlowVolume", 1);
+            program.bind("uFlowVolume", volume_);
         } else {
-            for (std::size_t k = 0; k < separate_.size(); ++k) {
-                separate_[k].bind(static_cast<int>(k) + 1);
-                program.set("uFlowSlices[" + std::to_string(k) + "]", static_cast<int>(k) + 1);
-            }
+            for (std::size_t k = 0; k < separate_.size(); ++k)
+                program.bind("uFlowSlices[" + std::to_string(k) + "]", separate_[k]);
         }
     }
 
     const gsv::ShaderLibrary::Entry* lic_ = nullptr;
     const gsv::ShaderLibrary::Entry* probe_ = nullptr;
     gsv::GpuMesh quad_;
-    gsv::FlowSequence flow_;
-    gsv::Texture noise_, array_, volume_;
+    gsv::Tracked<gsv::FlowSequence> flow_;
+    gsv::ChangeTracker uploaded_;
+    gsv::Tracked<gsv::Texture> noise_;
+    gsv::Texture array_, volume_;
     std::vector<gsv::Texture> separate_;
-    std::string uploaded_;
 };
 
 }  // namespace

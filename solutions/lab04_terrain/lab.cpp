@@ -4,6 +4,7 @@
 // from the heights around it (normal.glsl). Beside it, real geometry: an N x N grid displaced by the same
 // heights, to see what the trick saves and where it shows.
 #include "common/app/app.h"
+#include "common/app/change_tracker.h"
 #include "common/gl/gl.h"
 #include "common/gl/gpu_mesh.h"
 #include "common/scene/mesh_data.h"
@@ -67,53 +68,43 @@ public:
         const gsv::ShaderProgram& program = kit.use(*shade_);
         kit.set_transforms(program, t);
         set_terrain_uniforms(program);
-        grid_.draw();
+        grid_->draw();
     }
 
     std::vector<std::string> sweep_reference() const override { return {"delta=1"}; }
 
     gsv::SweepMetrics sweep_metrics(gsv::LabKit& kit, const gsv::Frame&) override {
-        return lab04::measure_normals(kit, terrain_, *probe_, quad_,
+        return lab04::measure_normals(kit, *terrain_, *probe_, quad_,
                                       [&](const gsv::ShaderProgram& program) { set_terrain_uniforms(program); });
     }
 
 private:
     void update(gsv::LabKit& kit) {
         const auto& p = kit.params();
-        const std::string terrain = lab04::terrain_signature(p);
-        if (terrain != terrain_signature_) {
-            terrain_ = lab04::load_terrain(kit);
-            terrain_signature_ = terrain;
-            heights_ = gsv::Texture();
-        }
-        const bool mipmaps = p.get_bool("mipmaps");
-        if (!heights_.id() || mipmaps != mipmapped_) {
+        terrain_.update(p, [&] { return lab04::load_terrain(kit); });
+        heights_.update(p, [&] {
+            const bool mipmaps = p.get_bool("mipmaps");
             gsv::Sampling sampling{mipmaps ? GLenum(GL_LINEAR_MIPMAP_LINEAR) : GLenum(GL_LINEAR), GL_LINEAR, GL_CLAMP_TO_EDGE};
-            heights_ = gsv::Texture::create_2d(terrain_.field.width, terrain_.field.height, gsv::TexelFormat::R32F,
-                                               terrain_.field.heights.data(), sampling);
-            mipmapped_ = mipmaps;
-        }
-        const int n = p.get_choice("geometry") == "mesh" ? p.get_int("mesh_n") : 2;
-        if (n != grid_n_) {
-            grid_ = gsv::GpuMesh(gsv::make_grid(n), kit.profile());
-            grid_n_ = n;
-        }
+            return gsv::Texture::create_2d(terrain_->field.width, terrain_->field.height, gsv::TexelFormat::R32F,
+                                           terrain_->field.heights.data(), sampling);
+        }, terrain_.version());
+        grid_.update(p, [&] {
+            const int n = p.get_choice("geometry") == "mesh" ? p.get_int("mesh_n") : 2;
+            return gsv::GpuMesh(gsv::make_grid(n), kit.profile());
+        });
     }
 
     void set_terrain_uniforms(const gsv::ShaderProgram& program) const {
-        heights_.bind(0);
-        program.set("uHeights", 0);
-        lab04::set_placement(program, terrain_);
+        program.bind("uHeights", *heights_);
+        lab04::set_placement(program, *terrain_);
     }
 
     const gsv::ShaderLibrary::Entry* shade_ = nullptr;
     const gsv::ShaderLibrary::Entry* probe_ = nullptr;
-    gsv::GpuMesh quad_, grid_;
-    int grid_n_ = 0;
-    lab04::Terrain terrain_;
-    std::string terrain_signature_;
-    gsv::Texture heights_;
-    bool mipmapped_ = false;
+    gsv::GpuMesh quad_;
+    gsv::Tracked<gsv::GpuMesh> grid_;
+    gsv::Tracked<lab04::Terrain> terrain_;
+    gsv::Tracked<gsv::Texture> heights_;
 };
 
 }  // namespace

@@ -51,10 +51,6 @@ void round_to_8_bits(gsv::HeightField& field) {
 
 }  // namespace
 
-std::string terrain_signature(const gsv::Params& p) {
-    return p.get_choice("terrain") + ";" + p.get_text("grid") + ";" + p.get_text("heights8");
-}
-
 Terrain load_terrain(gsv::LabKit& kit) {
     const auto& p = kit.params();
     const std::string name = p.get_choice("terrain");

@@ -17,9 +17,6 @@ struct Terrain {
     std::optional<gsv::ProceduralTerrain> procedural;    // set when the exact normals are known
 };
 
-// Everything the heights depend on.
-std::string terrain_signature(const gsv::Params& params);
-
 // A real model from data/terrain (one line naming the file if it is missing or corrupt), or a procedural
 // terrain on a grid x grid samples over 10 km.
 Terrain load_terrain(gsv::LabKit& kit);

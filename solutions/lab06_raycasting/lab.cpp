@@ -6,6 +6,7 @@
 // skeleton (raycast.frag) whose placeholders are filled, at compile time, with only the modules chosen:
 // gradient, classification, shading and compositing.
 #include "common/app/app.h"
+#include "common/app/change_tracker.h"
 #include "common/core/error.h"
 #include "common/gl/gl.h"
 #include "support/network/network_file.h"
@@ -122,29 +123,25 @@ public:
     }
 
 private:
-    // The network file, or the network built in code; rebuilt when either choice changes.
+    // The network file, or the network built in code: rebuilt when either choice changes, and when the file is
+    // saved (its time is a key), as a shader reloads.
     void update_network(gsv::LabKit& kit) {
-        const gsv::Params& p = kit.params();
-        const std::string file = p.get_file("network");
-        std::filesystem::path path;
-        std::string signature = p.get_bool("probe") ? "code:probe" : "code";
-        if (!file.empty()) {
-            path = network_path(kit.assets(), file);
-            std::error_code ec;
-            // The file's time too: saving it in an editor reloads it, as a shader does.
-            signature = "file:" + path.string() + "@" +
-                        std::to_string(std::filesystem::last_write_time(path, ec).time_since_epoch().count());
-        }
-        if (network_ && signature == network_signature_) return;
-        auto network = std::make_unique<gsv::Network>(file.empty() ? lab06::build_network(p.get_bool("probe"))
-                                                                   : gsv::read_network_file(path, registry_));
+        const std::string file = kit.params().get_file("network");
+        const std::filesystem::path path = file.empty() ? std::filesystem::path() : network_path(kit.assets(), file);
+        std::error_code ec;
+        const auto saved = file.empty() ? 0 : std::filesystem::last_write_time(path, ec).time_since_epoch().count();
+        network_built_.run_if_changed(kit.params(), [&] { network_ = load_network(kit.params(), path); }, path.string(), saved);
+    }
+
+    std::unique_ptr<gsv::Network> load_network(const gsv::Params& p, const std::filesystem::path& path) {
+        auto network = std::make_unique<gsv::Network>(p.get_file("network").empty() ? lab06::build_network(p.get_bool("probe"))
+                                                                                     : gsv::read_network_file(path, registry_));
         file_set_.clear();
         for (const auto& processor : network->processors())
             for (const auto& property : processor->properties())
                 if (property.set) file_set_.insert(processor->name() + "." + property.name);
         lab06::set_view(*network, &view_);
-        network_ = std::move(network);
-        network_signature_ = signature;
+        return network;
     }
 
     // Every property named like a parameter follows it, unless the network file set it.
@@ -181,7 +178,7 @@ private:
 
     gsv::ProcessorRegistry registry_;
     std::unique_ptr<gsv::Network> network_;
-    std::string network_signature_;
+    gsv::ChangeTracker network_built_;
     std::set<std::string> file_set_;
     lab06::FrameView view_;
     std::string last_failure_;

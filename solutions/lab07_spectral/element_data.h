@@ -3,6 +3,7 @@
 // floats whatever the number of elements), every element's node values in one buffer texture, and the
 // patches that place the elements. Rebuilt when the mesh, field, degree, node set or time changes.
 #include "common/app/app.h"
+#include "common/app/change_tracker.h"
 #include "common/gl/buffer_texture.h"
 #include "common/gl/gpu_mesh.h"
 #include "common/shader/shader_program.h"
@@ -22,19 +23,20 @@ struct ElementData {
     std::vector<float> values;  // as uploaded
     float min_value = 0, max_value = 0;
     int subdivisions = 1;
-    bool built = false;
 
     gsv::BufferTexture value_texture;
     gsv::GpuMesh patches;
 
+    // Each part is remade only when what it was made from changed: moving the time resamples the values only.
+    gsv::ChangeTracker mesh_made, patches_made, basis_made, values_made;
+
     std::size_t basis_bytes() const { return nodes.size() * 2 * sizeof(float); }
-    // Sets the basis uniforms (uNodes, uWeights), binds the values to unit 1, sets the spectral uniforms;
+    // Sets the basis uniforms (uNodes, uWeights), binds the values (uValues), sets the spectral uniforms;
     // `program` in use.
     void bind(const gsv::ShaderProgram& program) const;
 };
 
-// The mesh, field, nodes and values the parameters describe, uploaded. `previous` is reused where the
-// parameters it was built from have not changed (moving the time resamples the values only). Throws
+// The mesh, field, nodes and values the parameters describe, uploaded; what has not changed is kept. Throws
 // gsv::Error naming a bad mesh, gsv::UnsupportedError for more values than a buffer texture holds.
 void update_element_data(ElementData& data, const gsv::Params& params, gsv::Profile profile);
 
