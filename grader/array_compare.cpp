@@ -1,4 +1,5 @@
 #include "grader/array_compare.h"
+#include "common/core/number_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -41,11 +42,6 @@ std::string percent(std::size_t part, std::size_t whole) {
     return text;
 }
 
-std::string tolerance_text(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", v);
-    return text;
-}
 
 }  // namespace
 
@@ -124,12 +120,12 @@ std::string ArrayDiff::summary() const {
     if (!problem.empty()) return problem;
     const std::string of = with_commas(compared) + (compared < count ? " sampled elements" : " elements");
     if (differing == 0)
-        return name + ": all " + of + " within " + tolerance_text(tolerance.max_abs) + " (max diff " +
-               tolerance_text(max_abs_diff) + ")";
+        return name + ": all " + of + " within " + format_number(tolerance.max_abs) + " (max diff " +
+               format_number(max_abs_diff) + ")";
     std::string a, e;
     element_texts(first_actual, first_expected, a, e);
     std::string line = name + ": " + with_commas(differing) + " of " + of + " (" + percent(differing, compared) +
-                       "%) differ by more than " + tolerance_text(tolerance.max_abs) + "; first at element " +
+                       "%) differ by more than " + format_number(tolerance.max_abs) + "; first at element " +
                        std::to_string(first) + ": " + a + " where the reference has " + e;
     if (non_finite > 0) line += "; " + with_commas(non_finite) + " of them NaN or Inf where the reference is finite";
     return line;

@@ -1,5 +1,6 @@
 #include "grader/array_golden.h"
 
+#include "common/app/kit_layout.h"
 #include "common/core/error.h"
 #include "common/io/little_endian.h"
 
@@ -134,12 +135,12 @@ ExpectedArray read_array_golden(const fs::path& path, const std::string& name) {
 
 fs::path array_golden_path(const fs::path& kit, const std::string& lab, const std::string& case_name,
                            const std::string& name) {
-    return kit / "grader" / "golden" / lab / (case_name + "." + name + ".f32s");
+    return KitLayout{kit}.golden_dir(lab) / (case_name + "." + name + ".f32s");
 }
 
 std::vector<std::string> golden_array_names(const fs::path& kit, const std::string& lab, const std::string& case_name) {
     std::vector<std::string> names;
-    const fs::path dir = kit / "grader" / "golden" / lab;
+    const fs::path dir = KitLayout{kit}.golden_dir(lab);
     std::error_code ec;
     if (!fs::is_directory(dir, ec)) return names;
     const std::string prefix = case_name + ".";

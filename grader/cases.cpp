@@ -1,6 +1,7 @@
 #include "grader/cases.h"
 
 #include "common/app/case_file.h"
+#include "common/app/kit_layout.h"
 #include "common/core/error.h"
 #include "common/io/json.h"
 #include "grader/draw.h"
@@ -138,7 +139,7 @@ void add_hidden_cases(LabCases& lab, const std::filesystem::path& file, std::uin
 
 std::vector<std::filesystem::path> case_files(const std::filesystem::path& kit_root) {
     std::vector<std::filesystem::path> files;
-    const auto dir = kit_root / "grader" / "cases";
+    const auto dir = KitLayout{kit_root}.case_dir();
     if (!std::filesystem::is_directory(dir)) throw Error("no grader/cases folder in '" + kit_root.string() + "'");
     for (const auto& e : std::filesystem::directory_iterator(dir))
         if (e.path().extension() == ".json") files.push_back(e.path());
@@ -147,7 +148,7 @@ std::vector<std::filesystem::path> case_files(const std::filesystem::path& kit_r
 }
 
 std::filesystem::path hidden_case_file(const std::filesystem::path& kit_root, const std::string& lab) {
-    return kit_root / "grader" / "hidden" / (lab + ".json");
+    return KitLayout{kit_root}.hidden_case_file(lab);
 }
 
 }  // namespace gsv

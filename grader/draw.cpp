@@ -1,6 +1,7 @@
 #include "grader/draw.h"
 
 #include "common/core/error.h"
+#include "common/core/number_text.h"
 
 #include <chrono>
 #include <cstdio>
@@ -8,12 +9,6 @@
 
 namespace gsv {
 namespace {
-
-std::string number_text(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.4g", value);
-    return text;
-}
 
 std::pair<double, double> bounds(const Json& pair, const std::string& what) {
     const auto& a = pair.as_array();
@@ -55,7 +50,7 @@ std::vector<std::string> draw_settings(const Json& spec, SeededDraw& draw) {
         std::string value;
         if (how.contains("range")) {
             const auto [lo, hi] = bounds(how.array_at("range"), name + ".range");
-            value = number_text(draw.uniform(lo, hi));
+            value = format_number(draw.uniform(lo, hi), 4);
         } else if (how.contains("int")) {
             const auto [lo, hi] = bounds(how.array_at("int"), name + ".int");
             value = std::to_string(draw.integer(static_cast<long>(lo), static_cast<long>(hi)));
@@ -68,7 +63,7 @@ std::vector<std::string> draw_settings(const Json& spec, SeededDraw& draw) {
             if (axes.size() != 3) throw Error(how.source_name() + ": " + name + ".vec3 needs three [low, high] pairs");
             for (int i = 0; i < 3; ++i) {
                 const auto [lo, hi] = bounds(axes[static_cast<std::size_t>(i)], name + ".vec3");
-                value += (i ? "," : "") + number_text(draw.uniform(lo, hi));
+                value += (i ? "," : "") + format_number(draw.uniform(lo, hi), 4);
             }
         } else {
             throw Error(how.source_name() + ": '" + name + "' needs one of range, int, choice, vec3");

@@ -1,6 +1,8 @@
 #include "grader/grade.h"
 
+#include "common/app/kit_layout.h"
 #include "common/core/error.h"
+#include "common/core/not_done.h"
 #include "common/image/image.h"
 #include "common/io/json.h"
 #include "grader/array_golden.h"
@@ -135,7 +137,8 @@ void Grading::load_labs() {
 
 void Grading::set_up_sandbox(const fs::path& student_bin, const fs::path& student_root) {
     // What student code must not read: the reference, the goldens, hidden cases, other results.
-    policy_.hidden = {kit_ / "solutions", kit_ / "grader" / "golden", kit_ / "grader" / "hidden", kit_ / "tests"};
+    const KitLayout kit{kit_};
+    policy_.hidden = {kit.solutions(), kit.golden_dir(), kit.hidden_dir(), kit.tests()};
     // A submission's binaries are built elsewhere: the kit's bin/ can go whole.
     if (student_bin != bin_) policy_.hidden.push_back(bin_);
     for (const auto& lab : labs_) {
@@ -161,7 +164,7 @@ void Grading::set_up_sandbox(const fs::path& student_bin, const fs::path& studen
 GradeReport Grading::run() {
     const auto start = std::chrono::steady_clock::now();
     report_.seed = options_.seed ? *options_.seed : fresh_seed();
-    report_.submission = options_.submission.empty() ? (kit_ / "labs").string() : fs::absolute(options_.submission).string();
+    report_.submission = options_.submission.empty() ? KitLayout{kit_}.labs().string() : fs::absolute(options_.submission).string();
     load_labs();
     const bool any_live = std::find(live_.begin(), live_.end(), true) != live_.end();
     report_.mode = options_.update_goldens ? "update goldens" : any_live ? "instructor" : "self-check";
@@ -234,7 +237,7 @@ void Grading::update_golden(const LabCases& lab, const GradeCase& c) {
     r.output = ref.process.output;
     r.detail = ref.detail;
     if (ref.status == CaseStatus::Passed) {
-        const fs::path golden = kit_ / "grader" / "golden" / lab.lab / (c.name + ".png");
+        const fs::path golden = KitLayout{kit_}.golden_image(lab.lab, c.name);
         fs::create_directories(golden.parent_path());
         write_png(golden, *ref.image);
         r.detail = "wrote " + golden.string();
@@ -315,7 +318,7 @@ void Grading::grade_case(const LabCases& lab, const GradeCase& c, bool live, con
         }
         expected = *reference->image;
     } else {
-        const fs::path golden = kit_ / "grader" / "golden" / lab.lab / (c.name + ".png");
+        const fs::path golden = KitLayout{kit_}.golden_image(lab.lab, c.name);
         if (!fs::exists(golden)) {
             r.status = CaseStatus::ReferenceFailed;
             r.detail = "no golden image " + golden.string() + " (run gsv-grade --update-goldens)";
@@ -380,8 +383,8 @@ void Grading::check_image(const LabCases& lab, const GradeCase& c, const LabRun&
     if (is_blank(actual) && !is_blank(expected)) {
         r.status = CaseStatus::BlankImage;
         const std::uint8_t* p = actual.at(0, 0);
-        // shaders/gsv/not_done.glsl's kNotDone: the starter's own "this TODO is open" colour.
-        r.detail = p[0] == 255 && p[1] == 0 && p[2] == 255
+        // kNotDone: the starter's own "this TODO is open" colour.
+        r.detail = p[0] == kNotDoneRgb[0] && p[1] == kNotDoneRgb[1] && p[2] == kNotDoneRgb[2]
                        ? "all magenta, the starter's 'not done' colour: this case's TODO (or one it needs) is still open"
                        : "one flat colour where the reference has a picture (is anything drawn?)";
     } else if (const std::string copied = golden_copied(lab.lab, c.name, actual); !copied.empty()) {
@@ -397,7 +400,7 @@ void Grading::check_image(const LabCases& lab, const GradeCase& c, const LabRun&
 std::string Grading::golden_copied(const std::string& lab, const std::string& case_name, const Image& image) {
     auto& goldens = goldens_[lab];
     if (goldens.empty()) {
-        const fs::path dir = kit_ / "grader" / "golden" / lab;
+        const fs::path dir = KitLayout{kit_}.golden_dir(lab);
         if (fs::is_directory(dir))
             for (const auto& e : fs::directory_iterator(dir))
                 if (e.path().extension() == ".png") goldens[e.path().stem().string()] = read_png(e.path());

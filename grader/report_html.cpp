@@ -1,3 +1,4 @@
+#include "common/core/number_text.h"
 #include "grader/report.h"
 #include "grader/report_format.h"
 
@@ -110,12 +111,6 @@ void image_numbers(std::ostringstream& out, const CaseResult& r) {
     out << "</td></tr></table>\n";
 }
 
-std::string general(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", v);
-    return text;
-}
-
 // One row per array the case checks; a golden holds a sample, so "compared" can be fewer than the elements.
 void data_numbers(std::ostringstream& out, const CaseResult& r) {
     const DataCheck& d = r.data;
@@ -131,7 +126,7 @@ void data_numbers(std::ostringstream& out, const CaseResult& r) {
         out << "<td>" << with_commas(a.count) << " &times; " << a.components << "</td><td>" << with_commas(a.compared)
             << (d.reference == "golden" ? " (golden sample)" : "") << "</td><td>" << with_commas(a.differing) << " ("
             << percent(long(a.differing), long(a.compared)) << ", allowed " << fixed(100.0 * d.tolerance.max_differing_fraction, 3)
-            << "%)</td><td>" << general(a.max_abs_diff) << " (allowed " << general(d.tolerance.max_abs)
+            << "%)</td><td>" << format_number(a.max_abs_diff) << " (allowed " << format_number(d.tolerance.max_abs)
             << ")</td><td>" << html(a.within() ? "ok" : a.summary()) << "</td></tr>";
     }
     out << "</table>\n";

@@ -2,11 +2,11 @@
 // Runs a lab binary headless on one case, in a working folder of its own, and reads back only what it
 // may hand in: a PNG (decoded and size-checked), its JSON report's frame time (validated) and, for a lab
 // whose cases check arrays, the arrays the report lists (grader/lab_arrays.h).
+#include "common/image/image.h"
+#include "common/io/data_array.h"
 #include "grader/cases.h"
 #include "grader/grade_result.h"
 #include "grader/process.h"
-#include "common/io/data_array.h"
-#include "common/image/image.h"
 
 #include <filesystem>
 #include <optional>

@@ -1,5 +1,6 @@
 #include "grader/starter.h"
 
+#include "common/app/kit_layout.h"
 #include "common/core/error.h"
 
 #include <algorithm>
@@ -73,7 +74,7 @@ StarterText make_starter(const std::string& text, const std::string& file) {
 
 std::vector<StarterFileResult> sync_starters(const fs::path& root, bool write) {
     std::vector<StarterFileResult> results;
-    const fs::path solutions = root / "solutions";
+    const fs::path solutions = KitLayout{root}.solutions();
     if (!fs::is_directory(solutions)) throw Error("no solutions/ folder in '" + root.string() + "'");
     std::vector<fs::path> files;
     for (const auto& entry : fs::recursive_directory_iterator(solutions))
@@ -82,7 +83,7 @@ std::vector<StarterFileResult> sync_starters(const fs::path& root, bool write) {
     for (const auto& file : files) {
         StarterFileResult r;
         r.solution = file;
-        r.starter = root / "labs" / fs::relative(file, solutions);
+        r.starter = KitLayout{root}.labs() / fs::relative(file, solutions);
         const std::string generated = make_starter(read_text(file), fs::relative(file, root).generic_string()).text;
         std::string existing;
         if (fs::exists(r.starter)) existing = read_text(r.starter);

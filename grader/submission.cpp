@@ -1,5 +1,6 @@
 #include "grader/submission.h"
 
+#include "common/app/kit_layout.h"
 #include "common/core/error.h"
 
 #include <fstream>
@@ -50,13 +51,14 @@ SubmissionBuild build_submission(const fs::path& submission, const fs::path& kit
     result.root = work_dir / "kit";
     result.bin_dir = work_dir / "build" / "bin";
     fs::remove_all(work_dir);
-    const int skipped = copy_plain_tree(labs_dir, result.root / "labs");
-    fs::create_directory_symlink(fs::absolute(kit_root / "shaders"), result.root / "shaders");
-    fs::create_directory_symlink(fs::absolute(kit_root / "data"), result.root / "data");
+    const int skipped = copy_plain_tree(labs_dir, KitLayout{result.root}.labs());
+    const KitLayout kit{fs::absolute(kit_root)}, copy{result.root};
+    fs::create_directory_symlink(kit.shaders(), copy.shaders());
+    fs::create_directory_symlink(kit.data(), copy.data());
     fs::create_directories(work_dir / "build");
     if (limits.support) hand_over(work_dir, *limits.support);
 
-    std::vector<std::string> configure{GSV_CMAKE_COMMAND, "-S", (fs::absolute(kit_root) / "grader" / "submission").string(),
+    std::vector<std::string> configure{GSV_CMAKE_COMMAND, "-S", kit.submission_project().string(),
                                        "-B", (work_dir / "build").string(), "-DGSV_KIT_BUILD=" + fs::absolute(kit_build).string(),
                                        "-DGSV_LABS_ROOT=" + result.root.string()};
     if (const std::string generator = cmake_generator(kit_build); !generator.empty()) {

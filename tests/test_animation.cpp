@@ -2,11 +2,11 @@
 #include "catch.hpp"
 #include "test_support.h"
 
-#include "common/image/animation.h"
 #include "common/app/app_session.h"
 #include "common/core/error.h"
 #include "common/gl/gl.h"
 #include "common/gl/gpu_mesh.h"
+#include "common/image/animation.h"
 #include "common/image/image.h"
 #include "common/image/png_chunks.h"
 

@@ -69,7 +69,7 @@ TEST_CASE("flow kinds have names and unknown names list the valid ones", "[flow]
         CHECK(gsv::flow_kind_from_name(gsv::flow_kind_name(kind)) == kind);
     CHECK(std::string(gsv::flow_kind_name(FlowKind::DoubleGyre)) == "double_gyre");
     CHECK(gsv_error_message([] { gsv::flow_kind_from_name("gyre"); }) ==
-          "unknown flow 'gyre' (valid: rotation, saddle, source, double_gyre, vortices)");
+          "unknown flow 'gyre' (known: rotation, saddle, source, double_gyre, vortices)");
 }
 
 TEST_CASE("rotation is tangent to circles about the centre and scaled to the requested speed", "[flow]") {

@@ -3,17 +3,17 @@
 #include "gl_fixture.h"
 #include "test_support.h"
 
-#include "common/gl/buffer.h"
 #include "common/core/error.h"
+#include "common/gl/buffer.h"
 #include "common/gl/framebuffer.h"
 #include "common/gl/gl.h"
 #include "common/gl/gpu_mesh.h"
-#include "common/image/image_compare.h"
-#include "common/shader/shader_library.h"
 #include "common/gl/texture.h"
-#include "common/timing/timing.h"
+#include "common/image/image_compare.h"
 #include "common/scene/mesh_data.h"
 #include "common/scene/transforms.h"
+#include "common/shader/shader_library.h"
+#include "common/timing/timing.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -3,8 +3,8 @@
 #include "catch.hpp"
 #include "test_support.h"
 
-#include "common/io/data_array.h"
 #include "common/image/image.h"
+#include "common/io/data_array.h"
 #include "common/io/json.h"
 #include "common/io/little_endian.h"
 #include "grader/array_compare.h"
@@ -400,12 +400,12 @@ TEST_CASE("arrays: the data check after the image, live: wrong data, the image's
     check_case_data(lab, c, run_with({ramp("positions", 100), moved}), reference, listed);
     CHECK(listed.status == CaseStatus::Passed);
     CHECK(listed.data.arrays.size() == 1);
-    c.arrays = std::vector<std::string>{"colours"};
+    c.arrays = std::vector<std::string>{"colors"};
     CaseResult lacking = image_passed();
     check_case_data(lab, c, run_with(reference.arrays), reference, lacking);
     CHECK(lacking.status == CaseStatus::ReferenceFailed);
     CHECK(lacking.points == 0);
-    CHECK(contains(lacking.detail, "handed in no 'colours' array"));
+    CHECK(contains(lacking.detail, "handed in no 'colors' array"));
 
     // A student run that failed keeps its own status; a lab that checks no arrays is left alone.
     c.arrays.reset();

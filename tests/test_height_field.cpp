@@ -1,10 +1,10 @@
 #include "catch.hpp"
 
 #include "common/core/error.h"
+#include "gl_fixture.h"
 #include "support/terrain/height_field.h"
 #include "support/terrain/terrain_normal.h"
 #include "support/terrain/terrain_procedural.h"
-#include "gl_fixture.h"
 #include "test_support.h"
 
 #include <algorithm>

@@ -8,10 +8,10 @@
 #include <string>
 
 #include "catch.hpp"
-#include "test_support.h"
 #include "common/core/error.h"
 #include "common/image/image.h"
 #include "common/image/image_compare.h"
+#include "test_support.h"
 
 namespace fs = std::filesystem;
 
@@ -339,8 +339,8 @@ TEST_CASE("image: ssim_luma matches scikit-image on gray images") {
 TEST_CASE("image: ssim_luma of identical images is 1") {
     const gsv::Image base = gray_image(ssim_base);
     CHECK(gsv::ssim_luma(base, base) == Approx(1.0).margin(1e-12));
-    const gsv::Image colour = gradient(40, 30);
-    CHECK(gsv::ssim_luma(colour, colour) == Approx(1.0).margin(1e-12));
+    const gsv::Image color = gradient(40, 30);
+    CHECK(gsv::ssim_luma(color, color) == Approx(1.0).margin(1e-12));
     // Smaller than one 11x11 window: the whole image is one window.
     const gsv::Image tiny = gradient(5, 4);
     CHECK(gsv::ssim_luma(tiny, tiny) == Approx(1.0).margin(1e-12));

@@ -6,9 +6,9 @@
 #include <string>
 
 #include "catch.hpp"
-#include "test_support.h"
 #include "common/core/error.h"
 #include "common/io/json.h"
+#include "test_support.h"
 
 namespace fs = std::filesystem;
 

@@ -6,7 +6,7 @@
 // border counted, a midpoint step that is really Euler, a NaN at a zero of the field) would be baked into
 // the references too. Here nothing comes from the GPU path except the image under test: the flow and
 // the noise are made again with gsv::make_flow and gsv::white_noise, and the shaders (lic.frag,
-// streamline.glsl, math.glsl's safe_normalize) run in C++ on top of an emulation of the sampler state
+// streamline.glsl, math.glsl's safeNormalize) run in C++ on top of an emulation of the sampler state
 // lab.cpp sets: GL_LINEAR with GL_CLAMP_TO_EDGE on float textures.
 //
 // LIC is unforgiving to compare: a streamline that starts a hair away from the CPU's (float texture
@@ -20,9 +20,9 @@
 #include "lab_runner.h"
 #include "test_support.h"
 
-#include "support/flow/flow_field.h"
 #include "common/image/image.h"
 #include "common/io/json.h"
+#include "support/flow/flow_field.h"
 #include "support/flow/noise.h"
 
 #include <glm/glm.hpp>
@@ -181,7 +181,7 @@ public:
                         glm::mix(texel(w.i0, w.j1), texel(w.i1, w.j1), w.a), w.b);
     }
 
-    // math.glsl's safe_normalize with the fallback step_direction gives it: no step at a zero.
+    // math.glsl's safeNormalize with the fallback step_direction gives it: no step at a zero.
     dvec2 step_direction(dvec2 v) const {
         if (!p_.normalized) return v;
         const double length_squared = glm::dot(v, v);
@@ -481,10 +481,10 @@ TEST_CASE("lab02 reference: the comparison rejects a backward loop that steps fo
          "return all(greaterThanEqual(st, vec2(0.0))) && all(lessThanEqual(st, vec2(1.0)));", "return true;",
          {"field=source", "length=40"}},
         // The half step computed and then ignored: Euler with the midpoint's name.
-        {"midpoint-is-euler", "streamline.glsl", "step_direction(flow_at(half_step))", "step_direction(flow_at(st))",
+        {"midpoint-is-euler", "streamline.glsl", "stepDirection(flowAt(half_step))", "stepDirection(flowAt(st))",
          {"field=rotation", "step=midpoint", "length=80"}},
-        // normalized=on ignored (the starter's step_direction): slow regions keep their short streaks.
-        {"normalized-ignored", "streamline.glsl", "return safe_normalize(v, vec2(0.0));", "return v;",
+        // normalized=on ignored (the starter's stepDirection): slow regions keep their short streaks.
+        {"normalized-ignored", "streamline.glsl", "return safeNormalize(v, vec2(0.0));", "return v;",
          {"field=source", "normalized=on"}},
     };
     for (const Broken& b : broken) {

@@ -4,15 +4,15 @@
 #include "lab_runner.h"
 #include "test_support.h"
 
-#include "common/image/animation.h"
-#include "support/flow/flow_field.h"
+#include "common/core/splitmix64.h"
 #include "common/gl/framebuffer.h"
 #include "common/gl/gl.h"
 #include "common/gl/gpu_mesh.h"
+#include "common/gl/texture.h"
+#include "common/image/animation.h"
 #include "common/image/image_compare.h"
 #include "common/scene/mesh_data.h"
-#include "common/core/splitmix64.h"
-#include "common/gl/texture.h"
+#include "support/flow/flow_field.h"
 #include "support/flow/time_slices.h"
 
 #include <cctype>
@@ -26,7 +26,7 @@ namespace {
 
 const fs::path kLabDir = test::source_root() / "solutions" / "lab03_texture_arrays";
 
-// lab03's probe.frag (flow_at() written out raw) built with the defines the lab's parameters give.
+// lab03's probe.frag (flowAt() written out raw) built with the defines the lab's parameters give.
 ShaderProgram probe_program(const Context& context, const std::string& storage, int slices, const std::string& blend,
                             const std::string& wrap) {
     PreprocessOptions options;

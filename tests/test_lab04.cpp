@@ -173,7 +173,7 @@ TEST_CASE("lab04: a step far below one sample loses the normal to float32 cancel
 TEST_CASE("lab04: zoomed out, mipmapped heights come closer to a supersampled view than aliased ones", "[lab04]") {
     test::TempDir dir;
     auto render = [&](const std::string& name, const std::string& size, std::vector<std::string> settings) {
-        settings.insert(settings.end(), {"camera_distance=9", "camera_pitch=70", "colouring=plain", "exaggeration=6"});
+        settings.insert(settings.end(), {"camera_distance=9", "camera_pitch=70", "coloring=plain", "exaggeration=6"});
         const auto run = test::render("lab04_solution", settings, dir.path(), name, {"--size", size});
         INFO(run.process.output);
         REQUIRE(run.exit_code() == 0);

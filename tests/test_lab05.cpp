@@ -1,16 +1,16 @@
 // Lab 05's hard cases, through the lab's own compute shader (solutions/lab05_particles/advect.comp) on
 // buffers the test fills: particles placed exactly where things go wrong, checked against the CPU's update
 // (common/particle_*) in float and in double.
-#include "common/gl/buffer.h"
-#include "common/gl/compute.h"
 #include "common/context/context.h"
 #include "common/core/error.h"
+#include "common/gl/buffer.h"
+#include "common/gl/compute.h"
 #include "common/gl/gl.h"
+#include "common/gl/texture.h"
+#include "gl_fixture.h"
 #include "support/particles/particle_cpu.h"
 #include "support/particles/particle_grid.h"
 #include "support/particles/particle_motion.h"
-#include "common/gl/texture.h"
-#include "gl_fixture.h"
 
 #include "catch.hpp"
 
@@ -40,7 +40,7 @@ struct Config {
 };
 
 struct GpuState {
-    std::vector<glm::vec4> positions, velocities, colours;
+    std::vector<glm::vec4> positions, velocities, colors;
 };
 
 class Advector {
@@ -58,7 +58,7 @@ public:
                         {"SOURCE_" + upper(c.source), "1"},
                         {"INTEGRATOR_" + upper(c.integrator), "1"},
                         {"LOCAL_SIZE", std::to_string(c.local_size)},
-                        {"EFFECT_COLOUR_BY_SPEED", "1"}};
+                        {"EFFECT_COLOR_BY_SPEED", "1"}};
         return ShaderProgram::build(spec, options);
     }
 
@@ -70,11 +70,11 @@ public:
         Buffer velocities = Buffer::create(GL_SHADER_STORAGE_BUFFER, bytes, set.velocities.data(), GL_DYNAMIC_DRAW);
         Buffer origins = Buffer::create(GL_SHADER_STORAGE_BUFFER, 2 * bytes, set.origins.data(), GL_STATIC_DRAW);
         const std::vector<glm::vec4> unset(set.count(), glm::vec4(-7.0f));
-        Buffer colours = Buffer::create(GL_SHADER_STORAGE_BUFFER, bytes, unset.data(), GL_DYNAMIC_DRAW);
+        Buffer colors = Buffer::create(GL_SHADER_STORAGE_BUFFER, bytes, unset.data(), GL_DYNAMIC_DRAW);
         positions.bind_base(0);
         velocities.bind_base(1);
         origins.bind_base(2);
-        colours.bind_base(3);
+        colors.bind_base(3);
         Texture texture;
         ShaderProgram p = program(c);
         p.use();
@@ -94,7 +94,7 @@ public:
         }
         glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
         check_gl_error("the test's steps");
-        return {read(positions), read(velocities), read(colours)};
+        return {read(positions), read(velocities), read(colors)};
     }
 
     const ComputeLimits& limits() const { return limits_; }
@@ -171,9 +171,9 @@ TEST_CASE("lab05: a particle on a stagnation point stays there exactly, at rest 
             CHECK(out.positions[0] == glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
             CHECK(out.positions[1] == glm::vec4(0.0f, 0.0f, 0.9f, 1.0f));  // the whole z axis is still
             CHECK(out.velocities[0] == glm::vec4(0.0f));
-            CHECK(finite(out.colours[0]));
-            CHECK(out.colours[0].b > 0.8f);  // the ramp's slow end
-            CHECK(out.colours[0].r < 0.2f);
+            CHECK(finite(out.colors[0]));
+            CHECK(out.colors[0].b > 0.8f);  // the ramp's slow end
+            CHECK(out.colors[0].r < 0.2f);
         }
 }
 
@@ -295,7 +295,7 @@ TEST_CASE("lab05: a count that is no multiple of the group size leaves every slo
         const GpuState out = gpu.run(c, set, 3, count);
         for (std::size_t i = count; i < set.count(); ++i) {
             CHECK(out.positions[i] == set.positions[i]);
-            CHECK(out.colours[i] == glm::vec4(-7.0f));
+            CHECK(out.colors[i] == glm::vec4(-7.0f));
         }
         CHECK(out.positions[count - 1] != set.positions[count - 1]);
     }

@@ -143,7 +143,7 @@ TEST_CASE("lab06: bad settings, network files and volumes give one line naming t
     const fs::path bad_network = dir.write("bad.network", "processor VolumeSource source\nprocessor Raycaster r\n");
     const fs::path open_network = dir.write("open.network", "processor VolumeSource source\nprocessor RayTraversal raycaster\n");
     const fs::path bad_value = dir.write("value.network", "processor RayTraversal raycaster samples_per_voxel=lots\n"
-                                                         "processor VolumeSource source\nprocessor ProxyGeometry proxy\n"
+                                                         "processor VolumeSource source\nprocessor ProxySource proxy\n"
                                                          "processor EntryExitPoints entry_exit\nprocessor Canvas canvas\n"
                                                          "connect source.volume -> proxy.volume\nconnect proxy.geometry -> entry_exit.proxy\n"
                                                          "connect source.volume -> raycaster.volume\nconnect entry_exit.entry -> raycaster.entry\n"

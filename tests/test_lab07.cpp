@@ -11,8 +11,8 @@
 #include "common/gl/gl.h"
 #include "common/gl/gpu_mesh.h"
 #include "common/image/image.h"
-#include "support/spectral/lagrange.h"
 #include "common/shader/shader_program.h"
+#include "support/spectral/lagrange.h"
 #include "support/spectral/spectral_mesh.h"
 
 #include <cmath>

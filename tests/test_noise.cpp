@@ -1,7 +1,7 @@
 #include "catch.hpp"
 
-#include "support/flow/noise.h"
 #include "common/core/splitmix64.h"
+#include "support/flow/noise.h"
 #include "test_support.h"
 
 #include <cmath>

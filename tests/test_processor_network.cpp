@@ -4,11 +4,11 @@
 #include <vector>
 
 #include "catch.hpp"
-#include "test_support.h"
 #include "common/core/error.h"
 #include "support/network/network_file.h"
 #include "support/network/processor_network.h"
 #include "support/network/processor_registry.h"
+#include "test_support.h"
 
 namespace {
 
@@ -120,9 +120,9 @@ public:
     void process() override { out("volume", "volume(" + property("file") + ")"); }
 };
 
-class ProxyGeometry : public TextProcessor {
+class ProxySource : public TextProcessor {
 public:
-    ProxyGeometry() : TextProcessor("ProxyGeometry") {
+    ProxySource() : TextProcessor("ProxySource") {
         add_input("volume", PortType::Volume);
         add_output("geometry", PortType::Geometry);
     }
@@ -180,7 +180,7 @@ public:
 gsv::ProcessorRegistry lab_registry() {
     gsv::ProcessorRegistry registry;
     registry.add<VolumeSource>();
-    registry.add<ProxyGeometry>();
+    registry.add<ProxySource>();
     registry.add<EntryExitPoints>();
     registry.add<RayTraversal>();
     registry.add<Canvas>();
@@ -191,7 +191,7 @@ gsv::ProcessorRegistry lab_registry() {
 const char* const kLabNetwork =
     "# a DVR of the MRI head\n"
     "processor VolumeSource source file=data/volumes/anatomical.nii\n"
-    "processor ProxyGeometry proxy\n"
+    "processor ProxySource proxy\n"
     "processor EntryExitPoints entry_exit\n"
     "processor RayTraversal raycaster compositing=dvr gradient=central shading=phong\n"
     "processor Canvas output\n"
@@ -541,10 +541,10 @@ TEST_CASE("network: the registry creates known types and lists them for an unkno
     CHECK(registry.contains("Canvas"));
     CHECK_FALSE(registry.contains("canvas"));
     CHECK(registry.type_names() ==
-          std::vector<std::string>{"VolumeSource", "ProxyGeometry", "EntryExitPoints", "RayTraversal", "Canvas",
+          std::vector<std::string>{"VolumeSource", "ProxySource", "EntryExitPoints", "RayTraversal", "Canvas",
                                    "ImageFilter"});
     CHECK(gsv_error_message([&] { registry.create("RayTravesal"); }) ==
-          "unknown processor type 'RayTravesal' (known: VolumeSource, ProxyGeometry, EntryExitPoints, RayTraversal, "
+          "unknown processor type 'RayTravesal' (known: VolumeSource, ProxySource, EntryExitPoints, RayTraversal, "
           "Canvas, ImageFilter)");
 
     gsv::ProcessorRegistry mine;
@@ -583,7 +583,7 @@ TEST_CASE("network file: blanks and quotes and comments and CRLF line ends", "[n
         "# exported on Windows, where paths have spaces\r\n"
         "   processor\tVolumeSource   source  file=\"my data/head #1.nii\"   # a comment\r\n"
         "\r\n"
-        "processor ProxyGeometry proxy\n"
+        "processor ProxySource proxy\n"
         "processor EntryExitPoints points\n"
         "processor ImageFilter filter\n"
         "connect source.volume -> proxy.volume\n"
@@ -600,7 +600,7 @@ TEST_CASE("network file: blanks and quotes and comments and CRLF line ends", "[n
 TEST_CASE("network file: every mistake is one line naming the file and line", "[network]") {
     const std::string three =
         "processor VolumeSource source\n"
-        "processor ProxyGeometry proxy\n"
+        "processor ProxySource proxy\n"
         "processor EntryExitPoints entry_exit\n";
     struct Case {
         std::string text;
@@ -620,7 +620,7 @@ TEST_CASE("network file: every mistake is one line naming the file and line", "[
         {"processor RayTraversal raycaster compositing\n", "net.txt:1: 'compositing' is not key=value"},
         {"processor RayTraversal raycaster =mip\n", "net.txt:1: '=mip' is not key=value"},
         {"processor RayTravesal raycaster\n",
-         "net.txt:1: unknown processor type 'RayTravesal' (known: VolumeSource, ProxyGeometry, EntryExitPoints, "
+         "net.txt:1: unknown processor type 'RayTravesal' (known: VolumeSource, ProxySource, EntryExitPoints, "
          "RayTraversal, Canvas, ImageFilter)"},
         {"# shading\nprocessor RayTraversal raycaster shadng=phong\n",
          "net.txt:2: raycaster (RayTraversal) has no property 'shadng' (its properties: compositing, gradient, "
@@ -640,7 +640,7 @@ TEST_CASE("network file: every mistake is one line naming the file and line", "[
          "net.txt:4: cannot connect source.vol -> proxy.volume: source (VolumeSource) has no output 'vol' (its "
          "outputs: volume)"},
         {three + "connect source.volume -> proxy.vol\n",
-         "net.txt:4: cannot connect source.volume -> proxy.vol: proxy (ProxyGeometry) has no input 'vol' (its "
+         "net.txt:4: cannot connect source.volume -> proxy.vol: proxy (ProxySource) has no input 'vol' (its "
          "inputs: volume)"},
         {three + "connect proxy.volume -> source.volume\n",
          "net.txt:4: cannot connect proxy.volume -> source.volume: proxy.volume is an input; a connection runs from "
@@ -692,7 +692,7 @@ TEST_CASE("network file: written text parses back to the same network", "[networ
     // Canonical form: properties that were set, in declared order; a blank line; connections in order made.
     const std::string canonical =
         "processor VolumeSource source file=\"my data/head.nii\"\n"
-        "processor ProxyGeometry proxy\n"
+        "processor ProxySource proxy\n"
         "processor EntryExitPoints entry_exit\n"
         "processor RayTraversal raycaster compositing=dvr shading=none\n"
         "processor Canvas output\n"
@@ -711,7 +711,7 @@ TEST_CASE("network file: written text parses back to the same network", "[networ
     const std::string messy =
         "# head\n"
         "processor VolumeSource source file=\"my data/head.nii\"\n"
-        "processor ProxyGeometry proxy\n\n"
+        "processor ProxySource proxy\n\n"
         "processor EntryExitPoints entry_exit\n"
         "processor RayTraversal raycaster shading=none compositing=dvr  # dvr is the default, and stays\n"
         "processor Canvas output\n"
@@ -727,13 +727,13 @@ TEST_CASE("network file: written text parses back to the same network", "[networ
     gsv::Network built;
     built.add<VolumeSource>("source").set_property("file", "");
     built.add<ImageFilter>("unused");
-    built.add<ProxyGeometry>("proxy");
+    built.add<ProxySource>("proxy");
     built.connect("source.volume", "proxy.volume");
     const std::string text = gsv::network_text(built);
     CHECK(text ==
           "processor VolumeSource source file=\"\"\n"
           "processor ImageFilter unused\n"
-          "processor ProxyGeometry proxy\n"
+          "processor ProxySource proxy\n"
           "\n"
           "connect source.volume -> proxy.volume\n");
     gsv::test::TempDir dir;

@@ -3,11 +3,11 @@
 #include "catch.hpp"
 #include "test_support.h"
 
-#include "support/geometry/convex_polyhedron.h"
 #include "common/core/error.h"
+#include "common/core/splitmix64.h"
+#include "support/geometry/convex_polyhedron.h"
 #include "support/raycast/proxy_geometry.h"
 #include "support/raycast/proxy_ray.h"
-#include "common/core/splitmix64.h"
 #include "support/volume/volume_box.h"
 
 #include <algorithm>
@@ -213,13 +213,13 @@ TEST_CASE("proxy: the unclipped box is 12 outward triangles whose positions are 
     REQUIRE(mesh.triangle_count() == 12);
     check_proxy(proxy);
     for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
-        const glm::vec3 colour = mesh.positions[i];
-        for (int axis = 0; axis < 3; ++axis) CHECK((colour[axis] == 0.0f || colour[axis] == 1.0f));
+        const glm::vec3 color = mesh.positions[i];
+        for (int axis = 0; axis < 3; ++axis) CHECK((color[axis] == 0.0f || color[axis] == 1.0f));
         // An axis-aligned face: the normal points out through the side the vertex is on.
         const glm::vec3 n = mesh.normals[i];
         const int axis = std::abs(n.x) == 1.0f ? 0 : std::abs(n.y) == 1.0f ? 1 : 2;
         CHECK(std::abs(n[axis]) == 1.0f);
-        CHECK(colour[axis] == (n[axis] > 0 ? 1.0f : 0.0f));
+        CHECK(color[axis] == (n[axis] > 0 ? 1.0f : 0.0f));
     }
     CHECK(enclosed_volume(mesh) == Approx(1.0).epsilon(1e-12));
     CHECK(surface_area(mesh) == Approx(6.0).epsilon(1e-12));
@@ -244,9 +244,9 @@ TEST_CASE("proxy: the volume box maps texture coordinates linearly onto a centre
     // the functions and their inverses agree everywhere.
     const glm::mat4 model = box.model_from_texture_matrix();
     const glm::mat4 inverse = box.texture_from_model_matrix();
-    for (const glm::vec3& colour : ProxyGeometry().mesh().positions) {
-        const glm::dvec3 placed(model * glm::vec4(colour, 1.0f));
-        CHECK(glm::length(placed - box.model_from_texture(glm::dvec3(colour))) < 1e-6);
+    for (const glm::vec3& color : ProxyGeometry().mesh().positions) {
+        const glm::dvec3 placed(model * glm::vec4(color, 1.0f));
+        CHECK(glm::length(placed - box.model_from_texture(glm::dvec3(color))) < 1e-6);
         for (int axis = 0; axis < 3; ++axis) CHECK(std::abs(std::abs(placed[axis]) - box.size()[axis] / 2) < 1e-6);
     }
     Random random{7};
@@ -574,9 +574,9 @@ TEST_CASE("proxy: a camera at the centre gets a near cap that is the box cross-s
             // On the near plane moved kNearCapOffset further from the camera, inside the box.
             const double expected = 0.5 + sign * (near / box.size()[axis] + gsv::kNearCapOffset);
             const glm::dvec3 forward_texture = glm::normalize(box.texture_direction(forward));
-            for (const glm::vec3& colour : cap.positions) {
-                CHECK(std::abs(colour[axis] - expected) < 1e-6);
-                for (int other = 0; other < 3; ++other) CHECK((colour[other] >= 0.0f && colour[other] <= 1.0f));
+            for (const glm::vec3& color : cap.positions) {
+                CHECK(std::abs(color[axis] - expected) < 1e-6);
+                for (int other = 0; other < 3; ++other) CHECK((color[other] >= 0.0f && color[other] <= 1.0f));
             }
             // Counter-clockwise seen from the camera, so it survives culling with the front faces.
             for (const Triangle& t : triangles_of(cap)) {

@@ -11,12 +11,12 @@
 #include "common/gl/framebuffer.h"
 #include "common/gl/gl.h"
 #include "common/gl/gpu_mesh.h"
+#include "common/gl/texture.h"
 #include "common/image/image.h"
 #include "common/scene/mesh_data.h"
+#include "common/shader/shader_source.h"
 #include "support/raycast/raycast_components.h"
 #include "support/raycast/raycast_config.h"
-#include "common/shader/shader_source.h"
-#include "common/gl/texture.h"
 
 #include <glm/glm.hpp>
 

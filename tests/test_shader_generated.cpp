@@ -137,15 +137,15 @@ TEST_CASE("shader_library: generated files travel with the program and set_gener
     auto context = gsv::test::headless_context();
     TempDir dir;
     dir.write("g.vert", "void main() { gl_Position = vec4(aVertex.xy, 0.0, 1.0); }\n");
-    const fs::path frag = dir.write("g.frag", "#include \"colour.glsl\"\nout vec4 fColor;\nvoid main() { fColor = kColour; }\n");
+    const fs::path frag = dir.write("g.frag", "#include \"color.glsl\"\nout vec4 fColor;\nvoid main() { fColor = kColor; }\n");
     PreprocessOptions options;
     options.version = context->effective_version();
     options.include_dirs = {gsv::test::source_root() / "shaders"};
     gsv::ShaderLibrary library(options);
     gsv::ProgramSpec spec{"g", {dir.path("g.vert"), frag}, {}};
-    spec.generated = {{"colour.glsl", "const vec4 kColour = vec4(0.25);\n"}};
+    spec.generated = {{"color.glsl", "const vec4 kColor = vec4(0.25);\n"}};
     const auto& entry = library.add(spec, {});
-    CHECK(entry.program().compiled_sources()[1].find("const vec4 kColour = vec4(0.25);") != std::string::npos);
+    CHECK(entry.program().compiled_sources()[1].find("const vec4 kColor = vec4(0.25);") != std::string::npos);
 
     gsv::GpuMesh quad(gsv::make_fullscreen_quad(), gsv::Profile::Core);
     gsv::Framebuffer target(1, 1, gsv::ColorFormat::RGBA32F, false);
@@ -157,26 +157,26 @@ TEST_CASE("shader_library: generated files travel with the program and set_gener
     };
     CHECK(drawn() == 0.25f);
 
-    CHECK_FALSE(library.set_generated(entry, {{"colour.glsl", "const vec4 kColour = vec4(0.75);\n"}}, {}).has_value());
+    CHECK_FALSE(library.set_generated(entry, {{"color.glsl", "const vec4 kColor = vec4(0.75);\n"}}, {}).has_value());
     CHECK(drawn() == 0.75f);
     CHECK_FALSE(library.reload_changed({}).has_value());  // a generated file has no timestamp to go stale
 
     // A broken text: the error names it and its line, and the last good program keeps drawing.
-    const auto error = library.set_generated(entry, {{"colour.glsl", "// v2\nconst vec4 kColour = vec4(0.5) +;\n"}}, {});
+    const auto error = library.set_generated(entry, {{"color.glsl", "// v2\nconst vec4 kColor = vec4(0.5) +;\n"}}, {});
     REQUIRE(error.has_value());
     INFO(*error);
-    CHECK(error->find("<generated colour.glsl>:2") != std::string::npos);
-    CHECK(error->find("const vec4 kColour = vec4(0.5) +;") != std::string::npos);
+    CHECK(error->find("<generated color.glsl>:2") != std::string::npos);
+    CHECK(error->find("const vec4 kColor = vec4(0.5) +;") != std::string::npos);
     CHECK(drawn() == 0.75f);
 
     // Hot reload of a real file builds with the text last asked for, here still broken, then fixed.
     const auto before = fs::last_write_time(frag);
-    dir.write("g.frag", "#include \"colour.glsl\"\nout vec4 fColor;\nvoid main() { fColor = 2.0 * kColour; }\n");
+    dir.write("g.frag", "#include \"color.glsl\"\nout vec4 fColor;\nvoid main() { fColor = 2.0 * kColor; }\n");
     fs::last_write_time(frag, before + std::chrono::seconds(2));
     const auto reload_error = library.reload_changed({});
     REQUIRE(reload_error.has_value());
-    CHECK(reload_error->find("<generated colour.glsl>:2") != std::string::npos);
-    CHECK_FALSE(library.set_generated(entry, {{"colour.glsl", "const vec4 kColour = vec4(0.125);\n"}}, {}).has_value());
+    CHECK(reload_error->find("<generated color.glsl>:2") != std::string::npos);
+    CHECK_FALSE(library.set_generated(entry, {{"color.glsl", "const vec4 kColor = vec4(0.125);\n"}}, {}).has_value());
     CHECK(drawn() == 0.25f);
 
     gsv::ShaderLibrary other(options);

@@ -4,11 +4,11 @@
 #include "catch.hpp"
 
 #include "common/core/error.h"
+#include "common/core/splitmix64.h"
+#include "support/geometry/ray_box.h"
 #include "support/volume/gradient.h"
 #include "support/volume/marschner_lobb.h"
 #include "support/volume/nifti_file.h"
-#include "support/geometry/ray_box.h"
-#include "common/core/splitmix64.h"
 #include "support/volume/volume.h"
 #include "test_support.h"
 

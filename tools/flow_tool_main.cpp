@@ -1,6 +1,7 @@
 // gsv-flow: writes the kit's analytic flows as .flow files and describes .flow files. data/flows/ is made
 // with it (data/README.md), and a test regenerates that data to prove it still matches this generator.
 #include "common/core/error.h"
+#include "common/core/number_text.h"
 #include "support/flow/flow_field.h"
 
 #include <algorithm>
@@ -40,8 +41,7 @@ int parse_count(const char* name, const std::string& text, int max) {
 }
 
 std::string describe(const gsv::FlowSequence& sequence) {
-    char speed[32];
-    std::snprintf(speed, sizeof speed, "%g", static_cast<double>(sequence.max_speed()));
+    const std::string speed = gsv::format_number(sequence.max_speed());
     return std::to_string(sequence.width) + "x" + std::to_string(sequence.height) + " texels, " +
            std::to_string(sequence.frames.size()) + (sequence.frames.size() == 1 ? " frame" : " frames") +
            ", max speed " + speed + " texels per step";

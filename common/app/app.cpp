@@ -87,7 +87,8 @@ const std::vector<RenderCase>& Session::named_cases() {
 }
 
 std::filesystem::path Session::case_file() {
-    return find_assets().root() / (info.case_file.empty() ? "grader/cases/" + info.id + ".json" : info.case_file);
+    const Assets& a = find_assets();
+    return info.case_file.empty() ? a.layout().case_file(info.id) : a.root() / info.case_file;
 }
 
 void Session::apply_case(const std::string& name) {

@@ -5,11 +5,11 @@
 // one line: return gsv::run_lab<MyLab>(argc, argv);
 #include "common/app/assets.h"
 #include "common/app/case_file.h"
+#include "common/app/params.h"
 #include "common/context/context.h"
 #include "common/io/data_array.h"
-#include "common/app/params.h"
-#include "common/shader/shader_library.h"
 #include "common/scene/transforms.h"
+#include "common/shader/shader_library.h"
 
 #include <filesystem>
 #include <functional>
@@ -25,7 +25,7 @@ struct LabInfo {
     std::string title;            // "GLSL basics and Gooch shading"
     GlVersion needs{4, 1};        // labs other than 05 run on macOS's 4.1 core
     std::string needs_why = "the kit's baseline";
-    // Its named cases, relative to the kit's root; empty: grader/cases/<id>.json.
+    // Its named cases, relative to the kit's root; empty: the public case file (KitLayout::case_file).
     std::string case_file;
 };
 

@@ -1,9 +1,10 @@
 // Animate mode: the lab's animated parameter stepped over its range, headless. Each frame is a PNG (to
 // compare or put on a slide) and all of them one looping APNG (to play in a browser or a report).
-#include "common/image/animation.h"
 #include "common/app/app_session.h"
 #include "common/core/error.h"
+#include "common/core/number_text.h"
 #include "common/gl/gl.h"
+#include "common/image/animation.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -19,31 +20,19 @@ struct Axis {
     double min = 0, max = 1;  // the parameter's own range
 };
 
-std::string number(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.17g", v);  // every bit, so frame i's value is exactly from + step * i
-    return text;
-}
-
-std::string short_number(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", v);
-    return text;
-}
-
 Axis animation_axis(const Session& s) {
     const ParamSpec* spec = s.params.animation_axis();
     if (!spec) throw Error(s.info.id + " has no animated parameter to step (a lab marks one with .animated())");
     if (spec->type != ParamType::Float)
         throw Error(s.info.id + " marks '" + spec->name + "' as animated, but only a Float parameter can be");
     Axis axis{spec->name, s.options.from.value_or(spec->min), s.options.to.value_or(spec->max), spec->min, spec->max};
-    const std::string range = "[" + short_number(spec->min) + ", " + short_number(spec->max) + "]";
+    const std::string range = "[" + format_number(spec->min) + ", " + format_number(spec->max) + "]";
     for (const auto& [option, value] : {std::pair{"--from", axis.from}, std::pair{"--to", axis.to}})
         if (value < spec->min || value > spec->max)
-            throw Error(std::string("option ") + option + " = " + short_number(value) + " is out of range " + range +
+            throw Error(std::string("option ") + option + " = " + format_number(value) + " is out of range " + range +
                         " of parameter '" + spec->name + "'");
     if (axis.from == axis.to)
-        throw Error("options --from and --to are both " + short_number(axis.from) + ": nothing to animate");
+        throw Error("options --from and --to are both " + format_number(axis.from) + ": nothing to animate");
     return axis;
 }
 
@@ -67,7 +56,8 @@ int run_animate(Session& s) {
         // i / count, not i / (count - 1): the last frame stops one step short of `to`, so a periodic
         // parameter (time, phase) loops without showing the same picture twice.
         const double value = axis.from + (axis.to - axis.from) * i / count;
-        s.params.set(axis.name, number(std::clamp(value, axis.min, axis.max)));  // a rounding ulp is no error
+        // Every bit, so frame i's value is exactly from + step * i; clamped, a rounding ulp is no error.
+        s.params.set(axis.name, format_number(std::clamp(value, axis.min, axis.max), 17));
         if (auto error = s.sync_params()) throw Error(*error);
         target.bind();
         s.render_frame(frame);
@@ -85,10 +75,10 @@ int run_animate(Session& s) {
     write_apng(apng, frames, apng_delay(s.options.fps));
 
     std::printf("%s: wrote %d frames (%dx%d, %s from %s to %s) as %s ... frame_%04d.png\n", s.info.id.c_str(), count,
-                width, height, axis.name.c_str(), short_number(axis.from).c_str(), short_number(axis.to).c_str(),
+                width, height, axis.name.c_str(), format_number(axis.from).c_str(), format_number(axis.to).c_str(),
                 (dir / "frame_0000.png").string().c_str(), count - 1);
     std::printf("%s: wrote %s (APNG, %s fps, loops)\n", s.info.id.c_str(), apng.string().c_str(),
-                short_number(s.options.fps).c_str());
+                format_number(s.options.fps).c_str());
     if (first_bad >= 0) {
         std::fprintf(stderr, "%s: frames have %ld NaN and %ld Inf pixel values, first in frame_%04d.png (painted magenta)\n",
                      s.info.id.c_str(), nan_values, inf_values, first_bad);

@@ -1,12 +1,12 @@
 // Headless render mode: one case to PNG, plus a JSON with timings and what GL really was, and beside them the
 // arrays a lab hands in (common/io/data_array.h).
 #include "common/app/app_session.h"
-#include "common/io/data_array.h"
 #include "common/core/error.h"
 #include "common/gl/framebuffer.h"
 #include "common/gl/gl.h"
 #include "common/image/image.h"
 #include "common/image/image_compare.h"
+#include "common/io/data_array.h"
 #include "common/io/json.h"
 #include "common/timing/timing.h"
 

@@ -1,12 +1,12 @@
 // Sweep mode: what accuracy costs in time. Steps the lab's accuracy knob, times each setting and
 // measures its error against a converged reference, then prints a table and writes a CSV and a plot.
 #include "common/app/app_session.h"
+#include "common/app/sweep_report.h"
 #include "common/core/error.h"
 #include "common/gl/framebuffer.h"
 #include "common/gl/gl.h"
 #include "common/image/image.h"
 #include "common/image/image_compare.h"
-#include "common/app/sweep_report.h"
 #include "common/timing/timing.h"
 
 #include <cstdio>

@@ -2,6 +2,7 @@
 // hot reload of shader files, screenshots, and the command line that reproduces what is on screen.
 #include "common/app/app_session.h"
 #include "common/core/error.h"
+#include "common/core/number_text.h"
 #include "common/gl/framebuffer.h"
 #include "common/gl/gl.h"
 #include "common/image/image.h"
@@ -55,9 +56,7 @@ void play(Params& params, double seconds) {
     const double span = axis->max - axis->min;
     double v = params.get_float(axis->name) + span / 8 * seconds;
     if (v > axis->max) v = axis->min + std::fmod(v - axis->min, span);
-    char text[32];
-    std::snprintf(text, sizeof text, "%.9g", std::clamp(v, axis->min, axis->max));
-    params.set(axis->name, text);
+    params.set(axis->name, format_number(std::clamp(v, axis->min, axis->max), 9));
 }
 
 void toggle_play(WindowInput& in) {

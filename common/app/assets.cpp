@@ -32,7 +32,7 @@ Assets::Assets(std::string lab_dir, const fs::path& executable) : lab_dir_(std::
     std::string searched;
     for (const auto& root : roots) {
         std::error_code ec;
-        if (fs::is_directory(root / lab_dir_, ec) && fs::is_directory(root / "shaders", ec)) {
+        if (fs::is_directory(root / lab_dir_, ec) && fs::is_directory(KitLayout{root}.shaders(), ec)) {
             root_ = root.lexically_normal();
             return;
         }
@@ -56,7 +56,7 @@ fs::path Assets::shader_file(const std::string& relative) const {
 }
 
 fs::path Assets::data_file(const std::string& relative) const {
-    const fs::path p = root_ / "data" / relative;
+    const fs::path p = layout().data() / relative;
     if (!fs::exists(p)) throw Error("cannot find data file '" + p.string() + "'");
     return p;
 }
@@ -65,10 +65,10 @@ fs::path Assets::user_file(const std::string& typed) const {
     const fs::path path(typed);
     std::error_code ec;
     if (path.is_absolute() || fs::exists(path, ec)) return path;
-    const fs::path in_data = root_ / "data" / path;
+    const fs::path in_data = layout().data() / path;
     if (fs::exists(in_data, ec)) return in_data;
     throw Error("cannot find file '" + typed + "' (looked in " + fs::current_path(ec).string() + " and " +
-                (root_ / "data").string() + ")");
+                layout().data().string() + ")");
 }
 
 fs::path Assets::executable_path(const char* argv0) {

@@ -2,6 +2,8 @@
 // Where a lab finds its shaders and data. Never the working directory (the classic "shader not found"
 // when a program is started from elsewhere): first $GSV_ROOT, then an installed copy beside the
 // executable (<exe dir>/gsv-assets), then the source tree the binary was built from.
+#include "common/app/kit_layout.h"
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -15,7 +17,8 @@ public:
 
     const std::filesystem::path& root() const { return root_; }
     std::filesystem::path lab_dir() const { return root_ / lab_dir_; }
-    std::filesystem::path shaders_dir() const { return root_ / "shaders"; }
+    KitLayout layout() const { return {root_}; }
+    std::filesystem::path shaders_dir() const { return layout().shaders(); }
     std::vector<std::filesystem::path> shader_include_dirs() const { return {lab_dir(), shaders_dir()}; }
     // A file in the lab's folder (shaders) or in data/; throws naming the file and where it looked.
     std::filesystem::path lab_file(const std::string& relative) const;

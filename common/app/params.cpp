@@ -32,13 +32,6 @@ std::string macro_name_for(const std::string& name) {
     return out;
 }
 
-std::string format_number(double v) {
-    std::ostringstream s;
-    s.precision(7);
-    s << v;
-    return s.str();
-}
-
 double parse_number(const std::string& name, const std::string& text) {
     const std::optional<double> v = parse_finite_number(text);
     if (!v) throw Error("parameter '" + name + "' = '" + text + "' is not a number");
@@ -46,7 +39,7 @@ double parse_number(const std::string& name, const std::string& text) {
 }
 
 std::string range_text(const ParamSpec& s) {
-    return "[" + format_number(s.min) + ", " + format_number(s.max) + "]";
+    return "[" + format_number(s.min, 7) + ", " + format_number(s.max, 7) + "]";
 }
 
 }  // namespace
@@ -224,12 +217,12 @@ std::string Params::get_text(const std::string& name) const { return text_at(rea
 std::string Params::text_at(std::size_t i) const {
     const Value& v = values_.at(i);
     switch (specs_[i].type) {
-    case ParamType::Float: return format_number(v.number);
+    case ParamType::Float: return format_number(v.number, 7);
     case ParamType::Int: return std::to_string(static_cast<long>(v.number));
     case ParamType::Bool: return v.number != 0 ? "on" : "off";
     case ParamType::Choice:
     case ParamType::File: return v.choice;
-    case ParamType::Vec3: return format_number(v.vec.x) + "," + format_number(v.vec.y) + "," + format_number(v.vec.z);
+    case ParamType::Vec3: return format_number(v.vec.x, 7) + "," + format_number(v.vec.y, 7) + "," + format_number(v.vec.z, 7);
     }
     return "";
 }
@@ -289,7 +282,7 @@ std::vector<ShaderDefine> Params::defines() const {
             out.push_back({s.define + "_" + macro_name_for(v.choice), "1"});
             break;
         case ParamType::Int: out.push_back({s.define, std::to_string(static_cast<long>(v.number))}); break;
-        case ParamType::Float: out.push_back({s.define, format_number(v.number)}); break;
+        case ParamType::Float: out.push_back({s.define, format_number(v.number, 7)}); break;
         case ParamType::Vec3: out.push_back({s.define, "vec3(" + text_at(i) + ")"}); break;
         case ParamType::File: break;
         }

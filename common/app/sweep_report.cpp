@@ -1,6 +1,7 @@
 #include "common/app/sweep_report.h"
 
 #include "common/core/error.h"
+#include "common/core/number_text.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -91,9 +92,8 @@ std::string SweepReport::csv() const {
             << fixed(r.min_ms, 4) << "," << fixed(r.rmse, 4) << "," << r.max_diff;
         for (const auto& name : extras) {
             // An empty cell where this row has no such measure: gnuplot skips it.
-            char number[32] = "";
-            if (const double* value = extra_value(r, name)) std::snprintf(number, sizeof number, "%.6g", *value);
-            out << "," << number;
+            if (const double* value = extra_value(r, name)) out << "," << format_number(*value);
+            else out << ",";
         }
         out << "\n";
     }
@@ -109,11 +109,7 @@ std::string SweepReport::markdown() const {
     const std::size_t columns = (series.empty() ? 4 : 5) + extras.size();
     for (std::size_t i = 0; i < columns; ++i) out << (i < (series.empty() ? 1u : 2u) ? " --- |" : " ---: |");
     out << "\n";
-    auto number = [](double value) {
-        char text[32];
-        std::snprintf(text, sizeof text, "%.4g", value);
-        return std::string(text);
-    };
+    auto number = [](double value) { return format_number(value, 4); };
     for (const auto& r : rows) {
         out << "| " << (series.empty() ? "" : r.series + " | ") << r.knob << " | " << number(r.median_ms) << " | "
             << number(r.rmse) << " | " << r.max_diff;

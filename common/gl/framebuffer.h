@@ -2,8 +2,8 @@
 // An offscreen render target: headless runs, sweeps and the grader render into one of these, since a
 // surfaceless context has no default framebuffer.
 #include "common/gl/gl_object.h"
-#include "common/image/image.h"
 #include "common/gl/texture.h"
+#include "common/image/image.h"
 
 #include <vector>
 

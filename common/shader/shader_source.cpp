@@ -1,6 +1,7 @@
 #include "common/shader/shader_source.h"
 
 #include "common/core/error.h"
+#include "common/core/not_done.h"
 
 #include <algorithm>
 #include <cctype>
@@ -200,6 +201,10 @@ private:
 
     const GeneratedFile* find_generated(const std::string& name) const {
         for (const auto& file : options_.generated)
+            if (file.name == name) return &file;
+        // Files the kit writes for every shader, after the caller's own.
+        static const GeneratedFile kKitFiles[] = {{kNotDoneInclude, not_done_glsl()}};
+        for (const auto& file : kKitFiles)
             if (file.name == name) return &file;
         return nullptr;
     }

@@ -1,8 +1,8 @@
 #pragma once
 // The on-screen panel of window mode: every parameter, the frame time and the last shader error.
 // Dear ImGui where the build found it (sliders), the window title otherwise (keys still work).
-#include "common/gl/gl_version.h"
 #include "common/app/params.h"
+#include "common/gl/gl_version.h"
 
 #include <memory>
 #include <string>

@@ -19,7 +19,7 @@ namespace {
 
 class GoochLab final : public gsv::Lab {
 public:
-    gsv::LabInfo info() const override { return {"lab01", "GLSL basics and Gooch shading", {4, 1}, "the kit's baseline"}; }
+    gsv::LabInfo info() const override { return {"lab01", "GLSL basics and Gooch shading"}; }
 
     void declare(gsv::Params& p) override {
         p.add_choice("model", "sphere", {"sphere", "torus", "teapot"}, "the mesh: two procedural ones, one loaded from data/meshes");

@@ -18,7 +18,7 @@ void main() {
     if (vObjectPosition.x > uCut) discard;
 
     // TODO(L01-T5): the interpolated normal is shorter than 1 between vertices: renormalize it (and
-    // never divide by zero: see safe_normalize in shaders/gsv/math.glsl). Where the viewer sees a
+    // never divide by zero: see safeNormalize in shaders/gsv/math.glsl). Where the viewer sees a
     // back face (a cut-open model, the teapot from below) the normal points away: flip it.
     vec3 n = vEyeNormal;
 

@@ -22,7 +22,7 @@ void main() {
 #ifdef SHADING_RATE_VERTEX
     // Per-vertex (Gouraud) shading: light the vertices, let the rasterizer blend the colours. The
     // vertex stage cannot know which side will face the viewer, so it lights both.
-    vec3 n = safe_normalize(vEyeNormal, vec3(0.0, 0.0, 1.0));
+    vec3 n = safeNormalize(vEyeNormal, vec3(0.0, 0.0, 1.0));
     vFrontColor = shade(n, vEyePosition);
     vBackColor = shade(-n, vEyePosition);
 #endif

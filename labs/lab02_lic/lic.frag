@@ -17,7 +17,7 @@ void main() {
     float count = 1.0;  // the pixel's own sample: never a division by zero
 
     // TODO(L02-T1): follow the streamline forward: uLength steps with advance(st, +1.0, texel),
-    // adding the input at each new point to sum and counting it, while streamline_continues(st).
+    // adding the input at each new point to sum and counting it, while streamlineContinues(st).
     vec2 st = vTexCoord;
     sum = kNotDone;
 

@@ -24,12 +24,12 @@ uniform sampler2D uFlowSlices[SLICES];
 // TODO(L03-T2): where the playhead falls on the slice axis, s in slice units (slice k at s = k).
 // The time axis either wraps (TIME_WRAP_REPEAT: a periodic flow, after slice T - 1 comes slice 0)
 // or stops at the last slice.
-float slice_coordinate(float time) {
+float sliceCoordinate(float time) {
     return 0.0;
 }
 
 // The slice after slice k in time.
-int next_slice(int k) {
+int nextSlice(int k) {
 #ifdef TIME_WRAP_REPEAT
     return (k + 1) % SLICES;
 #else
@@ -38,7 +38,7 @@ int next_slice(int k) {
 }
 
 // The slice nearest to s; on a wrapping axis the far half of the last slice is nearest to slice 0.
-int nearest_slice(float s) {
+int nearestSlice(float s) {
     int k = int(floor(s + 0.5));
 #ifdef TIME_WRAP_REPEAT
     return k % SLICES;
@@ -48,7 +48,7 @@ int nearest_slice(float s) {
 }
 
 // The flow stored in slice k, at texture coordinate st.
-vec2 flow_in_slice(vec2 st, int k) {
+vec2 flowInSlice(vec2 st, int k) {
 #if defined(STORAGE_ARRAY)
     // TODO(L03-T3): look slice k up in the array. The third coordinate is the layer index itself,
     // not normalised like a 3D texture's r: GL rounds it to the nearest layer and never filters
@@ -67,16 +67,16 @@ vec2 flow_in_slice(vec2 st, int k) {
 #endif
 }
 
-vec2 flow_at(vec2 st) {
-    float s = slice_coordinate(uTime);
+vec2 flowAt(vec2 st) {
+    float s = sliceCoordinate(uTime);
 #if defined(BLEND_LINEAR) && defined(STORAGE_VOLUME)
     // The 3D texture's filter interpolates in time for free: one lookup between two slice centres
     // (the same filter that bleeds when a single slice is wanted).
     return texture(uFlowVolume, vec3(st, (s + 0.5) / float(SLICES))).xy;
 #elif defined(BLEND_LINEAR)
     // TODO(L03-T4): blend linearly in time between the slice at or before s and the next one.
-    return flow_in_slice(st, nearest_slice(s));
+    return flowInSlice(st, nearestSlice(s));
 #else
-    return flow_in_slice(st, nearest_slice(s));
+    return flowInSlice(st, nearestSlice(s));
 #endif
 }

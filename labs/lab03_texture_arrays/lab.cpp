@@ -5,13 +5,13 @@
 // texture (filtering runs across slices) and in T separate textures (one texture unit each).
 #include "common/app/app.h"
 #include "common/app/change_tracker.h"
-#include "support/flow/flow_field.h"
 #include "common/gl/framebuffer.h"
 #include "common/gl/gl.h"
 #include "common/gl/gpu_mesh.h"
-#include "common/scene/mesh_data.h"
-#include "support/flow/noise.h"
 #include "common/gl/texture.h"
+#include "common/scene/mesh_data.h"
+#include "support/flow/flow_field.h"
+#include "support/flow/noise.h"
 #include "time_flow.h"
 
 
@@ -22,7 +22,7 @@ namespace {
 
 class TextureArrayLab final : public gsv::Lab {
 public:
-    gsv::LabInfo info() const override { return {"lab03", "Texture arrays: time-varying LIC", {4, 1}, "the kit's baseline"}; }
+    gsv::LabInfo info() const override { return {"lab03", "Texture arrays: time-varying LIC"}; }
 
     void declare(gsv::Params& p) override {
         p.add_choice("field", "double_gyre", {"double_gyre", "vortex_street", "file"},

@@ -1,6 +1,6 @@
 // Lab 03 fragment stage: line integral convolution through the flow at the playhead. The streamline
 // tracing is lab 02's (midpoint steps, ending at the border); what is new is where the flow comes
-// from: flow_at() reads the time slices (flow_time.glsl).
+// from: flowAt() reads the time slices (flow_time.glsl).
 #include "flow_time.glsl"
 #include "gsv/not_done.glsl"
 
@@ -19,8 +19,8 @@ void main() {
     for (int direction = -1; direction <= 1; direction += 2) {
         vec2 st = vTexCoord;
         for (int i = 0; i < uLength; ++i) {
-            vec2 half_way = st + 0.5 * float(direction) * flow_at(st) * uFlowTexel;
-            st += float(direction) * flow_at(half_way) * uFlowTexel;
+            vec2 half_way = st + 0.5 * float(direction) * flowAt(st) * uFlowTexel;
+            st += float(direction) * flowAt(half_way) * uFlowTexel;
             if (!inside(st)) break;
             sum += texture(uNoise, st).r;
             count += 1.0;

@@ -7,8 +7,8 @@
 #include "common/app/change_tracker.h"
 #include "common/gl/gl.h"
 #include "common/gl/gpu_mesh.h"
-#include "common/scene/mesh_data.h"
 #include "common/gl/texture.h"
+#include "common/scene/mesh_data.h"
 #include "terrain_source.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -20,7 +20,7 @@ namespace {
 
 class TerrainLab final : public gsv::Lab {
 public:
-    gsv::LabInfo info() const override { return {"lab04", "Bump-mapped terrain", {4, 1}, "the kit's baseline"}; }
+    gsv::LabInfo info() const override { return {"lab04", "Bump-mapped terrain"}; }
 
     void declare(gsv::Params& p) override {
         p.add_choice("terrain", "jacksboro", {"jacksboro", "topobathy", "franke", "sin_cos", "flat"},
@@ -36,7 +36,7 @@ public:
         p.add_effect("mipmaps", false, "mipmapped heights: zoomed out, far samples average instead of alias");
         p.add_int("mip_level", -1, -1, 10, "with mipmaps: -1 lets the hardware pick the level, k reads level k");
         p.add_bool("heights8", false, "heights rounded to 256 levels, as an 8-bit texture would store them");
-        p.add_choice("colouring", "levels", {"levels", "plain"}, "sea, green, brown and snow by height, or one colour")
+        p.add_choice("coloring", "levels", {"levels", "plain"}, "sea, green, brown and snow by height, or one colour")
             .at_compile_time();
         p.add_float("tree_line", 0.35, 0, 1, "where green turns brown, as a fraction of the land's height range");
         p.add_float("snow_line", 0.8, 0, 1, "where brown turns to snow");

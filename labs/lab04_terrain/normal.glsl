@@ -10,7 +10,7 @@ uniform float uDelta;        // finite-difference step in samples: the accuracy 
 uniform int uMipLevel;       // with mipmaps: -1 lets the hardware pick a level, k >= 0 reads level k
 
 // The height at fractional sample index (i, j), i east and j north, each sample at its texel centre.
-float height_at(vec2 sample_index) {
+float heightAt(vec2 sample_index) {
     vec2 st = (sample_index + 0.5) / vec2(textureSize(uHeights, 0));
 #ifdef EFFECT_MIPMAPS
     if (uMipLevel >= 0) return textureLod(uHeights, st, float(uMipLevel)).r;
@@ -19,7 +19,7 @@ float height_at(vec2 sample_index) {
 }
 
 // The slope (dh/dx east, dh/dy north), metres per metre, at texture coordinate st.
-vec2 terrain_slope(vec2 st) {
+vec2 terrainSlope(vec2 st) {
     vec2 size = vec2(textureSize(uHeights, 0));
     vec2 here = clamp(st * size - 0.5, vec2(0.0), size - 1.0);
     // TODO(L04-T1): differences uDelta samples each way, divided by the GROUND distance between the two
@@ -30,7 +30,7 @@ vec2 terrain_slope(vec2 st) {
 }
 
 // The upward unit normal of y = uExaggeration * h.
-vec3 terrain_normal(vec2 st) {
+vec3 terrainNormal(vec2 st) {
     // TODO(L04-T2): the tangents east (1, e dh/dx, 0) and north (0, e dh/dy, -1) (north is -z), and
     // their cross product, which points up. Its y is 1 before normalising, so its length is never 0.
     return vec3(0.0, 1.0, 0.0);

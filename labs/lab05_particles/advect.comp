@@ -3,7 +3,7 @@
 // texture).
 #include "particles.glsl"
 #include "integrate.glsl"
-#include "speed_colour.glsl"
+#include "speed_color.glsl"
 
 layout(local_size_x = LOCAL_SIZE) in;
 
@@ -22,7 +22,7 @@ void main() {
     // boundary is still inside) goes back to where it started, with the velocity it started with.
     positions[index].xyz = p;
     velocities[index].xyz = v;
-#ifdef EFFECT_COLOUR_BY_SPEED
-    colours[index] = vec4(speed_colour(length(v)), 1.0);
+#ifdef EFFECT_COLOR_BY_SPEED
+    colors[index] = vec4(speedColor(length(v)), 1.0);
 #endif
 }

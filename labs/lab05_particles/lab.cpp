@@ -6,15 +6,15 @@
 // are, and in float on every core to say whether the GPU is worth it.
 #include "common/app/app.h"
 #include "common/app/change_tracker.h"
-#include "common/gl/compute.h"
 #include "common/core/error.h"
+#include "common/gl/compute.h"
 #include "common/gl/gl.h"
-#include "support/particles/particle_grid.h"
-#include "support/particles/particle_motion.h"
 #include "common/gl/texture.h"
 #include "particle_buffers.h"
 #include "particle_measure.h"
 #include "particle_stepper.h"
+#include "support/particles/particle_grid.h"
+#include "support/particles/particle_motion.h"
 
 #include <algorithm>
 #include <cmath>
@@ -49,7 +49,7 @@ public:
         p.add_int("local_size", 128, 1, 1024, "invocations per work group").at_compile_time();
         p.add_int("seed", 1, 0, 1000000, "where the particles start");
         p.add_float("gravity", 2, 0, 20, "the fountain's downward acceleration (field=gravity)").with_step(0.5);
-        p.add_effect("colour_by_speed", true, "colour each particle by its speed; off, the shader writes no colours");
+        p.add_effect("color_by_speed", true, "colour each particle by its speed; off, the shader writes no colours");
         p.add_float("speed_scale", 1.5, 0.01, 100, "the speed drawn red").with_step(0.1);
         p.add_float("point_size", 1, 1, 16, "points' size in pixels").with_step(1);
         gsv::add_orbit_camera(p, 30, 20, 5.0f);

@@ -17,7 +17,7 @@ ParticleBuffers allocate_particle_buffers(std::size_t count, std::size_t capacit
     b.velocities = gsv::Buffer::create(GL_SHADER_STORAGE_BUFFER, vec4s, nullptr, GL_DYNAMIC_DRAW);
     b.origins = gsv::Buffer::create(GL_SHADER_STORAGE_BUFFER, capacity * sizeof(gsv::ParticleOrigin), nullptr,
                                     GL_STATIC_DRAW);
-    b.colours = gsv::Buffer::create(GL_SHADER_STORAGE_BUFFER, vec4s, nullptr, GL_DYNAMIC_DRAW);
+    b.colors = gsv::Buffer::create(GL_SHADER_STORAGE_BUFFER, vec4s, nullptr, GL_DYNAMIC_DRAW);
 
     GLuint vao = 0;
     glGenVertexArrays(1, &vao);
@@ -26,9 +26,9 @@ ParticleBuffers allocate_particle_buffers(std::size_t count, std::size_t capacit
     glBindBuffer(GL_ARRAY_BUFFER, b.positions.id());
     glEnableVertexAttribArray(gsv::kVertexSlot);
     glVertexAttribPointer(gsv::kVertexSlot, 4, GL_FLOAT, GL_FALSE, sizeof(glm::vec4), nullptr);
-    glBindBuffer(GL_ARRAY_BUFFER, b.colours.id());
-    glEnableVertexAttribArray(kColourSlot);
-    glVertexAttribPointer(kColourSlot, 4, GL_FLOAT, GL_FALSE, sizeof(glm::vec4), nullptr);
+    glBindBuffer(GL_ARRAY_BUFFER, b.colors.id());
+    glEnableVertexAttribArray(kColorSlot);
+    glVertexAttribPointer(kColorSlot, 4, GL_FLOAT, GL_FALSE, sizeof(glm::vec4), nullptr);
     glBindVertexArray(0);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     gsv::check_gl_error("allocating the particle buffers");
@@ -56,7 +56,7 @@ void bind_particle_buffers(const ParticleBuffers& buffers) {
     buffers.positions.bind_base(kPositions);
     buffers.velocities.bind_base(kVelocities);
     buffers.origins.bind_base(kOrigins);
-    buffers.colours.bind_base(kColours);
+    buffers.colors.bind_base(kColors);
 }
 
 void draw_particles(const ParticleBuffers& buffers) {

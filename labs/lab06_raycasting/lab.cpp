@@ -9,11 +9,11 @@
 #include "common/app/change_tracker.h"
 #include "common/core/error.h"
 #include "common/gl/gl.h"
-#include "support/network/network_file.h"
+#include "image_processors.h"
 #include "network.h"
 #include "ray_measure.h"
 #include "ray_traversal.h"
-#include "image_processors.h"
+#include "support/network/network_file.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -26,7 +26,7 @@ namespace {
 
 class RaycastLab final : public gsv::Lab {
 public:
-    gsv::LabInfo info() const override { return {"lab06", "Modular GPU volume raycasting", {4, 1}, "the kit's baseline"}; }
+    gsv::LabInfo info() const override { return {"lab06", "Modular GPU volume raycasting"}; }
 
     void declare(gsv::Params& p) override {
         p.add_file("network", "", "a network file, as typed or one in the lab folder (raycast.network, probe.network); "

@@ -1,9 +1,9 @@
 #include "lab_processor.h"
 
 #include "common/core/error.h"
-#include "support/volume/gradient.h"
 #include "common/core/number_text.h"
 #include "common/scene/transforms.h"
+#include "support/volume/gradient.h"
 
 #include <sstream>
 #include <vector>

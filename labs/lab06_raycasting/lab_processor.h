@@ -4,10 +4,10 @@
 #include "common/app/app.h"
 #include "common/gl/framebuffer.h"
 #include "common/gl/gpu_mesh.h"
+#include "common/gl/texture.h"
 #include "common/scene/mesh_data.h"
 #include "support/network/processor.h"
 #include "support/raycast/proxy_geometry.h"
-#include "common/gl/texture.h"
 #include "support/volume/volume.h"
 #include "support/volume/volume_box.h"
 

@@ -15,7 +15,7 @@ namespace lab06 {
 namespace {
 
 // A perceptually ordered ramp (dark blue, teal, green, yellow) for one scalar in [0, 1].
-std::array<std::uint8_t, 4> pseudo_colour(float x) {
+std::array<std::uint8_t, 4> pseudo_color(float x) {
     static const float ramp[5][3] = {{0.27f, 0.00f, 0.33f}, {0.23f, 0.32f, 0.55f}, {0.13f, 0.57f, 0.55f},
                                      {0.37f, 0.79f, 0.38f}, {0.99f, 0.91f, 0.15f}};
     const float t = std::clamp(x, 0.0f, 1.0f) * 4.0f;
@@ -30,7 +30,7 @@ std::array<std::uint8_t, 4> pseudo_colour(float x) {
 gsv::Image scalar_image(int width, int height, const std::vector<float>& values, float lo, float hi, const std::vector<bool>& shown) {
     gsv::Image image(width, height);
     for (std::size_t i = 0; i < values.size(); ++i) {
-        const auto c = shown[i] ? pseudo_colour(hi > lo ? (values[i] - lo) / (hi - lo) : 0.0f)
+        const auto c = shown[i] ? pseudo_color(hi > lo ? (values[i] - lo) / (hi - lo) : 0.0f)
                                 : std::array<std::uint8_t, 4>{0, 0, 0, 255};
         std::copy(c.begin(), c.end(), image.rgba.begin() + 4 * i);
     }
@@ -38,12 +38,12 @@ gsv::Image scalar_image(int width, int height, const std::vector<float>& values,
 }
 
 void write_image_port(const ImageData& target, const std::filesystem::path& file, std::vector<std::filesystem::path>& written) {
-    const gsv::ImageF colour = target.read_rgba32f();
-    gsv::write_png(file, gsv::to_rgba8(colour));
+    const gsv::ImageF color = target.read_rgba32f();
+    gsv::write_png(file, gsv::to_rgba8(color));
     written.push_back(file);
     const std::size_t n = static_cast<std::size_t>(target.width()) * target.height();
     std::vector<float> alpha(n);
-    for (std::size_t i = 0; i < n; ++i) alpha[i] = colour.rgba[4 * i + 3];
+    for (std::size_t i = 0; i < n; ++i) alpha[i] = color.rgba[4 * i + 3];
     std::filesystem::path stem = file;
     stem.replace_extension();
     const auto alpha_file = std::filesystem::path(stem.string() + ".alpha.png");

@@ -1,9 +1,9 @@
 #pragma once
 // Lab 06's network: the processors registered for network files, the default network built in code
 // (the same as raycast.network, or probe.network with the probe), and writing every port's image.
+#include "lab_processor.h"
 #include "support/network/processor_network.h"
 #include "support/network/processor_registry.h"
-#include "lab_processor.h"
 
 #include <filesystem>
 #include <vector>

@@ -1,9 +1,9 @@
 #include "ray_measure.h"
 
+#include "common/timing/timing.h"
+#include "support/geometry/ray_box.h"
 #include "support/volume/gradient.h"
 #include "support/volume/marschner_lobb.h"
-#include "support/geometry/ray_box.h"
-#include "common/timing/timing.h"
 
 #include <glm/gtc/matrix_inverse.hpp>
 

@@ -8,10 +8,10 @@
 #include "lab_processor.h"
 
 #include "common/gl/gpu_mesh.h"
+#include "common/gl/texture.h"
+#include "common/shader/shader_library.h"
 #include "support/raycast/raycast_components.h"
 #include "support/raycast/raycast_config.h"
-#include "common/shader/shader_library.h"
-#include "common/gl/texture.h"
 
 #include <string>
 

@@ -4,7 +4,7 @@
 #ifndef EVALUATION_CORNERS
 #define EVALUATION_CORNERS 1
 #endif
-#include "colour_map.glsl"
+#include "color_map.glsl"
 #include "element_edges.glsl"
 #include "spectral.glsl"
 
@@ -12,5 +12,5 @@ in vec2 vReference;
 out vec4 fColor;
 
 void main() {
-    fColor = vec4(with_element_edges(colour_map(element_value(current_element(), vReference)), vReference), 1.0);
+    fColor = vec4(withElementEdges(colorMap(elementValue(currentElement(), vReference)), vReference), 1.0);
 }

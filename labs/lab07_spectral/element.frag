@@ -1,5 +1,5 @@
 // Lab 07: every fragment evaluates its element's polynomial at its reference point and colour-maps it.
-#include "colour_map.glsl"
+#include "color_map.glsl"
 #include "element_edges.glsl"
 #include "spectral.glsl"
 
@@ -7,5 +7,5 @@ in vec2 vReference;
 out vec4 fColor;
 
 void main() {
-    fColor = vec4(with_element_edges(colour_map(element_value(current_element(), vReference)), vReference), 1.0);
+    fColor = vec4(withElementEdges(colorMap(elementValue(currentElement(), vReference)), vReference), 1.0);
 }

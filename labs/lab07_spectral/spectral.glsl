@@ -13,24 +13,24 @@ uniform float uWeights[kNodes];
 uniform samplerBuffer uValues;
 
 // l_i(x) for i = 0 .. DEGREE, the Lagrange basis on the nodes.
-void lagrange_basis(float x, out float l[kNodes]) {
+void lagrangeBasis(float x, out float l[kNodes]) {
     // TODO(L07-T1): the barycentric formula l_i(x) = (w_i / (x - x_i)) / sum_k (w_k / (x - x_k)). Where x
     // is exactly a node, l is 1 there and 0 elsewhere: return that before anything divides by x - x_i = 0.
     for (int i = 0; i < kNodes; ++i) l[i] = 0.0;
 }
 
-float node_value(int element, int i, int j) {
+float nodeValue(int element, int i, int j) {
     return texelFetch(uValues, (element * kNodes + j) * kNodes + i).r;
 }
 
 // The field at reference point r = (xi, eta) of the element.
-float element_value(int element, vec2 r) {
+float elementValue(int element, vec2 r) {
 #ifdef EVALUATION_CORNERS
     // TODO(L07-T4): what a quad drawn from its corners shows: the bilinear blend of the four corner values
     // (nodes (0, 0), (DEGREE, 0), (0, DEGREE), (DEGREE, DEGREE)), with (xi, eta) = (-1, -1) at the first.
     return 0.0;
 #else
-    // TODO(L07-T2): the tensor product: the sum over i and j of node_value(element, i, j) l_i(xi) l_j(eta).
+    // TODO(L07-T2): the tensor product: the sum over i and j of nodeValue(element, i, j) l_i(xi) l_j(eta).
     return 0.0;
 #endif
 }
@@ -38,4 +38,4 @@ float element_value(int element, vec2 r) {
 // Each element is drawn as the same number of triangles, in element order.
 uniform int uTrianglesPerElement;
 
-int current_element() { return gl_PrimitiveID / max(uTrianglesPerElement, 1); }
+int currentElement() { return gl_PrimitiveID / max(uTrianglesPerElement, 1); }

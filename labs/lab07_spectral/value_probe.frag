@@ -6,6 +6,6 @@ in vec2 vReference;
 out vec4 fColor;
 
 void main() {
-    int element = current_element();
-    fColor = vec4(element_value(element, vReference), vReference, float(element + 1));
+    int element = currentElement();
+    fColor = vec4(elementValue(element, vReference), vReference, float(element + 1));
 }

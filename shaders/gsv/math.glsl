@@ -3,18 +3,18 @@
 
 // normalize() of a zero vector is NaN, and NaN spreads through every later operation; below a
 // tiny length there is no direction to keep, so fall back to one the caller chooses.
-vec3 safe_normalize(vec3 v, vec3 fallback) {
+vec3 safeNormalize(vec3 v, vec3 fallback) {
     float length_squared = dot(v, v);
     return length_squared > 1e-20 ? v * inversesqrt(length_squared) : fallback;
 }
 
-vec2 safe_normalize(vec2 v, vec2 fallback) {
+vec2 safeNormalize(vec2 v, vec2 fallback) {
     float length_squared = dot(v, v);
     return length_squared > 1e-20 ? v * inversesqrt(length_squared) : fallback;
 }
 
 // The angle between two directions in radians, accurate for tiny angles where acos(dot) loses
 // every digit (acos is flat near 1: an angle of 1e-4 rad moves the dot product by 5e-9).
-float angle_between(vec3 a, vec3 b) {
+float angleBetween(vec3 a, vec3 b) {
     return atan(length(cross(a, b)), dot(a, b));
 }

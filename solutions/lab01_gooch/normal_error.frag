@@ -18,10 +18,10 @@ void main() {
     // The eye ray from the origin through this fragment, and its nearer hit with the true sphere.
     // The mesh lies inside its sphere, so every covered pixel's ray meets the sphere; max() guards
     // rounding at the silhouette.
-    vec3 d = safe_normalize(vEyePosition, vec3(0.0, 0.0, -1.0));
+    vec3 d = safeNormalize(vEyePosition, vec3(0.0, 0.0, -1.0));
     float b = dot(d, centre);
     float t = b - sqrt(max(b * b - dot(centre, centre) + radius * radius, 0.0));
-    vec3 exact = safe_normalize(t * d - centre, vec3(0.0, 0.0, 1.0));
-    vec3 used = safe_normalize(vEyeNormal, vec3(0.0, 0.0, 1.0));
-    fColor = vec4(degrees(angle_between(used, exact)), 0.0, 0.0, 1.0);
+    vec3 exact = safeNormalize(t * d - centre, vec3(0.0, 0.0, 1.0));
+    vec3 used = safeNormalize(vEyeNormal, vec3(0.0, 0.0, 1.0));
+    fColor = vec4(degrees(angleBetween(used, exact)), 0.0, 0.0, 1.0);
 }

@@ -18,10 +18,10 @@ void main() {
     if (vObjectPosition.x > uCut) discard;
 
     // TODO(L01-T5): the interpolated normal is shorter than 1 between vertices: renormalize it (and
-    // never divide by zero: see safe_normalize in shaders/gsv/math.glsl). Where the viewer sees a
+    // never divide by zero: see safeNormalize in shaders/gsv/math.glsl). Where the viewer sees a
     // back face (a cut-open model, the teapot from below) the normal points away: flip it.
 //@solution L01-T5
-    vec3 n = safe_normalize(vEyeNormal, vec3(0.0, 0.0, 1.0));
+    vec3 n = safeNormalize(vEyeNormal, vec3(0.0, 0.0, 1.0));
     if (!gl_FrontFacing) n = -n;
 //@starter
 //    vec3 n = vEyeNormal;
@@ -37,7 +37,7 @@ void main() {
     // TODO(L01-T6): silhouette edges, an optional extra: where the surface turns away from the eye
     // (|n.v| below uEdgeThreshold, v the unit vector to the eye) paint the fragment dark grey.
 //@solution L01-T6
-    vec3 v = safe_normalize(-vEyePosition, n);
+    vec3 v = safeNormalize(-vEyePosition, n);
     if (abs(dot(n, v)) < uEdgeThreshold) color = vec3(0.08);
 //@starter
 //    color = kNotDone;

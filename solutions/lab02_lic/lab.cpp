@@ -5,13 +5,13 @@
 // (white noise or a photograph, and the flow in texels per step) and draws one full-screen quad.
 #include "common/app/app.h"
 #include "common/app/change_tracker.h"
-#include "support/flow/flow_field.h"
 #include "common/gl/gl.h"
 #include "common/gl/gpu_mesh.h"
+#include "common/gl/texture.h"
 #include "common/image/image.h"
 #include "common/scene/mesh_data.h"
+#include "support/flow/flow_field.h"
 #include "support/flow/noise.h"
-#include "common/gl/texture.h"
 
 #include <algorithm>
 #include <vector>
@@ -20,7 +20,7 @@ namespace {
 
 class LicLab final : public gsv::Lab {
 public:
-    gsv::LabInfo info() const override { return {"lab02", "Line integral convolution", {4, 1}, "the kit's baseline"}; }
+    gsv::LabInfo info() const override { return {"lab02", "Line integral convolution"}; }
 
     void declare(gsv::Params& p) override {
         p.add_choice("field", "rotation", {"rotation", "saddle", "source", "double_gyre", "vortices", "swirl", "file"},

@@ -17,12 +17,12 @@ void main() {
     float count = 1.0;  // the pixel's own sample: never a division by zero
 
     // TODO(L02-T1): follow the streamline forward: uLength steps with advance(st, +1.0, texel),
-    // adding the input at each new point to sum and counting it, while streamline_continues(st).
+    // adding the input at each new point to sum and counting it, while streamlineContinues(st).
     vec2 st = vTexCoord;
 //@solution L02-T1
     for (int i = 0; i < uLength; ++i) {
         st = advance(st, +1.0, texel);
-        if (!streamline_continues(st)) break;
+        if (!streamlineContinues(st)) break;
         sum += texture(uInput, st).rgb;
         count += 1.0;
     }
@@ -36,7 +36,7 @@ void main() {
 //@solution L02-T2
     for (int i = 0; i < uLength; ++i) {
         st = advance(st, -1.0, texel);
-        if (!streamline_continues(st)) break;
+        if (!streamlineContinues(st)) break;
         sum += texture(uInput, st).rgb;
         count += 1.0;
     }

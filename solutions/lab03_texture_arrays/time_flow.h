@@ -2,8 +2,8 @@
 // Lab 03's support code, not part of the lesson: the time slices to upload, the GL limits each
 // storage runs into, and the sweep's measurements of what the GPU sampled.
 #include "common/app/app.h"
-#include "support/flow/flow_field.h"
 #include "common/gl/gpu_mesh.h"
+#include "support/flow/flow_field.h"
 
 #include <functional>
 #include <string>

@@ -1,8 +1,8 @@
 // Lab 04 fragment stage: lights the terrain with the normal its heights give (normal.glsl) and colours it
-// by height (colour.glsl). With GEOMETRY_BUMP the surface is one flat quad: only the normal is real.
+// by height (color.glsl). With GEOMETRY_BUMP the surface is one flat quad: only the normal is real.
 #include "gsv/not_done.glsl"
 #include "normal.glsl"
-#include "colour.glsl"
+#include "color.glsl"
 
 uniform vec3 uLightDirection;  // towards the light, world space
 
@@ -10,8 +10,8 @@ in vec2 vTexCoord;
 out vec4 fColor;
 
 void main() {
-    vec3 n = terrain_normal(vTexCoord);
+    vec3 n = terrainNormal(vTexCoord);
     float h = texture(uHeights, vTexCoord).r;
     float diffuse = max(dot(n, normalize(uLightDirection)), 0.0);
-    fColor = vec4(height_colour(h) * (0.22 + 0.78 * diffuse), 1.0);
+    fColor = vec4(heightColor(h) * (0.22 + 0.78 * diffuse), 1.0);
 }

@@ -14,7 +14,7 @@ void main() {
 #ifdef GEOMETRY_MESH
     // TODO(L04-T4): real geometry: each vertex at the height of the terrain under it.
 //@solution L04-T4
-    h = height_at(st * vec2(textureSize(uHeights, 0)) - 0.5);
+    h = heightAt(st * vec2(textureSize(uHeights, 0)) - 0.5);
 //@starter
 //@end
 #endif

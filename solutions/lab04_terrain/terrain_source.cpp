@@ -32,7 +32,7 @@ double height_at(const gsv::HeightField& f, double i, double j) {
     return bottom + fy * (top - bottom);
 }
 
-// normal.glsl's terrain_normal at sample (x, y) in double precision, for any step (the CPU's
+// normal.glsl's terrainNormal at sample (x, y) in double precision, for any step (the CPU's
 // finite_difference_normal takes whole samples only), in the lab's world (z south).
 glm::dvec3 shader_normal(const gsv::HeightField& f, int x, int y, double e, double delta) {
     const double lo_x = std::max(x - delta, 0.0), hi_x = std::min(x + delta, f.width - 1.0);

@@ -3,8 +3,8 @@
 // and the same buffers bound as vertex arrays to draw them: the positions never travel back to the CPU.
 #include "common/gl/buffer.h"
 #include "common/gl/gl_object.h"
-#include "support/particles/particle_motion.h"
 #include "common/shader/shader_program.h"
+#include "support/particles/particle_motion.h"
 
 #include <cstddef>
 #include <vector>
@@ -12,13 +12,13 @@
 namespace lab05 {
 
 // The binding points of particles.glsl's buffer blocks.
-enum Binding : GLuint { kPositions = 0, kVelocities = 1, kOrigins = 2, kColours = 3 };
+enum Binding : GLuint { kPositions = 0, kVelocities = 1, kOrigins = 2, kColors = 3 };
 // The colours' vertex attribute (particles.vert); positions use the kit's aVertex slot.
-inline constexpr GLuint kColourSlot = 3;
+inline constexpr GLuint kColorSlot = 3;
 
 struct ParticleBuffers {
-    gsv::Buffer positions, velocities, origins, colours;
-    gsv::VertexArrayName points;  // positions as aVertex, colours as aColour
+    gsv::Buffer positions, velocities, origins, colors;
+    gsv::VertexArrayName points;  // positions as aVertex, colours as aColor
     std::size_t count = 0;        // particles drawn and moved
     std::size_t capacity = 0;     // slots: the rest hold sentinels that nothing may touch
 };

@@ -2,9 +2,9 @@
 
 #include "common/gl/buffer.h"
 #include "common/gl/gl.h"
+#include "common/timing/timing.h"
 #include "support/particles/particle_cpu.h"
 #include "support/particles/particle_grid.h"
-#include "common/timing/timing.h"
 
 #include <algorithm>
 #include <cmath>
@@ -106,7 +106,7 @@ gsv::SweepMetrics measure(gsv::LabKit& kit, const Stepper& stepper, const gsv::P
     const double gpu_rate = static_cast<double>(count) / gpu_step_s;
     const double cpu_rate = static_cast<double>(count) / cpu_step_s;
     // Without colours the shader writes 16 bytes a particle fewer.
-    const double bytes = gsv::bytes_per_particle_step(spec) - (p.get_bool("colour_by_speed") ? 0.0 : 16.0);
+    const double bytes = gsv::bytes_per_particle_step(spec) - (p.get_bool("color_by_speed") ? 0.0 : 16.0);
 
     return {{"steps", static_cast<double>(steps)},
             {"gpu_ms_per_step", 1000.0 * gpu_step_s},

@@ -1,5 +1,5 @@
 // Lab 05: a particle's colour, as the compute stage left it.
-in vec3 vColour;
+in vec3 vColor;
 out vec4 fColor;
 
-void main() { fColor = vec4(vColour, 1.0); }
+void main() { fColor = vec4(vColor, 1.0); }

@@ -12,4 +12,4 @@ struct Origin {
 layout(std430, binding = 0) buffer Positions { vec4 positions[]; };
 layout(std430, binding = 1) buffer Velocities { vec4 velocities[]; };
 layout(std430, binding = 2) readonly buffer Origins { Origin origins[]; };
-layout(std430, binding = 3) writeonly buffer Colours { vec4 colours[]; };
+layout(std430, binding = 3) writeonly buffer Colors { vec4 colors[]; };

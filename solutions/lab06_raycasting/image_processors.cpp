@@ -8,7 +8,7 @@ namespace lab06 {
 GeometryRenderer::GeometryRenderer() : LabProcessor("GeometryRenderer") {
     add_input("geometry", gsv::PortType::Geometry);
     add_output("image", gsv::PortType::Image);
-    add_property("geometry_colour", "0.95,0.55,0.15");
+    add_property("geometry_color", "0.95,0.55,0.15");
 }
 
 void GeometryRenderer::process() {
@@ -27,7 +27,7 @@ void GeometryRenderer::process() {
     set_transforms(program, geometry->box.model_from_texture_matrix());
     // The normals are in model space, not in the texture space the positions are in.
     program.set("uNormalMatrix", glm::mat3(v.view));
-    program.set("uGeometryColour", vec3("geometry_colour"));
+    program.set("uGeometryColor", vec3("geometry_color"));
     geometry->draw();
     glDisable(GL_DEPTH_TEST);
     set_output("image", image_);

@@ -65,9 +65,9 @@ void main() {
                          vec3(texture(uVolume, p - vec3(h.x, 0.0, 0.0)).r,
                               texture(uVolume, p - vec3(0.0, h.y, 0.0)).r,
                               texture(uVolume, p - vec3(0.0, 0.0, h.z)).r)) / (2.0 * spacing);
-        vec3 n = -safe_normalize(gradient, vec3(0.0));
-        vec3 l = safe_normalize((uLightPosition - p) * toPhysical, vec3(0.0));
-        vec3 v = safe_normalize((uCameraPosition - p) * toPhysical, vec3(0.0));
+        vec3 n = -safeNormalize(gradient, vec3(0.0));
+        vec3 l = safeNormalize((uLightPosition - p) * toPhysical, vec3(0.0));
+        vec3 v = safeNormalize((uCameraPosition - p) * toPhysical, vec3(0.0));
         if (dot(n, v) < 0.0) n = -n;
         float diffuse = max(dot(n, l), 0.0);
         float rv = max(dot(reflect(-l, n), v), 0.0);

@@ -20,11 +20,11 @@ vec3 rcShadePhong(vec3 color, vec3 gradient, vec3 p) {
 //@solution L06-T2
     // The normal points down the gradient, out of the denser material. A constant region has no
     // gradient: a zero normal, so only ambient light, where normalize() would give NaN.
-    vec3 n = -safe_normalize(gradient, vec3(0.0));
+    vec3 n = -safeNormalize(gradient, vec3(0.0));
     // Directions in physical units, like the gradient: on an anisotropic grid, texture space bends angles.
     vec3 scale = rcPhysicalScale();
-    vec3 l = safe_normalize((uLightPosition - p) * scale, vec3(0.0));
-    vec3 v = safe_normalize((uCameraPosition - p) * scale, vec3(0.0));
+    vec3 l = safeNormalize((uLightPosition - p) * scale, vec3(0.0));
+    vec3 v = safeNormalize((uCameraPosition - p) * scale, vec3(0.0));
     // Inside a volume a boundary is seen from either side: light the side that faces the camera.
     if (dot(n, v) < 0.0) n = -n;
     float diffuse = max(dot(n, l), 0.0);

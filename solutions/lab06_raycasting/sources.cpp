@@ -55,7 +55,7 @@ void VolumeSource::process() {
     set_output("volume", data_);
 }
 
-ProxySource::ProxySource() : LabProcessor("ProxyGeometry") {
+ProxySource::ProxySource() : LabProcessor("ProxySource") {
     add_input("volume", gsv::PortType::Volume);
     add_output("geometry", gsv::PortType::Geometry);
     add_property("clip_normal", "0,0,0");
@@ -86,7 +86,7 @@ void ProxySource::process() {
     set_output("geometry", data_);
 }
 
-ProbeSource::ProbeSource() : LabProcessor("ProbeGeometry") {
+ProbeSource::ProbeSource() : LabProcessor("ProbeSource") {
     add_input("volume", gsv::PortType::Volume);
     add_output("geometry", gsv::PortType::Geometry);
     add_property("probe_position", "0.3,-0.2,0.4");

@@ -2,10 +2,10 @@
 // the element_edges effect is on.
 #pragma once
 
-vec3 with_element_edges(vec3 colour, vec2 reference) {
+vec3 withElementEdges(vec3 color, vec2 reference) {
 #ifdef EFFECT_ELEMENT_EDGES
     vec2 edge = (1.0 - abs(reference)) / max(fwidth(reference), vec2(1e-8));
-    colour *= mix(0.25, 1.0, clamp(min(edge.x, edge.y), 0.0, 1.0));
+    color *= mix(0.25, 1.0, clamp(min(edge.x, edge.y), 0.0, 1.0));
 #endif
-    return colour;
+    return color;
 }

@@ -42,7 +42,7 @@ gsv::SweepMetrics measure_elements(gsv::LabKit& kit, const ElementData& data, co
             worst_float = std::max(worst_float, std::abs(px[0] - in_double));
             ++count;
         }
-    const double drawn_ms = gsv::time_frames([&] { draw_with(*programs.colour); }, 1, 5).median_ms;
+    const double drawn_ms = gsv::time_frames([&] { draw_with(*programs.color); }, 1, 5).median_ms;
     const double corner_ms = gsv::time_frames([&] { draw_with(*programs.corners); }, 1, 5).median_ms;
     return {{"err_max", worst},
             {"err_rms", count ? std::sqrt(sum2 / count) : 0.0},

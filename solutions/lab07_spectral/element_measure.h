@@ -3,14 +3,14 @@
 // polynomial evaluated in double on the CPU, what it costs against drawing from the corners only, and the
 // memory the basis and the values take.
 #include "common/app/app.h"
-#include "common/shader/shader_library.h"
 #include "common/scene/transforms.h"
+#include "common/shader/shader_library.h"
 #include "element_data.h"
 
 namespace lab07 {
 
 struct MeasurePrograms {
-    const gsv::ShaderLibrary::Entry* colour = nullptr;   // what the lab draws
+    const gsv::ShaderLibrary::Entry* color = nullptr;   // what the lab draws
     const gsv::ShaderLibrary::Entry* corners = nullptr;  // the same from the corner values only
     const gsv::ShaderLibrary::Entry* probe = nullptr;    // value, xi, eta, element + 1
 };

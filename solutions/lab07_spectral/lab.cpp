@@ -19,7 +19,7 @@ namespace {
 
 class SpectralLab final : public gsv::Lab {
 public:
-    gsv::LabInfo info() const override { return {"lab07", "Rendering spectral elements", {4, 1}, "the kit's baseline"}; }
+    gsv::LabInfo info() const override { return {"lab07", "Rendering spectral elements"}; }
 
     void declare(gsv::Params& p) override {
         p.add_choice("mesh", "annulus", {"annulus", "grid"}, "curved elements around a ring, or square elements tiling [-1,1]^2");
@@ -46,7 +46,7 @@ public:
     }
 
     void setup(gsv::LabKit& kit) override {
-        programs_.colour = &kit.program("element", {"element.vert", "element.frag"});
+        programs_.color = &kit.program("element", {"element.vert", "element.frag"});
         programs_.corners = &kit.program("element_corners", {"element.vert", "corners_probe.frag"});
         programs_.probe = &kit.program("value_probe", {"element.vert", "value_probe.frag"});
     }
@@ -56,7 +56,7 @@ public:
         glDisable(GL_DEPTH_TEST);
         glClearColor(0.12f, 0.12f, 0.14f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT);
-        const gsv::ShaderProgram& program = kit.use(*programs_.colour);
+        const gsv::ShaderProgram& program = kit.use(*programs_.color);
         kit.set_transforms(program, transforms(kit.params(), frame));
         data_.bind(program);
         if (kit.params().get_bool("auto_range")) {

@@ -13,7 +13,7 @@ uniform float uWeights[kNodes];
 uniform samplerBuffer uValues;
 
 // l_i(x) for i = 0 .. DEGREE, the Lagrange basis on the nodes.
-void lagrange_basis(float x, out float l[kNodes]) {
+void lagrangeBasis(float x, out float l[kNodes]) {
     // TODO(L07-T1): the barycentric formula l_i(x) = (w_i / (x - x_i)) / sum_k (w_k / (x - x_k)). Where x
     // is exactly a node, l is 1 there and 0 elsewhere: return that before anything divides by x - x_i = 0.
 //@solution L07-T1
@@ -34,33 +34,33 @@ void lagrange_basis(float x, out float l[kNodes]) {
 //@end
 }
 
-float node_value(int element, int i, int j) {
+float nodeValue(int element, int i, int j) {
     return texelFetch(uValues, (element * kNodes + j) * kNodes + i).r;
 }
 
 // The field at reference point r = (xi, eta) of the element.
-float element_value(int element, vec2 r) {
+float elementValue(int element, vec2 r) {
 #ifdef EVALUATION_CORNERS
     // TODO(L07-T4): what a quad drawn from its corners shows: the bilinear blend of the four corner values
     // (nodes (0, 0), (DEGREE, 0), (0, DEGREE), (DEGREE, DEGREE)), with (xi, eta) = (-1, -1) at the first.
 //@solution L07-T4
     vec2 t = 0.5 * (r + 1.0);
-    float bottom = mix(node_value(element, 0, 0), node_value(element, DEGREE, 0), t.x);
-    float top = mix(node_value(element, 0, DEGREE), node_value(element, DEGREE, DEGREE), t.x);
+    float bottom = mix(nodeValue(element, 0, 0), nodeValue(element, DEGREE, 0), t.x);
+    float top = mix(nodeValue(element, 0, DEGREE), nodeValue(element, DEGREE, DEGREE), t.x);
     return mix(bottom, top, t.y);
 //@starter
 //    return 0.0;
 //@end
 #else
-    // TODO(L07-T2): the tensor product: the sum over i and j of node_value(element, i, j) l_i(xi) l_j(eta).
+    // TODO(L07-T2): the tensor product: the sum over i and j of nodeValue(element, i, j) l_i(xi) l_j(eta).
 //@solution L07-T2
     float lx[kNodes], ly[kNodes];
-    lagrange_basis(r.x, lx);
-    lagrange_basis(r.y, ly);
+    lagrangeBasis(r.x, lx);
+    lagrangeBasis(r.y, ly);
     float sum = 0.0;
     for (int j = 0; j < kNodes; ++j) {
         float row = 0.0;
-        for (int i = 0; i < kNodes; ++i) row += node_value(element, i, j) * lx[i];
+        for (int i = 0; i < kNodes; ++i) row += nodeValue(element, i, j) * lx[i];
         sum += row * ly[j];
     }
     return sum;
@@ -73,4 +73,4 @@ float element_value(int element, vec2 r) {
 // Each element is drawn as the same number of triangles, in element order.
 uniform int uTrianglesPerElement;
 
-int current_element() { return gl_PrimitiveID / max(uTrianglesPerElement, 1); }
+int currentElement() { return gl_PrimitiveID / max(uTrianglesPerElement, 1); }

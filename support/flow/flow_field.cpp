@@ -1,8 +1,9 @@
 #include "support/flow/flow_field.h"
 
+#include "common/core/enum_names.h"
 #include "common/core/error.h"
-#include "support/flow/flow_sampling.h"
 #include "common/core/splitmix64.h"
+#include "support/flow/flow_sampling.h"
 
 #include <glm/gtc/constants.hpp>
 
@@ -22,11 +23,7 @@ namespace {
 
 constexpr double kPi = glm::pi<double>();
 
-struct NamedKind {
-    FlowKind kind;
-    const char* name;
-};
-constexpr NamedKind kKinds[] = {{FlowKind::Rotation, "rotation"},
+constexpr EnumName<FlowKind> kKinds[] = {{FlowKind::Rotation, "rotation"},
                                 {FlowKind::Saddle, "saddle"},
                                 {FlowKind::Source, "source"},
                                 {FlowKind::DoubleGyre, "double_gyre"},
@@ -68,20 +65,9 @@ float FlowField::max_speed() const {
     return static_cast<float>(largest);
 }
 
-FlowKind flow_kind_from_name(const std::string& name) {
-    std::string valid;
-    for (const NamedKind& entry : kKinds) {
-        if (name == entry.name) return entry.kind;
-        valid += (valid.empty() ? "" : ", ") + std::string(entry.name);
-    }
-    throw Error("unknown flow '" + name + "' (valid: " + valid + ")");
-}
+FlowKind flow_kind_from_name(const std::string& name) { return parse_enum(kKinds, "flow", name); }
 
-const char* flow_kind_name(FlowKind kind) {
-    for (const NamedKind& entry : kKinds)
-        if (entry.kind == kind) return entry.name;
-    return "unknown";
-}
+const char* flow_kind_name(FlowKind kind) { return name_of(kKinds, kind); }
 
 FlowField make_flow(FlowKind kind, int width, int height, double max_texels_per_step, double time,
                     std::uint64_t seed) {

@@ -1,8 +1,8 @@
 // Reading the .flow file format of support/flow/flow_field.h: load_flow and load_flow_sequence.
 #include "support/flow/flow_field.h"
 
-#include "common/io/data_file.h"
 #include "common/core/error.h"
+#include "common/io/data_file.h"
 #include "support/flow/flow_format.h"
 
 #include <algorithm>

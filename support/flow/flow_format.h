@@ -1,8 +1,8 @@
 #pragma once
 // Internal to flow_file.cpp (reading) and flow_file_save.cpp (writing): the byte-level pieces of the .flow
 // format (described in flow_field.h) that both sides must agree on.
-#include "support/flow/flow_field.h"
 #include "common/io/little_endian.h"
+#include "support/flow/flow_field.h"
 
 #include <cmath>
 #include <cstddef>

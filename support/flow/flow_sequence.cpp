@@ -4,6 +4,7 @@
 
 #include "support/flow/flow_sampling.h"
 
+#include "common/core/enum_names.h"
 #include "common/core/error.h"
 
 #include <algorithm>
@@ -28,9 +29,9 @@ FlowSequence make_double_gyre_sequence(int width, int height, int frames, double
 }
 
 UnsteadyKind unsteady_kind_from_name(const std::string& name) {
-    if (name == "double_gyre") return UnsteadyKind::DoubleGyre;
-    if (name == "vortex_street") return UnsteadyKind::VortexStreet;
-    throw Error("unknown time-varying flow '" + name + "' (known: double_gyre, vortex_street)");
+    static constexpr EnumName<UnsteadyKind> kNames[] = {{UnsteadyKind::DoubleGyre, "double_gyre"},
+                                                        {UnsteadyKind::VortexStreet, "vortex_street"}};
+    return parse_enum(kNames, "time-varying flow", name);
 }
 
 namespace {

@@ -1,6 +1,6 @@
 #pragma once
 // Which stored time slices make up the flow at a playhead, in double precision: the CPU reference of
-// lab 03's slice_coordinate / nearest_slice / next_slice (solutions/lab03_texture_arrays/flow_time.glsl).
+// lab 03's sliceCoordinate / nearestSlice / nextSlice (solutions/lab03_texture_arrays/flow_time.glsl).
 // T slices cover one period; slice k was sampled at time k * period / T.
 namespace gsv {
 

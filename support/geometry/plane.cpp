@@ -1,6 +1,7 @@
 #include "support/geometry/plane.h"
 
 #include "common/core/error.h"
+#include "common/core/number_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,16 +10,9 @@
 namespace gsv {
 namespace {
 
-// %g rather than std::to_string, whose fixed six decimals would print a normal of 1e-9 as 0.
-std::string number(double value) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%g", value);
-    return buffer;
-}
-
 std::string text(const Plane& plane) {
-    return "normal (" + number(plane.normal.x) + ", " + number(plane.normal.y) + ", " + number(plane.normal.z) +
-           ") and offset " + number(plane.offset);
+    return "normal (" + format_number(plane.normal.x) + ", " + format_number(plane.normal.y) + ", " + format_number(plane.normal.z) +
+           ") and offset " + format_number(plane.offset);
 }
 
 }  // namespace

@@ -1,9 +1,10 @@
 // Particle scenes, fields and integrators, one step at a time, in float and in double.
 #include "support/particles/particle_motion.h"
 
+#include "common/core/enum_names.h"
 #include "common/core/error.h"
-#include "support/particles/particle_grid.h"
 #include "common/core/splitmix64.h"
+#include "support/particles/particle_grid.h"
 
 #include <cmath>
 #include <cstddef>
@@ -32,36 +33,22 @@ double uniform(std::uint64_t seed, std::uint64_t index, double lo, double hi) {
 
 }  // namespace
 
-ParticleScene particle_scene_from_name(const std::string& name) {
-    for (ParticleScene scene : kParticleScenes)
-        if (name == particle_scene_name(scene)) return scene;
-    throw Error("unknown particle scene '" + name + "' (known: gravity, rotation, saddle, abc)");
-}
+namespace {
 
-const char* particle_scene_name(ParticleScene scene) {
-    switch (scene) {
-        case ParticleScene::Gravity: return "gravity";
-        case ParticleScene::Rotation: return "rotation";
-        case ParticleScene::Saddle: return "saddle";
-        case ParticleScene::Abc: return "abc";
-    }
-    return "unknown";
-}
+constexpr EnumName<ParticleScene> kSceneNames[] = {{ParticleScene::Gravity, "gravity"},
+                                                   {ParticleScene::Rotation, "rotation"},
+                                                   {ParticleScene::Saddle, "saddle"},
+                                                   {ParticleScene::Abc, "abc"}};
+constexpr EnumName<Integrator> kIntegratorNames[] = {{Integrator::Euler, "euler"},
+                                                     {Integrator::Midpoint, "midpoint"},
+                                                     {Integrator::Rk4, "rk4"}};
 
-Integrator integrator_from_name(const std::string& name) {
-    for (Integrator integrator : kIntegrators)
-        if (name == integrator_name(integrator)) return integrator;
-    throw Error("unknown integrator '" + name + "' (known: euler, midpoint, rk4)");
-}
+}  // namespace
 
-const char* integrator_name(Integrator integrator) {
-    switch (integrator) {
-        case Integrator::Euler: return "euler";
-        case Integrator::Midpoint: return "midpoint";
-        case Integrator::Rk4: return "rk4";
-    }
-    return "unknown";
-}
+ParticleScene particle_scene_from_name(const std::string& name) { return parse_enum(kSceneNames, "particle scene", name); }
+const char* particle_scene_name(ParticleScene scene) { return name_of(kSceneNames, scene); }
+Integrator integrator_from_name(const std::string& name) { return parse_enum(kIntegratorNames, "integrator", name); }
+const char* integrator_name(Integrator integrator) { return name_of(kIntegratorNames, integrator); }
 
 template <class T>
 glm::tvec3<T> field_velocity(ParticleScene scene, glm::tvec3<T> p) {

@@ -25,8 +25,8 @@
 //   one): clip planes can remove everything, and a cap is empty whenever the near plane misses the proxy.
 // Equivalent: add the near plane, its offset lowered by kNearCapOffset, as one more clip plane, and draw
 // that one closed mesh for both images (it rebuilds the proxy whenever the camera moves).
-#include "support/geometry/convex_polyhedron.h"
 #include "common/scene/mesh_data.h"
+#include "support/geometry/convex_polyhedron.h"
 #include "support/geometry/plane.h"
 #include "support/geometry/ray_box.h"
 

@@ -1,5 +1,6 @@
 #include "support/spectral/lagrange.h"
 
+#include "common/core/enum_names.h"
 #include "common/core/error.h"
 
 #include <algorithm>
@@ -42,13 +43,12 @@ std::vector<double> gll_nodes(int p) {
 
 }  // namespace
 
-const char* name_of(NodeSet set) { return set == NodeSet::GaussLobattoLegendre ? "gll" : "equispaced"; }
+namespace {
+constexpr EnumName<NodeSet> kNodeSetNames[] = {{NodeSet::GaussLobattoLegendre, "gll"}, {NodeSet::Equispaced, "equispaced"}};
+}  // namespace
 
-NodeSet parse_node_set(const std::string& name) {
-    if (name == "gll") return NodeSet::GaussLobattoLegendre;
-    if (name == "equispaced") return NodeSet::Equispaced;
-    throw Error("unknown node set '" + name + "' (known: gll, equispaced)");
-}
+const char* name_of(NodeSet set) { return name_of(kNodeSetNames, set); }
+NodeSet parse_node_set(const std::string& name) { return parse_enum(kNodeSetNames, "node set", name); }
 
 std::vector<double> lagrange_nodes(NodeSet set, int degree) {
     check_degree(degree);

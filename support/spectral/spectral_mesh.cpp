@@ -1,5 +1,6 @@
 #include "support/spectral/spectral_mesh.h"
 
+#include "common/core/enum_names.h"
 #include "common/core/error.h"
 
 #include <cmath>
@@ -36,20 +37,13 @@ void validate(const ElementMesh& mesh) {
                     " need 0 <= inner < outer");
 }
 
-const char* name_of(SpectralField field) {
-    switch (field) {
-    case SpectralField::Waves: return "waves";
-    case SpectralField::Runge: return "runge";
-    case SpectralField::Polynomial: return "polynomial";
-    }
-    return "?";
-}
+namespace {
+constexpr EnumName<SpectralField> kFieldNames[] = {
+    {SpectralField::Waves, "waves"}, {SpectralField::Runge, "runge"}, {SpectralField::Polynomial, "polynomial"}};
+}  // namespace
 
-SpectralField parse_spectral_field(const std::string& name) {
-    for (SpectralField f : {SpectralField::Waves, SpectralField::Runge, SpectralField::Polynomial})
-        if (name == name_of(f)) return f;
-    throw Error("unknown field '" + name + "' (known: waves, runge, polynomial)");
-}
+const char* name_of(SpectralField field) { return name_of(kFieldNames, field); }
+SpectralField parse_spectral_field(const std::string& name) { return parse_enum(kFieldNames, "field", name); }
 
 double spectral_field(SpectralField field, glm::dvec2 p, double time) {
     switch (field) {

@@ -3,8 +3,8 @@
 // from the reference square [-1,1]^2 (coordinates xi, eta) into the plane; its data are the field's values
 // at the (p + 1)^2 tensor-product nodes (support/spectral/lagrange.h). No GL here: the lab uploads the values and
 // draws element_patches().
-#include "support/spectral/lagrange.h"
 #include "common/scene/mesh_data.h"
+#include "support/spectral/lagrange.h"
 
 #include <glm/glm.hpp>
 

@@ -1,10 +1,10 @@
 // Reading the .height file format of support/terrain/height_field.h: load_height_field.
 #include "support/terrain/height_field.h"
 
-#include "common/io/data_file.h"
 #include "common/core/error.h"
-#include "support/terrain/height_format.h"
+#include "common/io/data_file.h"
 #include "common/io/little_endian.h"
+#include "support/terrain/height_format.h"
 
 #include <algorithm>
 #include <cstddef>

@@ -2,8 +2,8 @@
 #include "support/terrain/height_field.h"
 
 #include "common/core/error.h"
-#include "support/terrain/height_format.h"
 #include "common/io/little_endian.h"
+#include "support/terrain/height_format.h"
 
 #include <algorithm>
 #include <cstddef>

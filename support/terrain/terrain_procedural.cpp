@@ -1,6 +1,7 @@
 // Procedural terrains with exact gradients: Franke's function, the sin-cos egg-crate and flat ground.
 #include "support/terrain/terrain_procedural.h"
 
+#include "common/core/enum_names.h"
 #include "common/core/error.h"
 #include "support/terrain/terrain_normal.h"
 
@@ -84,20 +85,13 @@ glm::dvec2 sin_cos_gradient(double u, double v) {
     return {w * std::cos(w * u) * std::cos(w * v), -w * std::sin(w * u) * std::sin(w * v)};
 }
 
-TerrainKind terrain_kind_from_name(const std::string& name) {
-    for (TerrainKind kind : {TerrainKind::Flat, TerrainKind::Franke, TerrainKind::SinCos})
-        if (name == terrain_kind_name(kind)) return kind;
-    throw Error("unknown terrain '" + name + "' (known: flat, franke, sin_cos)");
-}
+namespace {
+constexpr EnumName<TerrainKind> kTerrainNames[] = {
+    {TerrainKind::Flat, "flat"}, {TerrainKind::Franke, "franke"}, {TerrainKind::SinCos, "sin_cos"}};
+}  // namespace
 
-const char* terrain_kind_name(TerrainKind kind) {
-    switch (kind) {
-        case TerrainKind::Flat: return "flat";
-        case TerrainKind::Franke: return "franke";
-        case TerrainKind::SinCos: return "sin_cos";
-    }
-    return "unknown";
-}
+TerrainKind terrain_kind_from_name(const std::string& name) { return parse_enum(kTerrainNames, "terrain", name); }
+const char* terrain_kind_name(TerrainKind kind) { return name_of(kTerrainNames, kind); }
 
 double terrain_height(const ProceduralTerrain& terrain, glm::dvec2 ground_m) {
     check_terrain(terrain, ground_m);

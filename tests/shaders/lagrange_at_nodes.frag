@@ -13,5 +13,5 @@ void main() {
         xi = uintBitsToFloat(floatBitsToUint(xi) + 1u);
         eta = 0.3;
     }
-    fColor = vec4(element_value(0, vec2(xi, eta)), xi, eta, 1.0);
+    fColor = vec4(elementValue(0, vec2(xi, eta)), xi, eta, 1.0);
 }

@@ -4,7 +4,7 @@
 
 uniform float uSpeedScale;  // the speed drawn red
 
-vec3 speed_colour(float speed) {
+vec3 speedColor(float speed) {
     // TODO(L05-T6): map speed / uSpeedScale, clamped to [0, 1], onto the five colours below, mixing
     // linearly between neighbours (0 is the first colour, 1 the last). A particle at rest is blue, not NaN.
     const vec3 ramp[5] = vec3[5](vec3(0.10, 0.20, 0.90), vec3(0.00, 0.75, 0.90), vec3(0.20, 0.85, 0.25),

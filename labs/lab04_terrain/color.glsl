@@ -13,8 +13,8 @@ const vec3 kBrown = vec3(0.52, 0.39, 0.25);
 const vec3 kSnow = vec3(0.95, 0.95, 0.97);
 const vec3 kPlain = vec3(0.75, 0.72, 0.68);
 
-vec3 height_colour(float h) {
-#ifdef COLOURING_PLAIN
+vec3 heightColor(float h) {
+#ifdef COLORING_PLAIN
     return kPlain;
 #else
     if (h < 0.0) return kSea;
@@ -22,11 +22,6 @@ vec3 height_colour(float h) {
     float f = (h - land) / max(uHeightRange.y - land, 1e-6);
     // TODO(L04-T3): green below the tree line, brown above it, snow above the snow line; blend each
     // border with smoothstep over +-uBlend, so the colours change smoothly instead of in hard contours.
-//@solution L04-T3
-    vec3 colour = mix(kGreen, kBrown, smoothstep(uTreeLine - uBlend, uTreeLine + uBlend, f));
-    return mix(colour, kSnow, smoothstep(uSnowLine - uBlend, uSnowLine + uBlend, f));
-//@starter
-//    return kNotDone;
-//@end
+    return kNotDone;
 #endif
 }

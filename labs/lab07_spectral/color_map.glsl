@@ -6,18 +6,10 @@
 uniform float uRangeMin;
 uniform float uRangeMax;
 
-vec3 colour_map(float value) {
+vec3 colorMap(float value) {
     // TODO(L07-T3): t = (value - uRangeMin) / (uRangeMax - uRangeMin); below 0 or above 1 (outside the
     // range) draw the end colour darkened to half, so a narrowed range shows where it is exceeded; between,
     // blend blue (0) -> white (0.5) -> red (1). An empty range (max <= min) must not divide by zero: draw grey.
     const vec3 low = vec3(0.23, 0.30, 0.75), middle = vec3(0.87, 0.87, 0.87), high = vec3(0.71, 0.02, 0.15);
-//@solution L07-T3
-    if (!(uRangeMax > uRangeMin)) return vec3(0.5);
-    float t = (value - uRangeMin) / (uRangeMax - uRangeMin);
-    if (t < 0.0) return 0.5 * low;
-    if (t > 1.0) return 0.5 * high;
-    return t < 0.5 ? mix(low, middle, 2.0 * t) : mix(middle, high, 2.0 * t - 1.0);
-//@starter
-//    return kNotDone;
-//@end
+    return kNotDone;
 }
