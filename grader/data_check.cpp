@@ -1,17 +1,11 @@
 #include "grader/data_check.h"
 
 #include "common/core/error.h"
+#include "common/core/find_named.h"
 #include "grader/array_golden.h"
-
 
 namespace gsv {
 namespace {
-
-const DataArray* find_array(const std::vector<DataArray>& arrays, const std::string& name) {
-    for (const auto& a : arrays)
-        if (a.name == name) return &a;
-    return nullptr;
-}
 
 void reference_failed(CaseResult& r, const std::string& why) {
     r.status = CaseStatus::ReferenceFailed;
@@ -33,7 +27,7 @@ DataCheck compare_data(const std::vector<DataArray>& student, const std::vector<
     data.done = true;
     data.reference = reference;
     data.tolerance = tolerance;
-    for (const auto& e : expected) data.arrays.push_back(compare_array(find_array(student, e.name), e, tolerance));
+    for (const auto& e : expected) data.arrays.push_back(compare_array(find_named(student, e.name), e, tolerance));
     return data;
 }
 
@@ -61,7 +55,7 @@ void check_case_data(const LabCases& lab, const GradeCase& c, const LabRun& stud
     std::vector<ExpectedArray> expected;
     if (c.arrays) {
         for (const auto& name : *c.arrays) {
-            const DataArray* a = find_array(reference.arrays, name);
+            const DataArray* a = find_named(reference.arrays, name);
             if (!a) return reference_failed(r, "the reference solution handed in no '" + name + "' array, which the case checks");
             expected.push_back(expected_from(*a));
         }

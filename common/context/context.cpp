@@ -1,5 +1,6 @@
 #include "common/context/context.h"
 
+#include "common/core/enum_names.h"
 #include "common/core/error.h"
 #include "common/gl/gl.h"
 
@@ -46,27 +47,19 @@ std::vector<Backend> compiled_backends() {
     return backends;
 }
 
-const char* backend_name(Backend backend) {
-    switch (backend) {
-    case Backend::Window: return "window";
-    case Backend::Egl: return "egl";
-    case Backend::OSMesa: return "osmesa";
-    }
-    return "?";
-}
+namespace {
+// "glfw" is an alias of "window": read, never printed.
+constexpr EnumName<Backend> kBackendNames[] = {
+    {Backend::Window, "window"}, {Backend::Egl, "egl"}, {Backend::OSMesa, "osmesa"}, {Backend::Window, "glfw"}};
+constexpr EnumName<Profile> kProfileNames[] = {
+    {Profile::Core, "core"}, {Profile::Compat, "compat"}, {Profile::Compat, "compatibility"}};
+}  // namespace
 
-Backend parse_backend(const std::string& text) {
-    if (text == "window" || text == "glfw") return Backend::Window;
-    if (text == "egl") return Backend::Egl;
-    if (text == "osmesa") return Backend::OSMesa;
-    throw Error("unknown backend '" + text + "' (expected window, egl or osmesa)");
-}
+const char* backend_name(Backend backend) { return name_of(kBackendNames, backend); }
 
-Profile parse_profile(const std::string& text) {
-    if (text == "core") return Profile::Core;
-    if (text == "compat" || text == "compatibility") return Profile::Compat;
-    throw Error("unknown profile '" + text + "' (expected core or compat)");
-}
+Backend parse_backend(const std::string& text) { return parse_enum(kBackendNames, "backend", text); }
+
+Profile parse_profile(const std::string& text) { return parse_enum(kProfileNames, "profile", text); }
 
 GlVersion parse_gl_version(const std::string& text) {
     std::smatch m;

@@ -1,14 +1,48 @@
 #include "common/io/data_file.h"
 
 #include "common/core/error.h"
+#include "common/io/little_endian.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <system_error>
 
 namespace gsv::data_file {
 
 void fail(const Format& format, const std::filesystem::path& path, const std::string& what) {
     throw Error(std::string(format.kind) + " file '" + path.string() + "': " + what);
+}
+
+void read_floats(const Format& format, const std::filesystem::path& path, std::ifstream& in, std::size_t count,
+                 std::vector<float>& out, std::uint64_t& found, const std::function<void(std::uint64_t)>& short_read,
+                 const std::function<void(std::size_t, float)>& non_finite) {
+    constexpr std::size_t kChunkBytes = std::size_t(1) << 20;
+    std::vector<unsigned char> chunk(std::min<std::size_t>(kChunkBytes, count * sizeof(float)));
+    for (std::size_t done = 0; done < count;) {
+        const std::size_t n = std::min(count - done, chunk.size() / sizeof(float));
+        in.read(reinterpret_cast<char*>(chunk.data()), static_cast<std::streamsize>(n * sizeof(float)));
+        found += static_cast<std::uint64_t>(in.gcount());
+        if (in.bad()) fail(format, path, "read error");
+        if (static_cast<std::size_t>(in.gcount()) < n * sizeof(float)) {
+            short_read(found);
+            fail(format, path, "ends early");  // short_read throws; this is never reached
+        }
+        for (std::size_t i = 0; i < n; ++i) {
+            const float value = float_from_le_bytes(chunk.data() + 4 * i);
+            if (!std::isfinite(value)) non_finite(done + i, value);
+            out.push_back(value);
+        }
+        done += n;
+    }
+}
+
+void refuse_trailing_bytes(const Format& format, const std::filesystem::path& path, std::ifstream& in,
+                           std::uint64_t expected, const std::string& what) {
+    in.ignore(std::numeric_limits<std::streamsize>::max());
+    if (in.gcount() > 0)
+        fail(format, path, std::to_string(in.gcount()) + " trailing bytes after the " + std::to_string(expected) +
+                               " bytes of " + what);
 }
 
 std::string printable(const std::string& text) {

@@ -3,8 +3,10 @@
 // "<MAGIC> <version> <fields...>\n" before little-endian float32 values, read and checked the same way,
 // with one-line errors that name the file.
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -30,6 +32,18 @@ std::string printable(const std::string& text);
 // gives an empty field, which the caller's parse then refuses).
 std::vector<std::string> open_with_header(const Format& format, const std::filesystem::path& path, std::ifstream& in,
                                           std::string* line = nullptr);
+
+// Reads `count` little-endian float32 values from `in` into `out` (appended), chunk by chunk, so a header that
+// promises a gigabyte costs memory only for the bytes really there. `found` counts the data bytes read so far,
+// across calls. On a short read it calls short_read(found), for a NaN or Inf non_finite(index in this call, value);
+// both must throw (a one-line gsv::Error naming the file). A read error fails here.
+void read_floats(const Format& format, const std::filesystem::path& path, std::ifstream& in, std::size_t count,
+                 std::vector<float>& out, std::uint64_t& found, const std::function<void(std::uint64_t)>& short_read,
+                 const std::function<void(std::size_t, float)>& non_finite);
+
+// Refuses anything after the data: "<n> trailing bytes after the <expected> bytes of <what>".
+void refuse_trailing_bytes(const Format& format, const std::filesystem::path& path, std::ifstream& in,
+                           std::uint64_t expected, const std::string& what);
 
 // A count written as plain decimal digits in 1..max: a sign, a blank or an overflow is out of range
 // rather than read as something.

@@ -1,5 +1,6 @@
 #include "common/shader/shader_source.h"
 
+#include "common/core/enum_names.h"
 #include "common/core/error.h"
 #include "common/core/not_done.h"
 
@@ -428,29 +429,26 @@ std::string translate_compile_log(const std::string& log, const ShaderSource& so
     return translated;
 }
 
-const char* stage_name(ShaderStage stage) {
-    switch (stage) {
-    case ShaderStage::Vertex: return "vertex";
-    case ShaderStage::TessControl: return "tess_control";
-    case ShaderStage::TessEval: return "tess_eval";
-    case ShaderStage::Geometry: return "geometry";
-    case ShaderStage::Fragment: return "fragment";
-    case ShaderStage::Compute: return "compute";
-    }
-    return "unknown";
-}
+namespace {
+constexpr EnumName<ShaderStage> kStageNames[] = {
+    {ShaderStage::Vertex, "vertex"},     {ShaderStage::TessControl, "tess_control"}, {ShaderStage::TessEval, "tess_eval"},
+    {ShaderStage::Geometry, "geometry"}, {ShaderStage::Fragment, "fragment"},        {ShaderStage::Compute, "compute"}};
+constexpr EnumName<ShaderStage> kStageExtensions[] = {
+    {ShaderStage::Vertex, ".vert"},   {ShaderStage::Fragment, ".frag"},    {ShaderStage::Geometry, ".geom"},
+    {ShaderStage::Compute, ".comp"}, {ShaderStage::TessControl, ".tesc"}, {ShaderStage::TessEval, ".tese"}};
+}  // namespace
+
+const char* stage_name(ShaderStage stage) { return name_of(kStageNames, stage); }
 
 ShaderStage stage_from_extension(const fs::path& file) {
     std::string ext = file.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    if (ext == ".vert") return ShaderStage::Vertex;
-    if (ext == ".frag") return ShaderStage::Fragment;
-    if (ext == ".geom") return ShaderStage::Geometry;
-    if (ext == ".comp") return ShaderStage::Compute;
-    if (ext == ".tesc") return ShaderStage::TessControl;
-    if (ext == ".tese") return ShaderStage::TessEval;
-    throw Error(file.string() + ": cannot tell the shader stage from '" + file.extension().string() +
-                "' (use .vert, .frag, .geom, .comp, .tesc or .tese)");
+    try {
+        return parse_enum(kStageExtensions, "shader extension", ext);
+    } catch (const Error&) {
+        throw Error(file.string() + ": cannot tell the shader stage from '" + file.extension().string() +
+                    "' (use .vert, .frag, .geom, .comp, .tesc or .tese)");
+    }
 }
 
 }  // namespace gsv

@@ -70,36 +70,21 @@ Header read_header(const std::filesystem::path& path, std::ifstream& in) {
 std::vector<FlowField> read_frames(const std::filesystem::path& path, std::ifstream& in, const Header& header) {
     const std::size_t values = 2 * static_cast<std::size_t>(header.width) * static_cast<std::size_t>(header.height);
     const std::uint64_t expected = velocity_bytes(header.frames, header.width, header.height);
-    std::vector<unsigned char> chunk(std::min<std::size_t>(kChunkBytes, values * sizeof(float)));
     std::uint64_t found = 0;
     std::vector<FlowField> frames;
     for (int f = 0; f < header.frames; ++f) {
         FlowField field;
         field.width = header.width;
         field.height = header.height;
-        for (std::size_t done = 0; done < values;) {
-            const std::size_t count = std::min(values - done, chunk.size() / sizeof(float));
-            in.read(reinterpret_cast<char*>(chunk.data()), static_cast<std::streamsize>(count * sizeof(float)));
-            found += static_cast<std::uint64_t>(in.gcount());
-            if (in.bad()) fail(path, "read error");
-            if (static_cast<std::size_t>(in.gcount()) < count * sizeof(float))
-                fail_short(path, header, expected, found);
-            field.velocity.resize(done + count);
-            for (std::size_t i = 0; i < count; ++i) {
-                const float value = float_from_le_bytes(chunk.data() + 4 * i);
-                if (!std::isfinite(value))
-                    fail(path, value_name(done + i, header.width, of_frame(f, header.frames)) + " is " +
-                                   non_finite_kind(value));
-                field.velocity[done + i] = value;
-            }
-            done += count;
-        }
+        data_file::read_floats(
+            kFormat, path, in, values, field.velocity, found,
+            [&](std::uint64_t read) { fail_short(path, header, expected, read); },
+            [&](std::size_t i, float value) {
+                fail(path, value_name(i, header.width, of_frame(f, header.frames)) + " is " + non_finite_kind(value));
+            });
         frames.push_back(std::move(field));
     }
-    in.ignore(std::numeric_limits<std::streamsize>::max());
-    if (in.gcount() > 0)
-        fail(path, std::to_string(in.gcount()) + " trailing bytes after the " + std::to_string(expected) +
-                       " bytes of velocities");
+    data_file::refuse_trailing_bytes(kFormat, path, in, expected, "velocities");
     return frames;
 }
 

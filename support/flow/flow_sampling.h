@@ -57,10 +57,13 @@ inline double scale_for(double largest, double max_texels_per_step) {
 
 // frames sampled by sample_frame(k) (a DoubleField), all scaled by the one factor that makes the largest
 // speed over the whole sequence max_texels_per_step. Each frame is sampled twice, once to find that
-// speed and once to scale it, so no more than one frame is ever held in double.
+// speed and once to scale it, so no more than one frame is ever held in double. The grid and frame count are
+// checked first (check_grid, check_frames), naming `who`.
 template <typename SampleFrame>
-FlowSequence scaled_together(int width, int height, int frames, double max_texels_per_step,
+FlowSequence scaled_together(const char* who, int width, int height, int frames, double max_texels_per_step,
                              SampleFrame sample_frame) {
+    check_grid(who, width, height, max_texels_per_step);
+    check_frames(who, width, height, frames);
     double largest = 0.0;
     for (int k = 0; k < frames; ++k) largest = std::max(largest, sample_frame(k).largest_speed());
     const double scale = scale_for(largest, max_texels_per_step);

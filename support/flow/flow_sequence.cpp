@@ -19,11 +19,8 @@ float FlowSequence::max_speed() const {
 }
 
 FlowSequence make_double_gyre_sequence(int width, int height, int frames, double max_texels_per_step) {
-    constexpr const char* who = "make_double_gyre_sequence";
-    flow_detail::check_grid(who, width, height, max_texels_per_step);
-    flow_detail::check_frames(who, width, height, frames);
     // The double gyre's period is 10 (omega = 2 pi / 10): frames spread over one period loop seamlessly.
-    return flow_detail::scaled_together(width, height, frames, max_texels_per_step, [&](int k) {
+    return flow_detail::scaled_together("make_double_gyre_sequence", width, height, frames, max_texels_per_step, [&](int k) {
         return flow_detail::sample_double_gyre(width, height, 10.0 * k / frames);
     });
 }

@@ -81,10 +81,7 @@ glm::dvec2 vortex_street_velocity(glm::dvec2 p, double phase) {
 }
 
 FlowSequence make_vortex_street(int width, int height, int frames, double max_texels_per_step) {
-    constexpr const char* who = "make_vortex_street";
-    flow_detail::check_grid(who, width, height, max_texels_per_step);
-    flow_detail::check_frames(who, width, height, frames);
-    return flow_detail::scaled_together(width, height, frames, max_texels_per_step, [&](int k) {
+    return flow_detail::scaled_together("make_vortex_street", width, height, frames, max_texels_per_step, [&](int k) {
         const double phase = static_cast<double>(k) / frames;
         return flow_detail::sample_wide(width, height, [&](glm::dvec2 p) { return vortex_street_velocity(p, phase); });
     });

@@ -1,28 +1,18 @@
 #include "support/network/processor.h"
 
+#include "common/core/enum_names.h"
 #include "common/core/error.h"
+#include "common/core/find_named.h"
 
 #include <algorithm>
 #include <cctype>
 
 namespace gsv {
-namespace {
-
-const Port* find_port(const std::vector<Port>& ports, const std::string& name) {
-    for (const Port& p : ports)
-        if (p.name == name) return &p;
-    return nullptr;
-}
-
-}  // namespace
 
 const char* port_type_name(PortType type) {
-    switch (type) {
-    case PortType::Volume: return "volume";
-    case PortType::Image: return "image";
-    case PortType::Geometry: return "geometry";
-    }
-    return "?";
+    static constexpr EnumName<PortType> kNames[] = {
+        {PortType::Volume, "volume"}, {PortType::Image, "image"}, {PortType::Geometry, "geometry"}};
+    return name_of(kNames, type);
 }
 
 const char* run_state_name(RunState state) {
@@ -71,8 +61,8 @@ std::string Processor::qualified(const std::string& member) const {
     return (name_.empty() ? type_name_ : name_) + "." + member;
 }
 
-const Port* Processor::find_input(const std::string& port) const { return find_port(inputs_, port); }
-const Port* Processor::find_output(const std::string& port) const { return find_port(outputs_, port); }
+const Port* Processor::find_input(const std::string& port) const { return find_named(inputs_, port); }
+const Port* Processor::find_output(const std::string& port) const { return find_named(outputs_, port); }
 
 void Processor::add_input(const std::string& name, PortType type) {
     if (!is_network_name(name))

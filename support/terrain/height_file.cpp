@@ -50,30 +50,15 @@ HeightField read_header(const std::filesystem::path& path, std::ifstream& in) {
 void read_heights(const std::filesystem::path& path, std::ifstream& in, HeightField& field) {
     const std::size_t count = static_cast<std::size_t>(field.width) * static_cast<std::size_t>(field.height);
     const std::uint64_t expected = height_bytes(field.width, field.height);
-    std::vector<unsigned char> chunk(std::min<std::size_t>(kChunkBytes, count * sizeof(float)));
     std::uint64_t found = 0;
-    for (std::size_t done = 0; done < count;) {
-        const std::size_t n = std::min(count - done, chunk.size() / sizeof(float));
-        in.read(reinterpret_cast<char*>(chunk.data()), static_cast<std::streamsize>(n * sizeof(float)));
-        found += static_cast<std::uint64_t>(in.gcount());
-        if (in.bad()) fail(path, "read error");
-        if (static_cast<std::size_t>(in.gcount()) < n * sizeof(float))
-            fail(path, "expected " + std::to_string(expected) + " bytes of heights, found " + std::to_string(found) +
-                           " (" + std::to_string(field.width) + "x" + std::to_string(field.height) +
-                           " samples, 4 bytes each)");
-        field.heights.resize(done + n);
-        for (std::size_t i = 0; i < n; ++i) {
-            const float value = float_from_le_bytes(chunk.data() + 4 * i);
-            if (!std::isfinite(value))
-                fail(path, "height at " + sample_name(done + i, field.width) + " is " + non_finite_kind(value));
-            field.heights[done + i] = value;
-        }
-        done += n;
-    }
-    in.ignore(std::numeric_limits<std::streamsize>::max());
-    if (in.gcount() > 0)
-        fail(path, std::to_string(in.gcount()) + " trailing bytes after the " + std::to_string(expected) +
-                       " bytes of heights");
+    data_file::read_floats(
+        kFormat, path, in, count, field.heights, found,
+        [&](std::uint64_t read) {
+            fail(path, "expected " + std::to_string(expected) + " bytes of heights, found " + std::to_string(read) + " (" +
+                           std::to_string(field.width) + "x" + std::to_string(field.height) + " samples, 4 bytes each)");
+        },
+        [&](std::size_t i, float value) { fail(path, "height at " + sample_name(i, field.width) + " is " + non_finite_kind(value)); });
+    data_file::refuse_trailing_bytes(kFormat, path, in, expected, "heights");
 }
 
 }  // namespace
