@@ -3,6 +3,7 @@
 #include "common/core/error.h"
 #include "common/io/json.h"
 #include "grader/process.h"
+#include "grader/sandbox.h"
 
 #include <algorithm>
 #include <atomic>
@@ -33,13 +34,17 @@ std::vector<BatchEntry> grade_batch(const BatchOptions& options, void (*progress
             BatchEntry& entry = entries[i];
             entry.name = folders[i].filename().string();
             const fs::path out = fs::absolute(options.out_dir) / entry.name;
+            // The seed goes through the environment, not the command line that /proc shows every process; each
+            // submission runs as a uid of its own, so one cannot read or signal another's files or processes.
             std::vector<std::string> argv{options.grader.string(), "--submission", fs::absolute(folders[i]).string(),
-                                          "--out", out.string(), "--seed", std::to_string(options.seed), "--quiet"};
+                                          "--out", out.string(), "--quiet",
+                                          "--sandbox-uid", std::to_string(kSandboxUidBase + 1 + i)};
             argv.insert(argv.end(), options.pass_through.begin(), options.pass_through.end());
             ProcessLimits limits;
             limits.timeout = std::chrono::hours(1);
             limits.max_output_bytes = 16 * 1024;
-            const ProcessResult run = run_process(argv, fs::current_path(), limits);
+            const ProcessResult run =
+                run_process(argv, fs::current_path(), limits, {std::string(kSeedVariable) + "=" + std::to_string(options.seed)});
             entry.seconds = run.seconds;
             try {
                 if (run.exit_code == 2 || run.signal != 0 || run.timed_out)

@@ -8,6 +8,10 @@
 
 namespace gsv {
 
+// How a batch hands each submission's gsv-grade its seed: an environment variable (not a GSV_ one, which student
+// processes inherit), never the command line.
+inline constexpr const char* kSeedVariable = "GSVGRADE_SEED";
+
 struct BatchOptions {
     std::filesystem::path grader;       // the gsv-grade executable
     std::filesystem::path submissions;  // one folder per student

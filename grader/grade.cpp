@@ -55,7 +55,7 @@ public:
 
 private:
     void load_labs();
-    void set_up_sandbox(const fs::path& student_bin, const fs::path& student_root);
+    void set_up_sandbox(const fs::path& student_bin, const fs::path& student_root, const fs::path& build_dir);
     void grade_lab(const LabCases& lab, bool live, const LabBuild* build);
     void grade_case(const LabCases& lab, const GradeCase& c, bool live, const LabBuild* build);
     void update_golden(const LabCases& lab, const GradeCase& c);
@@ -74,7 +74,8 @@ private:
     GradeReport report_;
     std::vector<LabCases> labs_;
     std::vector<bool> live_;
-    SandboxPolicy policy_;
+    SandboxPolicy policy_;        // running a student's lab
+    SandboxPolicy build_policy_;  // building a submission's labs
     SandboxSupport support_;
     LabRunner student_, reference_;
     std::map<std::string, std::map<std::string, Image>> goldens_;  // lab -> case -> image
@@ -135,30 +136,41 @@ void Grading::load_labs() {
         for (const auto& c : labs_[i].cases) total_ += 1 + (live_[i] && options_.timing && c.timing.points > 0 ? 1 : 0);
 }
 
-void Grading::set_up_sandbox(const fs::path& student_bin, const fs::path& student_root) {
-    // What student code must not read: the reference, the goldens, hidden cases, other results.
-    const KitLayout kit{kit_};
-    policy_.hidden = {kit.solutions(), kit.golden_dir(), kit.hidden_dir(), kit.tests()};
-    // A submission's binaries are built elsewhere: the kit's bin/ can go whole.
-    if (student_bin != bin_) policy_.hidden.push_back(bin_);
-    for (const auto& lab : labs_) {
-        fs::create_directories(out_ / lab.lab);
-        policy_.hidden.push_back(out_ / lab.lab);
-        if (student_bin == bin_ && fs::exists(bin_ / (lab.lab + "_solution"))) policy_.hidden.push_back(bin_ / (lab.lab + "_solution"));
-    }
+void Grading::set_up_sandbox(const fs::path& student_bin, const fs::path& student_root, const fs::path& build_dir) {
+    // An allow-list: what a student's process may read. A lab run: its own binary, its own labs/ (and a test kit's
+    // solutions/, where the tests grade edited references as students), the kit's public shaders/ and data/.
+    const KitLayout kit{kit_}, student{student_root};
+    for (const auto& lab : labs_) policy_.read_only.push_back(student_bin / lab.lab);
+    policy_.read_only.insert(policy_.read_only.end(), {student.labs(), student.shaders(), student.data(), kit.shaders(), kit.data()});
+    if (!options_.student_bin_dir.empty()) policy_.read_only.push_back(student.solutions());
+    // A build: the framework's headers and sources, its CMake files and the libraries it links, and the build's
+    // own folder (read-write); nothing of solutions/, tests/, grader/ but the submission project, or build/ but those.
+    const fs::path kit_build = bin_.parent_path();
+    build_policy_.read_only = {kit_ / "common", kit_ / "support", kit_ / "third_party", kit_ / "cmake",
+                               kit.submission_project(), kit.shaders(), kit.data(),
+                               kit_build / "gsv-targets.cmake", kit_build / "gsv-build-settings.cmake",
+                               kit_build / "common", kit_build / "support", kit_build / "third_party"};
+    if (!build_dir.empty()) build_policy_.read_write = {build_dir};
+    const uid_t uid = options_.sandbox_uid ? options_.sandbox_uid : kSandboxUidBase;
+    policy_.uid = build_policy_.uid = uid;
 #if defined(__SANITIZE_ADDRESS__)
-    policy_.address_space_bytes = 0;  // the labs of a sanitizer build reserve terabytes of shadow memory
+    // The labs of a sanitizer build reserve terabytes of shadow memory.
+    policy_.address_space_bytes = build_policy_.address_space_bytes = 0;
 #endif
+    build_policy_.address_space_bytes = 0;  // compilers and linkers: their time limit is the guard
+    build_policy_.file_size_bytes = 512ull << 20;
     if (!options_.sandbox) {
         report_.sandbox = "off (--no-sandbox): student code runs with the grader's rights";
         return;
     }
-    // A submission's binaries do not exist yet: its build folder is handed to the sandbox user anyway.
-    std::vector<fs::path> must_reach{kit_ / "cmake", kit_ / "shaders", bin_.parent_path()};
-    if (fs::exists(student_bin)) must_reach.push_back(student_bin);
-    if (fs::exists(student_root)) must_reach.push_back(student_root);
-    support_ = probe_sandbox(must_reach, policy_.hidden);
-    report_.sandbox = support_.describe();
+    support_ = probe_sandbox(policy_);
+    report_.sandbox = support_.describe(policy_);
+    const bool secrets = !options_.update_goldens && (std::find(live_.begin(), live_.end(), true) != live_.end());
+    if (!support_.allow_list() && secrets && !options_.allow_readable_kit)
+        throw Error("the sandbox cannot hide the kit here (" + support_.refused +
+                    "): live references and hidden cases are refused; grade with --self-check, or pass "
+                    "--allow-readable-kit to grade with the kit readable by student code");
+    if (!support_.allow_list()) report_.sandbox += options_.allow_readable_kit && secrets ? " (--allow-readable-kit)" : "";
 }
 
 GradeReport Grading::run() {
@@ -176,11 +188,12 @@ GradeReport Grading::run() {
         const fs::path work = out_ / "submission-build";
         student_root = work / "kit";
         student_bin = work / "build" / "bin";
-        set_up_sandbox(student_bin, student_root);
+        set_up_sandbox(student_bin, student_root, work);
         std::vector<std::string> lab_ids;
         for (const auto& lab : labs_) lab_ids.push_back(lab.lab);
         if (progress_) progress_({0, total_, nullptr, "building the submission's labs"});
         ProcessLimits build_limits = limits(labs_.empty() ? LabCases{} : labs_.front(), true);
+        if (build_limits.sandbox) build_limits.sandbox = &build_policy_;
         build_limits.timeout = std::chrono::minutes(5);
         build_limits.max_output_bytes = 256 * 1024;
         const SubmissionBuild built =
@@ -191,7 +204,7 @@ GradeReport Grading::run() {
             student_bin = fs::absolute(options_.student_bin_dir);
             student_root = fs::absolute(options_.student_root);
         }
-        set_up_sandbox(student_bin, student_root);
+        set_up_sandbox(student_bin, student_root, {});
     }
     // The kit's own labs find their files as they would when a student runs them (GSV_ROOT included).
     const bool own_labs = options_.submission.empty() && options_.student_bin_dir.empty();
@@ -431,10 +444,20 @@ CaseResult Grading::check_timing(const LabCases& lab, const GradeCase& c, const 
                 return;
             }
             const LabRun b = reference_.render(lab.lab + "_solution", lab, c, true, limits(lab, false));
-            if (b.status == CaseStatus::Passed) {
-                s.push_back(a.median_ms);
-                ref.push_back(b.median_ms);
+            if (b.status != CaseStatus::Passed) continue;
+            // What was timed must be what is graded: the last timed frame (each starts from a cleared target)
+            // against the reference's, so frames that skip their work cannot pass for fast ones.
+            if (a.image && b.image) {
+                const ImageDiff diff = compare_images(*a.image, *b.image, lab.live_tolerance);
+                if (!diff.within(lab.live_tolerance)) {
+                    failure = a;
+                    failure->status = CaseStatus::WrongImage;
+                    failure->detail = "the timed frames drew another image than the reference's: " + diff.summary();
+                    return;
+                }
             }
+            s.push_back(a.median_ms);
+            ref.push_back(b.median_ms);
         }
     };
     const double band = c.timing.max_ratio;

@@ -21,6 +21,9 @@ struct ProcessResult {
     std::size_t output_bytes = 0;  // all it printed, kept or not
     std::string sandbox_error;     // the sandbox could not be entered; the program did not run
     double seconds = 0;
+    // With ProcessLimits::frame_marks: when each byte the program wrote to its frame-marks pipe arrived, in seconds
+    // since it started, by the grader's clock.
+    std::vector<double> marks;
 };
 
 struct ProcessLimits {
@@ -30,6 +33,8 @@ struct ProcessLimits {
     // Student code: set both. The environment is then cleaned to what GL needs (see process.cpp).
     const SandboxPolicy* sandbox = nullptr;
     const SandboxSupport* support = nullptr;
+    // Hand the program a pipe for frame marks (common/timing/frame_marks.h): fd 3, named in $GSV_FRAME_MARKS_FD.
+    bool frame_marks = false;
 };
 
 // `environment` adds or overrides NAME=VALUE entries.

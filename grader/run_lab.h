@@ -19,7 +19,7 @@ struct LabRun {
     CaseStatus status = CaseStatus::Error;  // Passed: it ran, and image is set
     std::string detail;
     std::optional<Image> image;
-    double median_ms = 0;  // from the lab's report, when frames were timed
+    double median_ms = 0;  // by the grader's clock: the median time between the lab's frame marks
     std::vector<DataArray> arrays;  // read only for a lab that checks arrays, and not for timed runs
 };
 
@@ -33,6 +33,10 @@ struct LabRunner {
     LabRun render(const std::string& binary, const LabCases& lab, const GradeCase& c, bool timed,
                   const ProcessLimits& limits) const;
 };
+
+// The median of the times between consecutive frame marks (seconds, by the grader's clock), in ms. Throws
+// gsv::Error unless there is one mark before the timed frames and one after each of `frames`.
+double median_frame_ms(const std::vector<double>& marks, int frames);
 
 // Tells the failure classes apart from how the process ended and the exit status the lab framework
 // gives each (common/app/app.h); Passed when it exited 0.

@@ -1,44 +1,79 @@
 #pragma once
-// The walls around a student's process (Linux). Each is used where the platform allows it, and the
-// report says which were up:
-//  - mount and network namespaces: reference solutions, golden images, hidden case data and the other
-//    results are covered by empty mounts, and there is no network;
-//  - not root: a grader running as root runs student code as nobody;
-//  - rlimits on address space, CPU time, file size and process count.
-// The wall-clock timeout, the output cap and the fresh working directory are in process.h.
+// The walls around a student's process (Linux), built as an allow-list: the process sees a file system made for
+// it, not the grader's with parts covered.
+//  - a new root on a tmpfs holding the system read-only (/usr, /etc, /sys, the /lib links), a minimal /dev, a /proc
+//    of its own, private size-limited /tmp, /var/tmp and /dev/shm, and at their own paths only what the policy
+//    allows: its working folder (read-write) and, read-only, what it must read (its binary, its own lab's files,
+//    the kit's public shaders/ and data/, or for a build the framework's headers and libraries). Nothing else of the
+//    kit, nothing of other submissions or earlier results;
+//  - PID, network and IPC namespaces: no other process is visible, every process the student started ends with its
+//    case (setsid daemons included: the namespace's first process is a small init of the grader's that leaves when
+//    the student's process ends), and there is no network;
+//  - an identity of its own: a grader running as root runs it as the policy's uid (one per submission in a batch),
+//    otherwise a user namespace maps the grader's own uid;
+//  - rlimits on address space, CPU time, file size, open files and processes.
+// The wall-clock timeout, the output cap and the fresh working folder are in process.h.
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <sys/types.h>
 #include <vector>
 
 namespace gsv {
 
+// The uid student code runs as under a root grader; a batch gives each submission its own (base + index).
+inline constexpr uid_t kSandboxUidBase = 1500000;
+
 struct SandboxPolicy {
     bool enabled = true;
-    std::vector<std::filesystem::path> hidden;      // folders get an empty read-only tmpfs, files /dev/null
-    std::uint64_t address_space_bytes = 4ull << 30; // 0: no limit (sanitizer builds reserve terabytes)
+    // Bound at their own paths; a path that does not exist is left out.
+    std::vector<std::filesystem::path> read_only;
+    std::vector<std::filesystem::path> read_write;   // besides the process's working folder, which always is
+    uid_t uid = kSandboxUidBase;                     // root only: the identity inside
+    std::uint64_t tmp_bytes = 64ull << 20;           // each of /tmp, /var/tmp, /dev/shm
+    std::uint64_t address_space_bytes = 4ull << 30;  // 0: no limit (sanitizer builds reserve terabytes)
     std::uint64_t file_size_bytes = 64ull << 20;
-    double cpu_seconds = 0;                         // 0: the wall-clock timeout times the cores, plus 5 s
-    long extra_processes = 256;                     // over what the user runs already: stops fork bombs
+    double cpu_seconds = 0;                          // 0: the wall-clock timeout times the cores, plus 5 s
+    long processes = 256;                            // tasks of the sandbox's uid: stops fork bombs
 };
 
-// Which walls this machine allows; found once by trying them in a throw-away child.
+// Which walls this machine allows; found once by putting them up in a throw-away child.
 struct SandboxSupport {
     enum class Namespaces { None, AsRoot, AsUser } namespaces = Namespaces::None;
-    bool drops_root = false;       // root: student code runs as nobody
-    std::string describe() const;  // one line for the reports
+    std::string refused;  // why not, where namespaces are None
+    bool allow_list() const { return namespaces != Namespaces::None; }
+    std::string describe(const SandboxPolicy& policy) const;  // one line for the reports
 };
 
-// `must_reach`: what the student process must still read after dropping root (its binary, the kit);
-// `hidden`: what the namespaces must be able to cover.
-SandboxSupport probe_sandbox(const std::vector<std::filesystem::path>& must_reach,
-                             const std::vector<std::filesystem::path>& hidden);
+// Puts the walls up with `policy` in a throw-away child and checks that every path it allows can be read inside.
+SandboxSupport probe_sandbox(const SandboxPolicy& policy);
 
-// Makes `path` (recursively) the student's, where student code runs as nobody: its working folder.
-void hand_over(const std::filesystem::path& path, const SandboxSupport& support);
+// Makes `path` (recursively) the sandbox identity's where student code runs as another uid: its working folder.
+void hand_over(const std::filesystem::path& path, const SandboxPolicy& policy, const SandboxSupport& support);
 
-// In the forked child, before exec: enters the walls `support` allows. Returns false with a reason
-// when a wall that the probe found working could not be put up.
-bool enter_sandbox(const SandboxPolicy& policy, const SandboxSupport& support, double timeout_s, std::string& why);
+// Everything the child needs, worked out before fork (the child then makes system calls only).
+struct SandboxPlan {
+    struct Bind {
+        std::string path;  // on the host and inside
+        bool read_only = true;
+        bool exists = true;  // on the host, when planned
+    };
+    SandboxSupport::Namespaces namespaces = SandboxSupport::Namespaces::None;
+    bool as_root = false;
+    uid_t uid = 0, host_uid = 0;
+    gid_t host_gid = 0;
+    std::vector<Bind> binds;
+    std::vector<std::string> devices;  // /dev entries bound from the host
+    std::string working_dir, tmp_options;
+    std::uint64_t address_space_bytes = 0, file_size_bytes = 0, processes = 0, cpu_seconds = 0;
+};
+SandboxPlan plan_sandbox(const SandboxPolicy& policy, const SandboxSupport& support,
+                         const std::filesystem::path& working_dir, double timeout_s);
+
+// In the forked child, before exec, with its output already redirected. Puts up the walls and returns true in the
+// process that is to exec: inside the new namespaces, in `working_dir`, as the sandbox's identity. The process
+// that called it does not return: it waits for the namespace to end and exits as the student's process did.
+// Returns false with a reason (in that process) when a wall could not be put up.
+bool enter_sandbox(const SandboxPlan& plan, std::string& why);
 
 }  // namespace gsv

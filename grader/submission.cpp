@@ -12,22 +12,32 @@ namespace fs = std::filesystem;
 namespace gsv {
 namespace {
 
-// Plain files and folders only: a link could point at the reference solution.
-int copy_plain_tree(const fs::path& from, const fs::path& to) {
-    int skipped = 0;
+// Plain content only, copied (never linked): a symlink or a hard link could lead to the reference solution, a
+// device or FIFO could block the grader, a huge file fill its disk. Returns a line for each thing refused.
+std::vector<std::string> copy_plain_tree(const fs::path& from, const fs::path& to) {
+    std::vector<std::string> refused;
     fs::create_directories(to);
     for (auto it = fs::recursive_directory_iterator(from); it != fs::recursive_directory_iterator(); ++it) {
-        const fs::path target = to / fs::relative(it->path(), from);
-        if (it->is_symlink()) {
-            ++skipped;
-            if (it->is_directory()) it.disable_recursion_pending();
-        } else if (it->is_directory()) {
+        const fs::path relative = it->path().lexically_relative(from);  // fs::relative would follow a link
+        const fs::path target = to / relative;
+        const fs::file_status status = it->symlink_status();
+        const std::string name = "labs/" + relative.generic_string();
+        if (fs::is_symlink(status)) {
+            refused.push_back(name + ": a symbolic link");
+        } else if (fs::is_directory(status)) {
             fs::create_directories(target);
-        } else if (it->is_regular_file()) {
+        } else if (!fs::is_regular_file(status)) {
+            refused.push_back(name + ": not a plain file (a device, FIFO or socket)");
+        } else if (fs::hard_link_count(it->path()) > 1) {
+            refused.push_back(name + ": a hard link (" + std::to_string(fs::hard_link_count(it->path())) + " names)");
+        } else if (fs::file_size(it->path()) > kMaxSubmissionFileBytes) {
+            refused.push_back(name + ": " + std::to_string(fs::file_size(it->path())) + " bytes, over the " +
+                              std::to_string(kMaxSubmissionFileBytes >> 20) + " MiB a file may have");
+        } else {
             fs::copy_file(it->path(), target, fs::copy_options::overwrite_existing);
         }
     }
-    return skipped;
+    return refused;
 }
 
 std::string cmake_generator(const fs::path& kit_build) {
@@ -51,12 +61,12 @@ SubmissionBuild build_submission(const fs::path& submission, const fs::path& kit
     result.root = work_dir / "kit";
     result.bin_dir = work_dir / "build" / "bin";
     fs::remove_all(work_dir);
-    const int skipped = copy_plain_tree(labs_dir, KitLayout{result.root}.labs());
+    const std::vector<std::string> refused = copy_plain_tree(labs_dir, KitLayout{result.root}.labs());
     const KitLayout kit{fs::absolute(kit_root)}, copy{result.root};
     fs::create_directory_symlink(kit.shaders(), copy.shaders());
     fs::create_directory_symlink(kit.data(), copy.data());
     fs::create_directories(work_dir / "build");
-    if (limits.support) hand_over(work_dir, *limits.support);
+    if (limits.support && limits.sandbox) hand_over(work_dir, *limits.sandbox, *limits.support);
 
     std::vector<std::string> configure{GSV_CMAKE_COMMAND, "-S", kit.submission_project().string(),
                                        "-B", (work_dir / "build").string(), "-DGSV_KIT_BUILD=" + fs::absolute(kit_build).string(),
@@ -81,7 +91,7 @@ SubmissionBuild build_submission(const fs::path& submission, const fs::path& kit
             if (!build.ok && made.output.find("unknown target") != std::string::npos)
                 build.log = "the submission has no sources for " + lab + " (labs/<lab folder>/*.cpp)\n" + made.output;
         }
-        if (skipped > 0) build.log += "\n(" + std::to_string(skipped) + " links in the submission's labs/ were not copied)";
+        for (const auto& line : refused) build.log += "\nnot taken from the submission: " + line;
         result.builds.push_back(std::move(build));
     }
     return result;

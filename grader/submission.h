@@ -1,15 +1,20 @@
 #pragma once
-// A submission is a copy of the kit whose labs/ hold a student's work. Only labs/ is taken from it, and
-// only its plain files (no links out of it); the framework, shared shaders and data are the kit's. Each
+// A submission is a copy of the kit whose labs/ hold a student's work. Only labs/ is taken from it, and only its
+// plain content, copied: symbolic and hard links, devices, FIFOs and files over kMaxSubmissionFileBytes are refused
+// and named in the build log. The framework, shared shaders and data are the kit's. Each
 // lab is built as its own target, so one lab's compile error leaves the others gradable.
 #include "grader/grade_result.h"
 #include "grader/process.h"
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
 
 namespace gsv {
+
+// A submission's file may have at most this many bytes; a larger one is refused, named in the build log.
+inline constexpr std::uintmax_t kMaxSubmissionFileBytes = 8ull << 20;
 
 struct SubmissionBuild {
     std::filesystem::path root;     // GSV_ROOT for the student's binaries: labs/ copied, shaders/ and data/ the kit's

@@ -62,20 +62,22 @@ TEST_CASE("process: exit status, signals and failures to start are told apart", 
     CHECK(classify(run_process({(dir.path() / "no-such-binary").string()}, dir.path(), {}), detail) == CaseStatus::MissingBinary);
 }
 
-TEST_CASE("sandbox: limits, a clean environment, hidden paths and no network where the platform allows", "[grader][process]") {
+TEST_CASE("sandbox: an allow-list file system, private /tmp, no network, limits and a clean environment", "[grader][process]") {
     test::TempDir dir;
-    const auto secret_dir = dir.path("secret");
-    std::filesystem::create_directories(secret_dir);
+    const auto allowed = dir.path("allowed");
+    std::filesystem::create_directories(allowed);
+    dir.write("allowed/public.txt", "the kit's public data\n");
     const auto secret_file = dir.write("secret.txt", "the reference\n");
     dir.write("secret/answer.png", "pixels");
     const auto work = dir.path("work");
     std::filesystem::create_directories(work);
     SandboxPolicy policy;
-    policy.hidden = {secret_dir, secret_file};
+    policy.read_only = {allowed};
     policy.file_size_bytes = 1 << 20;
-    const SandboxSupport support = probe_sandbox({dir.path()}, policy.hidden);
-    hand_over(work, support);
-    INFO(support.describe());
+    policy.tmp_bytes = 4 << 20;
+    const SandboxSupport support = probe_sandbox(policy);
+    hand_over(work, policy, support);
+    INFO(support.describe(policy));
     ProcessLimits limits;
     limits.sandbox = &policy;
     limits.support = &support;
@@ -91,26 +93,41 @@ TEST_CASE("sandbox: limits, a clean environment, hidden paths and no network whe
     unsetenv("GITHUB_TOKEN_FOR_TEST");
     CHECK(env2.output.find("GITHUB_TOKEN_FOR_TEST") == std::string::npos);
     CHECK(env2.output.find("MESA_TEST_PASSES=1") != std::string::npos);
-    CHECK(env2.output.find("HOME=" + work.string()) != std::string::npos);
+    CHECK(env2.output.find("HOME=" + std::filesystem::weakly_canonical(work).string()) != std::string::npos);
 
     // A file over the size limit ends the writer.
     const auto big = sh("exec head -c 4000000 /dev/zero > big", work, limits);
     std::string detail;
     CHECK(classify(big, detail) == CaseStatus::OutputFlood);
 
-    const auto peek = sh("cat " + secret_file.string() + "; ls " + secret_dir.string(), work, limits);
-    if (support.namespaces != SandboxSupport::Namespaces::None) {
-        CHECK(peek.output.find("the reference") == std::string::npos);
-        CHECK(peek.output.find("answer.png") == std::string::npos);
-        const auto net = sh("cat /proc/net/dev", work, limits);
-        CHECK(net.output.find("eth") == std::string::npos);  // only loopback in a fresh network namespace
-    } else {
-        WARN("unshare is refused here: hidden paths and the network namespace are not tested");
+    if (!support.allow_list()) {
+        WARN("no namespaces here (" << support.refused << "): the allow-list walls are not tested");
+        return;
     }
-    if (geteuid() == 0 && support.drops_root) {
-        const auto id = sh("id -u", work, limits);
-        CHECK(id.output.find("65534") == 0);
-    }
+    // Only what the policy allows: the secret beside the allowed folder is not there at all.
+    const auto peek = sh("cat " + (allowed / "public.txt").string() + "; cat " + secret_file.string() + "; ls " +
+                             dir.path().string(), work, limits);
+    CHECK(peek.output.find("the kit's public data") != std::string::npos);
+    CHECK(peek.output.find("the reference") == std::string::npos);
+    const auto listing = sh("ls " + dir.path().string(), work, limits).output;
+    CHECK(listing.find("allowed") != std::string::npos);
+    CHECK(listing.find("secret") == std::string::npos);
+    // The allowed folder is read-only; the working folder is not.
+    CHECK(sh("echo x > " + (allowed / "new.txt").string(), work, limits).exit_code != 0);
+    CHECK(sh("echo x > mine.txt", work, limits).exit_code == 0);
+    CHECK(std::filesystem::exists(work / "mine.txt"));
+    // Only loopback in a fresh network namespace; a /tmp of its own, empty, with a quota.
+    const auto net = sh("cat /proc/net/dev", work, limits);
+    CHECK(net.output.find("eth") == std::string::npos);
+    const auto host_tmp = dir.write("../gsv-sandbox-host-tmp-probe.txt", "grader's /tmp\n");
+    CHECK(sh("ls /tmp", work, limits).output.find("gsv-sandbox-host-tmp-probe") == std::string::npos);
+    std::filesystem::remove(host_tmp);
+    CHECK(sh("head -c 6000000 /dev/zero > /tmp/fill", work, limits).exit_code != 0);
+    // No other process is visible: the shell is alone with what it starts.
+    const auto ps = sh("ls /proc | grep -c '^[0-9]'", work, limits);
+    CHECK(std::atoi(ps.output.c_str()) <= 4);  // the namespace's init, the shell, ls and grep
+    if (geteuid() == 0 && support.namespaces == SandboxSupport::Namespaces::AsRoot)
+        CHECK(sh("id -u", work, limits).output == std::to_string(policy.uid) + "\n");
     // The grader itself still sees everything.
     CHECK(test::read_text(secret_file) == "the reference\n");
 }

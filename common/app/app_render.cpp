@@ -8,6 +8,7 @@
 #include "common/image/image_compare.h"
 #include "common/io/data_array.h"
 #include "common/io/json.h"
+#include "common/timing/frame_marks.h"
 #include "common/timing/timing.h"
 
 #include <cstdio>
@@ -80,10 +81,12 @@ int run_render(Session& s) {
     const Frame frame{width, height, 0.0};
     const int warmup = s.options.warmup >= 0 ? s.options.warmup : 1;
     const int frames = s.options.frames > 0 ? s.options.frames : 3;
+    // Each timed frame starts from a cleared target (render_frame), so the image read back is the last frame's own.
+    const FrameMarks marks;
     const TimingStats timing = time_frames([&] {
         target.bind();
         s.render_frame(frame);
-    }, warmup, frames);
+    }, warmup, frames, &marks);
     check_gl_error("rendering the frame");
 
     const Readback shot = read_back(target);

@@ -1,6 +1,7 @@
 #include "common/timing/timing.h"
 
 #include "common/gl/gl.h"
+#include "common/timing/frame_marks.h"
 
 #include <algorithm>
 #include <chrono>
@@ -26,7 +27,7 @@ TimingStats summarize(std::vector<double> samples_ms) {
     return stats;
 }
 
-TimingStats time_frames(const std::function<void()>& frame, int warmup, int frames) {
+TimingStats time_frames(const std::function<void()>& frame, int warmup, int frames, const FrameMarks* marks) {
     glFinish();  // nothing queued before us may be charged to the first frame
     for (int i = 0; i < warmup; ++i) {
         frame();
@@ -34,11 +35,13 @@ TimingStats time_frames(const std::function<void()>& frame, int warmup, int fram
     }
     std::vector<double> samples;
     samples.reserve(static_cast<std::size_t>(std::max(frames, 0)));
+    if (marks) marks->mark();
     for (int i = 0; i < frames; ++i) {
         const double t0 = now_seconds();
         frame();
         glFinish();
         samples.push_back(1000.0 * (now_seconds() - t0));
+        if (marks) marks->mark();
     }
     return summarize(std::move(samples));
 }

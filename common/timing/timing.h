@@ -14,8 +14,11 @@ struct TimingStats {
 
 TimingStats summarize(std::vector<double> samples_ms);
 
-// Runs `frame` warmup + frames times; returns statistics of the timed frames.
-TimingStats time_frames(const std::function<void()>& frame, int warmup, int frames);
+class FrameMarks;
+
+// Runs `frame` warmup + frames times; returns statistics of the timed frames. With `marks`, one mark before the
+// first timed frame and one after each (common/timing/frame_marks.h).
+TimingStats time_frames(const std::function<void()>& frame, int warmup, int frames, const FrameMarks* marks = nullptr);
 
 // Frame-to-frame time in window mode, smoothed so the number on screen can be read.
 class FrameClock {
