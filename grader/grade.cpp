@@ -163,7 +163,11 @@ void Grading::set_up_sandbox(const fs::path& student_bin, const fs::path& studen
         report_.sandbox = "off (--no-sandbox): student code runs with the grader's rights";
         return;
     }
-    support_ = probe_sandbox(policy_);
+    if (options_.namespaces) {
+        support_ = probe_sandbox(policy_);
+    } else {
+        support_.refused = "--no-namespaces";
+    }
     report_.sandbox = support_.describe(policy_);
     const bool secrets = !options_.update_goldens && (std::find(live_.begin(), live_.end(), true) != live_.end());
     if (!support_.allow_list() && secrets && !options_.allow_readable_kit)

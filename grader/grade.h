@@ -33,6 +33,7 @@ struct GradeOptions {
     // Where the allow-list walls cannot go up (no namespaces), hidden cases and live references are refused: student
     // code could read the kit. This grades them anyway, and the report says the kit was readable.
     bool allow_readable_kit = false;
+    bool namespaces = true;             // false: every wall but the namespaces, as where unshare is refused
     unsigned sandbox_uid = 0;           // a root grader runs student code as this uid; 0: kSandboxUidBase
     std::optional<std::uint64_t> seed;  // hidden cases; none: a fresh seed, recorded in the report
     double timeout_s = 0;               // per student process; 0: the case file's timeout_s (always the reference's)

@@ -19,7 +19,8 @@ namespace {
 const char* kUsage =
     "usage: gsv-grade [--kit DIR] [--bin DIR] [--submission DIR | --batch DIR [--workers N]] [--out DIR]\n"
     "                 [--labs lab01,lab02] [--cases gyre,wrap] [--seed N] [--self-check] [--no-timing] [--public-only]\n"
-    "                 [--timeout S] [--fail-under F] [--update-goldens] [--allow-readable-kit] [--no-sandbox] [--quiet]\n"
+    "                 [--timeout S] [--fail-under F] [--update-goldens] [--allow-readable-kit] [--no-namespaces]\n"
+    "                 [--no-sandbox] [--quiet]\n"
     "  --kit DIR         the kit (cases, goldens, hidden cases, solutions); default: the one this was built from\n"
     "  --bin DIR         the kit's built labs and <lab>_solution; default: this build's bin/\n"
     "  --submission DIR  a copy of the kit whose labs/ hold a student's work: built against this kit, then graded\n"
@@ -35,6 +36,7 @@ const char* kUsage =
     "  --update-goldens  render grader/golden/<lab>/<case>.png (and <case>.<array>.f32s) with the reference solutions\n"
     "  --allow-readable-kit  where the sandbox cannot hide the kit (no namespaces), grade hidden cases and live\n"
     "                    references anyway; without it they are refused there, and the report says which walls were up\n"
+    "  --no-namespaces   every wall but the namespaces: how the grader behaves where unshare is refused\n"
     "  --no-sandbox      run student code without namespaces and limits (to debug the grader only)\n"
     "exit status: 0 graded (whatever the score), 1 under --fail-under, 2 usage or internal error\n";
 
@@ -127,6 +129,7 @@ int main(int argc, char** argv) {
             else if (a == "--public-only") { options.hidden = false; pass_through.push_back(a); }
             else if (a == "--no-sandbox") { options.sandbox = false; pass_through.push_back(a); }
             else if (a == "--allow-readable-kit") { options.allow_readable_kit = true; pass_through.push_back(a); }
+            else if (a == "--no-namespaces") { options.namespaces = false; pass_through.push_back(a); }
             else if (a == "--sandbox-uid") options.sandbox_uid = static_cast<unsigned>(number(1000, 4000000000.0));
             else if (a == "--timeout") { options.timeout_s = number(0.1, 3600); pass_through.insert(pass_through.end(), {a, std::to_string(options.timeout_s)}); }
             else if (a == "--update-goldens") options.update_goldens = true;

@@ -146,3 +146,26 @@ TEST_CASE("grader: a hostile submission learns nothing, earns nothing it did not
     CHECK(probe(seen("per-vertex"), "kill-all") != "<not printed>");
     CHECK(image.size() >= 9);
 }
+
+TEST_CASE("grader: where the walls cannot go up, hidden cases and live references are refused in one line", "[grader][submission]") {
+    const Json unchanged = parse_json(R"({"name": "unchanged", "file": "shade.frag", "find": "void main", "replace": "void main"})", "test");
+    const test::EditedKit kit("lab01", test::mutant_spec("lab01").string_at("lab_dir"), unchanged);
+    GradeOptions options = kit.options();
+    options.allow_readable_kit = false;
+    options.namespaces = false;
+    options.timing = false;
+    const std::string refused = test::gsv_error_message([&] { grade(options); });
+    CHECK(refused.find("cannot hide the kit here (--no-namespaces)") != std::string::npos);
+    CHECK(refused.find("--allow-readable-kit") != std::string::npos);
+    CHECK(refused.find('\n') == std::string::npos);
+    // Asked for, it grades, and the report says the kit was readable.
+    options.allow_readable_kit = true;
+    options.cases = {"gooch"};
+    const GradeReport graded = grade(options);
+    CHECK(graded.sandbox.find("the kit and the network are reachable") != std::string::npos);
+    CHECK(graded.sandbox.find("(--allow-readable-kit)") != std::string::npos);
+    // The self-check has nothing to hide: it runs, and says so.
+    options.allow_readable_kit = false;
+    options.self_check = true;
+    CHECK(grade(options).sandbox.find("no namespaces here") != std::string::npos);
+}
