@@ -74,6 +74,16 @@ GradeCase case_from(const Json& c, const std::string& file) {
         if (gc.timing.points < 0 || gc.timing.max_ratio < 1)
             throw Error(file + ": case '" + gc.name + "': timing needs points >= 0 and max_ratio >= 1");
     }
+    if (const Json* tolerance = c.find("tolerance"); tolerance && !tolerance->is_null()) {
+        if (const Json* live = tolerance->find("live")) gc.live_tolerance = tolerance_from(*live);
+        if (const Json* golden = tolerance->find("golden")) gc.golden_tolerance = tolerance_from(*golden);
+    }
+    if (const Json* needs = c.find("needs"); needs && !needs->is_null())
+        for (const Json& n : needs->as_array()) {
+            gc.needs.push_back(n.as_string());
+            if (!std::regex_match(gc.needs.back(), todo_pattern))
+                throw Error(file + ": case '" + gc.name + "' needs '" + gc.needs.back() + "', expected an id like L01-T2");
+        }
     if (const Json* arrays = c.find("arrays"); arrays && !arrays->is_null()) {
         gc.arrays.emplace();
         for (const Json& a : arrays->as_array()) gc.arrays->push_back(a.as_string());

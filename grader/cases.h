@@ -26,6 +26,10 @@ struct GradeCase {
     // "arrays": which of the arrays the lab hands in this case checks; none given: every array the reference
     // hands in (an empty list: none).
     std::optional<std::vector<std::string>> arrays;
+    // "tolerance": {"live": ..., "golden": ...}: this case's own, where the lab's would hide a bug it is there to catch.
+    std::optional<ImageTolerance> live_tolerance, golden_tolerance;
+    // "needs": the other TODOs this case cannot pass without (its own "todo" aside).
+    std::vector<std::string> needs;
 };
 
 struct LabCases {
@@ -38,6 +42,9 @@ struct LabCases {
     std::optional<ArrayTolerance> live_array_tolerance, golden_array_tolerance;
     bool checks_arrays() const { return live_array_tolerance.has_value(); }
     double timeout_s = 60;
+    ImageTolerance tolerance(const GradeCase& c, bool live) const {
+        return live ? c.live_tolerance.value_or(live_tolerance) : c.golden_tolerance.value_or(golden_tolerance);
+    }
     // Timing: its own size (large enough that the lab's own work, not fixed costs, sets the frame
     // time), frames per process after warm-up, and interleaved student/reference rounds.
     int timing_width = 1024, timing_height = 1024;

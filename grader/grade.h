@@ -4,15 +4,24 @@
 // (instructor grading: public and hidden cases, timing) or the committed golden image (self-check). A lab
 // that hands in arrays (lab 05's particles) has them checked as well (grader/data_check.h).
 #include "grader/grade_result.h"
+#include "grader/run_lab.h"
 
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace gsv {
+
+// Live references already rendered, by lab, size and settings: a run that grades many submissions (or many
+// mutants) in one process renders each reference case once.
+struct ReferenceCache {
+    std::map<std::string, LabRun> runs;
+};
 
 struct GradeOptions {
     std::filesystem::path kit_root;     // grader/cases, golden, hidden; solutions/
@@ -35,6 +44,8 @@ struct GradeOptions {
     bool allow_readable_kit = false;
     bool namespaces = true;             // false: every wall but the namespaces, as where unshare is refused
     unsigned sandbox_uid = 0;           // a root grader runs student code as this uid; 0: kSandboxUidBase
+    std::string todo;                   // only the cases of this TODO ("L02-T3"); empty: all
+    std::shared_ptr<ReferenceCache> reference_cache;  // shared between runs in one process; none: no cache
     std::optional<std::uint64_t> seed;  // hidden cases; none: a fresh seed, recorded in the report
     double timeout_s = 0;               // per student process; 0: the case file's timeout_s (always the reference's)
 };

@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <fstream>
 #include <cstdlib>
+#include <regex>
 #include <sstream>
 #include <unistd.h>
 
@@ -18,8 +19,9 @@ namespace {
 
 const char* kUsage =
     "usage: gsv-grade [--kit DIR] [--bin DIR] [--submission DIR | --batch DIR [--workers N]] [--out DIR]\n"
-    "                 [--labs lab01,lab02] [--cases gyre,wrap] [--seed N] [--self-check] [--no-timing] [--public-only]\n"
-    "                 [--timeout S] [--fail-under F] [--update-goldens] [--allow-readable-kit] [--no-namespaces]\n"
+    "                 [--labs lab01,lab02] [--cases gyre,wrap] [--todo L02-T3] [--seed N] [--self-check] [--no-timing]\n"
+    "                 [--public-only]"
+    " [--timeout S] [--fail-under F] [--update-goldens] [--allow-readable-kit] [--no-namespaces]\n"
     "                 [--no-sandbox] [--quiet]\n"
     "  --kit DIR         the kit (cases, goldens, hidden cases, solutions); default: the one this was built from\n"
     "  --bin DIR         the kit's built labs and <lab>_solution; default: this build's bin/\n"
@@ -27,6 +29,7 @@ const char* kUsage =
     "  --batch DIR       every folder in DIR is a submission; --workers N grade N at a time (default 2)\n"
     "  --out DIR         images and reports: results.json (Gradescope), report.json, junit.xml, report.html\n"
     "  --cases A,B       only these cases (public or hidden names) of the chosen labs: re-check one fix quickly\n"
+    "  --todo L02-T3     only the cases of one TODO (its lab's): what the lab sheet's TODO table gives\n"
     "  --seed N          draws the hidden cases; the same seed gives the same cases (default: a fresh one, printed)\n"
     "  --self-check      golden images and public cases only, even where the solutions are built\n"
     "  --no-timing       skip the frame-time checks\n"
@@ -130,6 +133,12 @@ int main(int argc, char** argv) {
             else if (a == "--no-sandbox") { options.sandbox = false; pass_through.push_back(a); }
             else if (a == "--allow-readable-kit") { options.allow_readable_kit = true; pass_through.push_back(a); }
             else if (a == "--no-namespaces") { options.namespaces = false; pass_through.push_back(a); }
+            else if (a == "--todo") {
+                options.todo = value();
+                static const std::regex id(R"(^L[0-9]{2}-T[0-9]+$)");
+                if (!std::regex_match(options.todo, id)) throw gsv::Error("--todo needs a TODO id like L02-T3, got '" + options.todo + "'");
+                pass_through.insert(pass_through.end(), {a, options.todo});
+            }
             else if (a == "--sandbox-uid") options.sandbox_uid = static_cast<unsigned>(number(1000, 4000000000.0));
             else if (a == "--timeout") { options.timeout_s = number(0.1, 3600); pass_through.insert(pass_through.end(), {a, std::to_string(options.timeout_s)}); }
             else if (a == "--update-goldens") options.update_goldens = true;

@@ -29,13 +29,14 @@ std::string read_text(const fs::path& path) {
 
 }  // namespace
 
-StarterText make_starter(const std::string& text, const std::string& file) {
+StarterText make_starter(const std::string& text, const std::string& file, const std::string& only_todo) {
     enum class State { Both, Solution, Starter } state = State::Both;
     static const std::regex id_pattern(R"(^L[0-9]{2}-T[0-9]+$)");
     StarterText out;
     std::istringstream in(text);
     std::string line;
     int number = 0, block_start = 0;
+    bool converting = true;  // this block becomes the starter's (all blocks, or only_todo's)
     auto fail = [&](const std::string& what) { throw Error(file + ":" + std::to_string(number) + ": " + what); };
     while (std::getline(in, line)) {
         ++number;
@@ -45,6 +46,7 @@ StarterText make_starter(const std::string& text, const std::string& file) {
             const std::string id = trim(t.substr(11));
             if (!std::regex_match(id, id_pattern)) fail("//@solution needs a TODO id like L01-T2, got '" + id + "'");
             if (std::find(out.todo_ids.begin(), out.todo_ids.end(), id) == out.todo_ids.end()) out.todo_ids.push_back(id);
+            converting = only_todo.empty() || id == only_todo;
             state = State::Solution;
             block_start = number;
         } else if (t == "//@starter") {
@@ -55,13 +57,13 @@ StarterText make_starter(const std::string& text, const std::string& file) {
             state = State::Both;
         } else if (t.rfind("//@", 0) == 0) {
             fail("unknown marker '" + t + "' (expected //@solution ID, //@starter or //@end)");
-        } else if (state == State::Both) {
+        } else if (state == State::Both || (state == State::Solution && !converting)) {
             out.text += line + "\n";
         } else if (state == State::Starter) {
             const auto at = line.find("//");
             if (at == std::string::npos || trim(line.substr(0, at)) != "")
                 fail("a starter line must be commented out with // in the solution");
-            out.text += line.substr(0, at) + line.substr(at + 2) + "\n";
+            if (converting) out.text += line.substr(0, at) + line.substr(at + 2) + "\n";
         }
     }
     if (state != State::Both) {

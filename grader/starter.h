@@ -20,8 +20,9 @@ struct StarterText {
 };
 
 // Throws gsv::Error "file:line: ..." on a malformed block (unterminated, nested, missing id, a starter
-// line that is not a comment, an id that does not match L<lab>-T<n>).
-StarterText make_starter(const std::string& solution_text, const std::string& file_name);
+// line that is not a comment, an id that does not match L<lab>-T<n>). With `only_todo`, only that TODO's blocks
+// become the starter's and the others keep the solution: the reference with one TODO left undone.
+StarterText make_starter(const std::string& solution_text, const std::string& file_name, const std::string& only_todo = "");
 
 struct StarterFileResult {
     std::filesystem::path solution, starter;

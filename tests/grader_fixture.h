@@ -10,6 +10,7 @@
 #include "grader/grade.h"
 
 #include <algorithm>
+#include <functional>
 #include <fstream>
 #include <map>
 
@@ -64,19 +65,25 @@ inline GradeOptions instructor_options(const std::string& lab, const std::filesy
 // reference reads the untouched solution in the source tree.
 class EditedKit {
 public:
-    EditedKit(const std::string& lab, const std::string& lab_dir, const Json& edit) : lab_(lab) {
-        const auto root = dir_.path("kit");
-        std::filesystem::create_directories(root / "solutions");
-        std::filesystem::copy(source_root() / "shaders", root / "shaders", std::filesystem::copy_options::recursive);
-        std::filesystem::copy(source_root() / "data", root / "data", std::filesystem::copy_options::recursive);
-        std::filesystem::copy(source_root() / "solutions" / lab_dir, root / "solutions" / lab_dir, std::filesystem::copy_options::recursive);
+    EditedKit(const std::string& lab, const std::string& lab_dir, const Json& edit) : EditedKit(lab, lab_dir, [&](const std::filesystem::path& folder) {
         // Only shader edits: the solution's binary is copied, not rebuilt, so a C++ edit would change nothing
         // and its mutant would "pass". C++ faults go through a Submission, which the grader builds.
         const std::string file = edit.string_or("file", "");
         if (file.size() > 4 && (file.substr(file.size() - 4) == ".cpp" || file.substr(file.size() - 2) == ".h"))
             throw Error("mutant '" + edit.string_at("name") + "' edits " + file +
                         ": C++ is not rebuilt for mutants; plant C++ faults in a submission");
-        apply_edits(root / "solutions" / lab_dir, edit);
+        apply_edits(folder, edit);
+    }) {}
+    // `edit` changes the copy of solutions/<lab_dir> (shaders only: the binary is the solution's).
+    EditedKit(const std::string& lab, const std::string& lab_dir, const std::function<void(const std::filesystem::path&)>& edit)
+        : lab_(lab) {
+        const auto root = dir_.path("kit");
+        std::filesystem::create_directories(root / "solutions");
+        // The public files are the kit's own, linked (the sandbox binds what they lead to).
+        std::filesystem::create_directory_symlink(source_root() / "shaders", root / "shaders");
+        std::filesystem::create_directory_symlink(source_root() / "data", root / "data");
+        std::filesystem::copy(source_root() / "solutions" / lab_dir, root / "solutions" / lab_dir, std::filesystem::copy_options::recursive);
+        edit(root / "solutions" / lab_dir);
         std::filesystem::create_directories(dir_.path("bin"));
         std::filesystem::copy_file(bin_dir() / (lab + "_solution"), dir_.path("bin") / lab);
     }

@@ -2,30 +2,115 @@
 // the case that names their bug, and planted faults each get their own status while the rest is graded.
 #include "grader_fixture.h"
 
+#include "grader/starter.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <map>
+#include <memory>
+
 using namespace gsv;
 
-TEST_CASE("grader: every mutant of every lab fails the case that names its bug", "[grader]") {
+namespace {
+
+bool is_cpp(const std::string& file) {
+    return file.size() > 2 && (file.substr(file.size() - 4) == ".cpp" || file.substr(file.size() - 2) == ".h");
+}
+
+// Every TODO id of a lab's reference, with the files that hold its blocks.
+std::map<std::string, std::vector<std::string>> todo_files(const std::string& lab_dir) {
+    std::map<std::string, std::vector<std::string>> files;
+    for (const auto& e : std::filesystem::directory_iterator(test::source_root() / "solutions" / lab_dir)) {
+        const std::string name = e.path().filename().string();
+        for (const auto& id : make_starter(test::read_text(e.path()), name).todo_ids) files[id].push_back(name);
+    }
+    return files;
+}
+
+struct Outcome {
+    bool lost = false;    // some case of the TODO lost points
+    std::string details;  // a line per case
+};
+
+// Grades the cases of `todo` (public ones, untimed), against the live reference or the goldens.
+Outcome grade_todo(GradeOptions options, const std::string& todo, bool self_check, const std::shared_ptr<ReferenceCache>& cache) {
+    options.todo = todo;
+    options.self_check = self_check;
+    options.hidden = false;
+    options.timing = false;
+    options.reference_cache = cache;
+    Outcome o;
+    for (const auto& r : grade(options).results) {
+        o.lost = o.lost || r.points < r.max_points;
+        o.details += r.name + ": " + status_name(r.status) + " " + r.detail + "\n";
+    }
+    return o;
+}
+
+}  // namespace
+
+// The mutation test of the grading cases: for each TODO the reference with that TODO left as the starter has it, and
+// the classic bugs in tests/mutants/<lab>.json, must each lose points on a case of that TODO, against the live
+// reference AND against the golden images (what students run); the correct variants beside them must not.
+TEST_CASE("every TODO: left undone or with a classic bug it loses points, live and in the self-check; correct variants do not", "[.][grader][mutants]") {
+    const auto cache = std::make_shared<ReferenceCache>();
+    std::string summary = "lab    mode        killed / mutants, variants kept\n";
+    // GSV_TEST_LABS=lab02,lab03 narrows the run while a lab's mutants are being written.
+    const char* only = std::getenv("GSV_TEST_LABS");
     for (const auto& lab : test::labs_with_mutants()) {
+        if (only && std::string(",") .append(only).append(",").find("," + lab + ",") == std::string::npos) continue;
         const Json spec = test::mutant_spec(lab);
-        for (const Json& mutant : spec.array_at("mutants").as_array()) {
-            test::EditedKit kit(lab, spec.string_at("lab_dir"), mutant);
-            GradeOptions options = kit.options();
-            options.hidden = false;
-            options.timing = false;
-            for (const Json& name : mutant.array_at("must_fail").as_array()) options.cases.push_back(name.as_string());
-            const auto results = test::by_name(grade(options));
-            for (const Json& name : mutant.array_at("must_fail").as_array()) {
-                INFO(lab << " mutant '" << mutant.string_at("name") << "', case " << name.as_string());
-                REQUIRE(results.count(name.as_string()) == 1);
-                const CaseResult& r = results.at(name.as_string());
-                INFO(r.detail);
-                CHECK(std::string(status_name(r.status)) == mutant.string_or("status", "wrong image"));
-                CHECK(r.points == 0);
-                CHECK(r.reference == "live");
-                if (r.status == CaseStatus::WrongImage) CHECK(std::filesystem::exists(kit.out() / r.diff_png));
+        const std::string lab_dir = spec.string_at("lab_dir");
+        const auto todos = todo_files(lab_dir);
+        struct Mutant {
+            std::string todo, name;
+            std::function<void(const std::filesystem::path&)> edit;
+        };
+        std::vector<Mutant> mutants;
+        for (const auto& [todo, files] : todos) {
+            if (std::any_of(files.begin(), files.end(), is_cpp)) continue;  // C++ TODOs: the test below builds them
+            mutants.push_back({todo, todo + " left undone", [todo = todo, files = files](const std::filesystem::path& folder) {
+                                   for (const auto& file : files)
+                                       std::ofstream(folder / file, std::ios::binary)
+                                           << make_starter(test::read_text(folder / file), file, todo).text;
+                               }});
+        }
+        std::map<std::string, int> classic;
+        for (const Json& m : spec.array_at("mutants").as_array()) {
+            mutants.push_back({m.string_at("todo"), m.string_at("name"), [m](const std::filesystem::path& folder) { test::apply_edits(folder, m); }});
+            ++classic[m.string_at("todo")];
+        }
+        for (const auto& [todo, files] : todos) {
+            INFO(lab << ": classic bugs of " << todo << " in tests/mutants/" << lab << ".json");
+            if (!std::any_of(files.begin(), files.end(), is_cpp)) CHECK(classic[todo] >= 3);
+        }
+        for (const bool self_check : {true, false}) {
+            int killed = 0;
+            for (const auto& m : mutants) {
+                test::EditedKit kit(lab, lab_dir, m.edit);
+                const Outcome o = grade_todo(kit.options(), m.todo, self_check, cache);
+                INFO(lab << " (" << (self_check ? "self-check" : "live") << ") mutant '" << m.name << "' of " << m.todo << ":\n" << o.details);
+                CHECK(o.lost);
+                killed += o.lost;
             }
+            int kept = 0, variants = 0;
+            if (const Json* list = spec.find("variants"))
+                for (const Json& v : list->as_array()) {
+                    test::EditedKit kit(lab, lab_dir, v);
+                    const Outcome o = grade_todo(kit.options(), v.string_at("todo"), self_check, cache);
+                    INFO(lab << " (" << (self_check ? "self-check" : "live") << ") correct variant '" << v.string_at("name") << "':\n" << o.details);
+                    CHECK_FALSE(o.lost);
+                    kept += !o.lost;
+                    ++variants;
+                }
+            char line[160];
+            std::snprintf(line, sizeof line, "%-6s %-11s %3d / %-3zu  %d / %d\n", lab.c_str(), self_check ? "self-check" : "live",
+                          killed, mutants.size(), kept, variants);
+            summary += line;
         }
     }
+    WARN(summary);
 }
 
 TEST_CASE("grader: planted shader faults each get their own status, and every case is still graded", "[grader]") {
