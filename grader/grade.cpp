@@ -41,6 +41,14 @@ CaseResult result_for(const LabCases& lab, const GradeCase& c) {
     r.visibility = c.visibility;
     r.settings = c.settings;
     r.max_points = c.points;
+    // What a student types to see what their lab drew: a public case by name, a hidden one by its settings.
+    r.reproduce = "build/bin/" + lab.lab + " render --size " + std::to_string(lab.width) + "x" + std::to_string(lab.height);
+    if (c.visibility == "public") {
+        r.reproduce += " --case " + c.name;
+    } else {
+        for (const auto& s : c.settings) r.reproduce += " --set " + s;
+    }
+    r.reproduce += " --out " + c.name + ".png";
     return r;
 }
 
@@ -57,6 +65,12 @@ private:
     void load_labs();
     void set_up_sandbox(const fs::path& student_bin, const fs::path& student_root, const fs::path& build_dir);
     void grade_lab(const LabCases& lab, bool live, const LabBuild* build);
+    void blame_needed_todos(const LabCases& lab, std::size_t first);
+    // The paths in a student process's messages as the student knows them: "labs/lab02_lic/streamline.glsl:12", not
+    // the grader's copy of the submission.
+    std::string as_student_sees(std::string text) const;
+    // A PNG in the student's labs/ whose pixels are `image`'s, as the student names it; empty if none.
+    std::string picture_in_submission(const Image& image) const;
     void grade_case(const LabCases& lab, const GradeCase& c, bool live, const LabBuild* build);
     void update_golden(const LabCases& lab, const GradeCase& c);
     void update_golden_arrays(const LabCases& lab, const GradeCase& c, const LabRun& ref, CaseResult& r);
@@ -252,6 +266,7 @@ void Grading::record(CaseResult r) {
 }
 
 void Grading::grade_lab(const LabCases& lab, bool live, const LabBuild* build) {
+    const std::size_t first = report_.results.size();
     for (const auto& c : lab.cases) {
         if (options_.update_goldens) {
             if (c.visibility == "public") update_golden(lab, c);
@@ -267,6 +282,48 @@ void Grading::grade_lab(const LabCases& lab, bool live, const LabBuild* build) {
             record(r);
         }
     }
+    blame_needed_todos(lab, first);
+}
+
+// A case that fails while a TODO it needs fails its own cases says so: that TODO first. Blame lands where the work is.
+void Grading::blame_needed_todos(const LabCases& lab, std::size_t first) {
+    std::map<std::string, std::string> failing;  // TODO -> its first failing case
+    for (std::size_t i = first; i < report_.results.size(); ++i) {
+        const CaseResult& r = report_.results[i];
+        if (r.kind == "image" && r.status != CaseStatus::Passed && !failing.count(r.todo)) failing[r.todo] = r.name;
+    }
+    for (std::size_t i = first; i < report_.results.size(); ++i) {
+        CaseResult& r = report_.results[i];
+        if (r.status == CaseStatus::Passed || r.status == CaseStatus::BuildError || is_kit_fault(r.status)) continue;
+        const auto c = std::find_if(lab.cases.begin(), lab.cases.end(), [&](const GradeCase& x) { return x.name == r.name; });
+        if (c == lab.cases.end()) continue;
+        for (const auto& needed : c->needs) {
+            const auto f = failing.find(needed);
+            if (f == failing.end() || needed == r.todo) continue;
+            r.status = CaseStatus::NeedsFirst;
+            r.detail = "needs " + needed + " first (its case '" + f->second + "' fails); here: " + r.detail;
+            break;
+        }
+    }
+}
+
+std::string Grading::picture_in_submission(const Image& image) const {
+    const fs::path labs = KitLayout{student_.root.empty() ? kit_ : student_.root}.labs();
+    std::error_code ec;
+    for (auto it = fs::recursive_directory_iterator(labs, ec); !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+        if (!it->is_regular_file(ec) || it->path().extension() != ".png" || it->file_size(ec) > (16u << 20)) continue;
+        try {
+            if (read_png(it->path()).rgba == image.rgba) return as_student_sees(it->path().string());
+        } catch (const Error&) {
+        }
+    }
+    return "";
+}
+
+std::string Grading::as_student_sees(std::string text) const {
+    const std::string root = (student_.root.empty() ? kit_ : student_.root).string() + "/";
+    for (auto at = text.find(root); at != std::string::npos; at = text.find(root, at)) text.erase(at, root.size());
+    return text;
 }
 
 void Grading::update_golden(const LabCases& lab, const GradeCase& c) {
@@ -328,8 +385,8 @@ void Grading::grade_case(const LabCases& lab, const GradeCase& c, bool live, con
 
     if (build && !build->ok) {
         r.status = CaseStatus::BuildError;
-        r.detail = first_error_line(build->log);
-        r.output = build->log;
+        r.detail = as_student_sees(first_error_line(build->log));
+        r.output = as_student_sees(build->log);
         record(r);
         timing_row_like(report_.results.back());
         return;
@@ -338,9 +395,9 @@ void Grading::grade_case(const LabCases& lab, const GradeCase& c, bool live, con
     const LabRun student = student_.render(lab.lab, lab, c, false, limits(lab, true));
     r.seconds = student.process.seconds;
     r.frame_ms = student.median_ms;
-    r.output = student.process.output;
+    r.output = as_student_sees(student.process.output);
     r.status = student.status;
-    r.detail = student.detail;
+    r.detail = as_student_sees(student.detail);
 
     Image expected;
     std::optional<LabRun> reference;
@@ -416,8 +473,18 @@ void Grading::check_image(const LabCases& lab, const GradeCase& c, const LabRun&
     }
     r.detail = diff.summary();
     if (!diff.size_mismatch) {
-        write_png(dir / "diff.png", difference_heatmap(actual, expected));
+        write_png(dir / "diff.png", difference_heatmap(actual, expected, tolerance.max_channel_diff));
         r.diff_png = fs::relative(dir / "diff.png", out_).generic_string();
+    }
+    // The starter's magenta where the reference has none: the TODO is open, however much else is drawn.
+    const long open = not_done_pixels(actual) - not_done_pixels(expected);
+    const long pixels = static_cast<long>(actual.width) * actual.height;
+    if (!diff.size_mismatch && open > pixels / 200) {
+        r.status = CaseStatus::NotDone;
+        char share[32];
+        std::snprintf(share, sizeof share, "%.1f%%", 100.0 * double(open) / double(pixels));
+        r.detail = "not done: " + c.todo + " (the starter's magenta on " + share + " of the image)";
+        return;
     }
     if (is_blank(actual) && !is_blank(expected)) {
         r.status = CaseStatus::BlankImage;
@@ -427,10 +494,19 @@ void Grading::check_image(const LabCases& lab, const GradeCase& c, const LabRun&
                        ? "all magenta, the starter's 'not done' colour: this case's TODO (or one it needs) is still open"
                        : "one flat colour where the reference has a picture (is anything drawn?)";
     } else if (const std::string copied = golden_copied(lab.lab, c.name, actual); !copied.empty()) {
-        r.status = CaseStatus::CopiedImage;
-        // A bug that ignores what sets this case apart can land on another case's image too: say both.
-        r.detail = "pixel for pixel the committed golden image of case '" + copied +
-                   "': copied, or this case's own settings are ignored";
+        // An honest bug that ignores what sets this case apart lands on another case's image too; a copy is a
+        // copy when the submission holds the picture, or when its own lab does not draw it for that case.
+        const std::string file = picture_in_submission(actual);
+        const auto other = std::find_if(lab.cases.begin(), lab.cases.end(), [&](const GradeCase& x) { return x.name == copied; });
+        const LabRun own = file.empty() && other != lab.cases.end() ? student_.render(lab.lab, lab, *other, false, limits(lab, true)) : LabRun{};
+        if (file.empty() && own.status == CaseStatus::Passed && own.image && own.image->rgba == actual.rgba) {
+            r.status = CaseStatus::WrongImage;
+            r.detail = "draws exactly what case '" + copied + "' draws: this case's settings seem to change nothing (" + r.detail + ")";
+        } else {
+            r.status = CaseStatus::CopiedImage;
+            r.detail = "pixel for pixel the committed golden image of case '" + copied + "', " +
+                       (file.empty() ? std::string("which the lab does not draw for that case") : "held in the submission as " + file);
+        }
     } else {
         r.status = CaseStatus::WrongImage;
     }

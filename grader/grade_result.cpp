@@ -23,6 +23,8 @@ const char* status_name(CaseStatus status) {
     case CaseStatus::Unsupported: return "unsupported";
     case CaseStatus::Error: return "error";
     case CaseStatus::ReferenceFailed: return "reference failed";
+    case CaseStatus::NotDone: return "not done";
+    case CaseStatus::NeedsFirst: return "needs another TODO first";
     }
     // Only reachable with a value cast from an out-of-range integer.
     return "unknown";

@@ -32,6 +32,8 @@ enum class CaseStatus {
     Unsupported,         // the GL context lacks what the lab needs
     Error,               // any other non-zero exit
     ReferenceFailed,     // the reference itself failed: not the student's fault, scored 0 and flagged
+    NotDone,             // the starter's not-done colour where the reference draws: the TODO is still open
+    NeedsFirst,          // fails, and a TODO it depends on ("needs") fails its own cases: that one first
 };
 const char* status_name(CaseStatus status);
 
@@ -69,6 +71,7 @@ struct CaseResult {
     double points = 0, max_points = 0;
     CaseStatus status = CaseStatus::Error;
     std::string detail;     // one line for the table
+    std::string reproduce;  // the command that draws what the student's lab drew here
     std::string output;     // what helps the student: compiler messages, the lab's own output
     std::string reference;  // "live" (rendered in this run) or "golden" (committed image)
     double seconds = 0;     // wall time of the student's process

@@ -94,6 +94,8 @@ std::string status_line(const CaseResult& result) {
 
 std::string check_output(const CaseResult& result) {
     std::string text = status_line(result);
+    if (result.status != CaseStatus::Passed && result.kind == "image" && !result.reproduce.empty())
+        text += "\nreproduce: " + result.reproduce;
     if (!result.output.empty()) text += "\n" + result.output;
     return text;
 }

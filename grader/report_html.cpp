@@ -155,6 +155,8 @@ void check_section(std::ostringstream& out, const fs::path& out_dir, const CaseR
         << format_points(r.points) << "/" << format_points(r.max_points) << "</h3>\n";
     if (!r.description.empty()) out << "<p>" << html(r.description) << "</p>\n";
     if (!r.detail.empty()) out << "<p class=\"detail\">" << html(r.detail) << "</p>\n";
+    if (!passed && r.kind == "image" && !r.reproduce.empty())
+        out << "<p class=\"reproduce\">reproduce: <code>" << html(r.reproduce) << "</code></p>\n";
     if (!r.settings.empty()) {
         out << "<p class=\"settings\">settings:";
         for (const auto& s : r.settings) out << " <code>" << html(s) << "</code>";

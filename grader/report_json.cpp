@@ -121,6 +121,7 @@ Json result_json(const CaseResult& r) {
     j["passed"] = r.status == CaseStatus::Passed;
     j["kit_fault"] = is_kit_fault(r.status);
     j["detail"] = text(r.detail);
+    j["reproduce"] = text(r.reproduce);
     j["output"] = text(r.output);
     j["reference"] = text(r.reference);
     j["seconds"] = number_or_null(r.seconds);

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cinttypes>
 #include <cstdio>
+#include <map>
 #include <sstream>
 
 namespace gsv {
@@ -30,16 +31,44 @@ std::string pad_left(const std::string& text, std::size_t width) {
 
 struct Row {
     std::string lab, check, todo, status, points, detail;
+    std::vector<std::string> below;  // a failing check's message in full, and the command that reproduces it
 };
+
+// Folds `text` into lines of at most `width` characters, at spaces where it can.
+std::vector<std::string> folded(const std::string& text, std::size_t width) {
+    std::vector<std::string> lines;
+    std::string rest = text;
+    while (display_width(rest) > width) {
+        std::size_t cut = rest.rfind(' ', width);
+        if (cut == std::string::npos || cut < width / 2) cut = width;
+        lines.push_back(rest.substr(0, cut));
+        rest = rest.substr(cut + (rest[cut] == ' ' ? 1 : 0));
+    }
+    if (!rest.empty()) lines.push_back(rest);
+    return lines;
+}
 
 }  // namespace
 
 std::string score_table(const GradeReport& report) {
     std::vector<Row> rows;
-    rows.push_back({"lab", "check", "todo", "status", "points", "detail"});
-    for (const auto& r : report.results)
-        rows.push_back({one_line(r.lab, 24), one_line(check_label(r), 40), one_line(r.todo, 16), status_name(r.status),
-                        format_points(r.points) + "/" + format_points(r.max_points), one_line(r.detail, kDetailBytes)});
+    rows.push_back({"lab", "check", "todo", "status", "points", "detail", {}});
+    std::map<std::string, std::string> first_compile_error;  // lab -> the check that showed it
+    for (const auto& r : report.results) {
+        Row row{one_line(r.lab, 24), one_line(check_label(r), 40), one_line(r.todo, 16), status_name(r.status),
+                format_points(r.points) + "/" + format_points(r.max_points), "", {}};
+        const std::string detail = one_line(r.detail, 1000);
+        if (r.status == CaseStatus::Passed || is_kit_fault(r.status)) {
+            row.detail = one_line(r.detail, kDetailBytes);
+        } else if (r.status == CaseStatus::ShaderCompileError && first_compile_error.count(r.lab + detail)) {
+            row.detail = "the same error as " + first_compile_error[r.lab + detail];  // shown once a lab
+        } else {
+            if (r.status == CaseStatus::ShaderCompileError) first_compile_error[r.lab + detail] = check_label(r);
+            for (const auto& line : folded(detail, kDetailBytes + 20)) row.below.push_back("    " + line);
+            if (!r.reproduce.empty() && r.kind == "image") row.below.push_back("    reproduce: " + r.reproduce);
+        }
+        rows.push_back(std::move(row));
+    }
 
     std::size_t w_lab = 0, w_check = 0, w_todo = 0, w_status = 0, w_points = 0;
     for (const auto& row : rows) {
@@ -57,6 +86,7 @@ std::string score_table(const GradeReport& report) {
                            pad_left(row.points, w_points) + "  " + row.detail;
         while (!line.empty() && line.back() == ' ') line.pop_back();
         out << line << "\n";
+        for (const auto& below : row.below) out << below << "\n";
     }
 
     // Subtotals and the total share one layout, the slash of "x / y" in one column.

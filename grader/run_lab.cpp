@@ -89,7 +89,10 @@ CaseStatus classify(const ProcessResult& r, std::string& detail) {
     default: break;
     }
     if (const std::string line = line_with(r.output, "shader compile error"); !line.empty()) {
-        detail = line;
+        // The located message ("file:line: error: ...") follows the line naming the program's main file.
+        const auto after = r.output.find('\n', r.output.find(line));
+        const std::string located = after == std::string::npos ? "" : r.output.substr(after + 1, r.output.find('\n', after + 1) - after - 1);
+        detail = located.find("error") != std::string::npos ? located : line;
         return CaseStatus::ShaderCompileError;
     }
     if (const std::string line = line_with(r.output, "shader link error"); !line.empty()) {

@@ -1,6 +1,7 @@
 #pragma once
 // Runs the built lab binaries the way a student, the grader or CI would.
 #include "common/image/image.h"
+#include "common/image/image_compare.h"
 #include "common/io/json.h"
 #include "grader/process.h"
 
@@ -47,17 +48,7 @@ inline LabRun render(const std::string& binary, const std::vector<std::string>& 
     return run;
 }
 
-// Pixels in the starter's "not done" colour (kNotDone, magenta), lit or not: red and blue equal and bright,
-// no green.
-inline int not_done_pixels(const Image& image) {
-    int count = 0;
-    for (int y = 0; y < image.height; ++y)
-        for (int x = 0; x < image.width; ++x) {
-            const std::uint8_t* p = image.at(x, y);
-            count += p[0] > 100 && p[1] < 20 && (p[0] > p[2] ? p[0] - p[2] : p[2] - p[0]) < 4;
-        }
-    return count;
-}
+using gsv::not_done_pixels;
 
 // The lines the program printed that mention an error (everything but the context description).
 inline std::vector<std::string> lines_of(const std::string& text) {

@@ -12,6 +12,7 @@
 #include "common/image/image_compare.h"
 #include "common/scene/mesh_data.h"
 #include "common/scene/transforms.h"
+#include "common/shader/reference_compiler.h"
 #include "common/shader/shader_library.h"
 #include "common/timing/timing.h"
 
@@ -336,4 +337,26 @@ TEST_CASE("shader program: every sampler gets a texture unit of its own at link 
     quad.draw();
     const ImageF pixels = target.read_rgba32f();
     CHECK(pixels.at(1, 1)[0] == Approx(0.1 + 0.2 + 0.05 * 1 + 0.1 * 2 + 0.03 * 3).epsilon(1e-5));
+}
+
+TEST_CASE("shader program: an error inside an included file is placed in that file, where the driver names none", "[gl]") {
+    auto context = test::headless_context();
+    test::TempDir dir;
+    dir.write("streamline.glsl", "// a student's included module\nfloat speedAt(vec2 st) {\n    int oops = vec2(1.0);\n    return 1.0;\n}\n");
+    const auto main_file = dir.write("lic.frag", "#include \"streamline.glsl\"\nout vec4 fColor;\nvoid main() { fColor = vec4(speedAt(vec2(0.0))); }\n");
+    PreprocessOptions options;
+    options.version = context->effective_version();
+    options.include_dirs = {test::source_root() / "shaders"};
+    ProgramSpec spec;
+    spec.name = "included error";
+    spec.files = {test::test_shader("quad.vert"), main_file};
+    const std::string message = test::gsv_error_message([&] { ShaderProgram::build(spec, options); });
+    INFO(message);
+    CHECK(message.find("shader compile error in " + main_file.string()) != std::string::npos);
+    if (!reference_compiler_log("void main() {}", ShaderStage::Fragment)) {
+        WARN("glslangValidator is not installed: the error stays on the main file, said so");
+        return;
+    }
+    CHECK(message.find((dir.path() / "streamline.glsl").string() + ":3: error") != std::string::npos);
+    CHECK(message.find("    int oops = vec2(1.0);") != std::string::npos);
 }

@@ -257,23 +257,23 @@ TEST_CASE("image: exactly the pixel budget passes and one more fails") {
     CHECK(over_budget.diff_y1 == 2);
 }
 
-TEST_CASE("image: difference heatmap runs black, red, yellow, white") {
-    const gsv::Image expected = filled(5, 1, 0, 0, 0, 255);
+TEST_CASE("image: the difference map shows every pixel over the tolerance brightly, however small the excess") {
+    const gsv::Image expected = filled(5, 1, 90, 90, 90, 255);
     gsv::Image actual = expected;
-    actual.at(1, 0)[0] = 85;   // a third of the way: pure red
-    actual.at(2, 0)[1] = 170;  // two thirds: yellow
-    actual.at(3, 0)[2] = 255;  // the largest difference: white
+    actual.at(1, 0)[0] = 92;   // within a tolerance of 2: the expected image, dimmed
+    actual.at(2, 0)[1] = 93;   // 1 level over: full red
+    actual.at(3, 0)[2] = 160;  // far over: yellow
     actual.at(4, 0)[3] = 0;    // alpha counts too
-    const gsv::Image heat = gsv::difference_heatmap(actual, expected);
+    const gsv::Image heat = gsv::difference_heatmap(actual, expected, 2);
     const std::vector<std::uint8_t> want = {
-        0, 0, 0, 255,
+        30, 30, 30, 255,
+        30, 30, 30, 255,
         255, 0, 0, 255,
         255, 255, 0, 255,
-        255, 255, 255, 255,
-        255, 255, 255, 255,
+        255, 255, 0, 255,
     };
     CHECK(heat.rgba == want);
-    CHECK_THROWS_AS(gsv::difference_heatmap(gradient(2, 2), gradient(3, 2)), gsv::Error);
+    CHECK_THROWS_AS(gsv::difference_heatmap(gradient(2, 2), gradient(3, 2), 0), gsv::Error);
 }
 
 TEST_CASE("image: is_blank is true only when every pixel is the same") {

@@ -2,6 +2,7 @@
 #include "test_support.h"
 
 #include "common/core/error.h"
+#include "common/shader/reference_compiler.h"
 #include "common/shader/shader_source.h"
 
 #include <atomic>
@@ -408,10 +409,16 @@ TEST_CASE("shader_source: translate_compile_log understands Mesa, NVIDIA and gls
                                                                gsv::kGeneratedHeaderName +
                                                                ":7: error: past the end of the header");
     }
-    SECTION("Mesa's string 0 for a line it lost the file of is the main file's, said so") {
-        CHECK(gsv::translate_compile_log("0:2(1): error: value of type vec4 cannot be assigned to variable of type vec2", source) ==
-              gooch + ":2: error: value of type vec4 cannot be assigned to variable of type vec2 (the driver named no file: "
-                      "the main file's line)\n    void main() {}");
+    SECTION("Mesa's string 0 for a line it lost the file of: placed by glslangValidator, else the main file's, said so") {
+        const std::string log = "0:2(1): error: value of type vec4 cannot be assigned to variable of type vec2";
+        if (gsv::reference_compiler_log("void main() {}", gsv::ShaderStage::Fragment))
+            CHECK(gsv::translate_compile_log(log, source) ==
+                  lib + ":2: error: value of type vec4 cannot be assigned to variable of type vec2 (placed by glslangValidator: "
+                        "the driver named no file)\n    vec3 c = undefined_thing;");
+        else
+            CHECK(gsv::translate_compile_log(log, source) ==
+                  gooch + ":2: error: value of type vec4 cannot be assigned to variable of type vec2 (the driver named no file: "
+                          "the main file's line)\n    void main() {}");
         CHECK(gsv::translate_compile_log("0:100004(3): error: bad define", source) ==
               std::string(gsv::kGeneratedHeaderName) + ":4: error: bad define\n    #define GSV_STAGE_FRAGMENT 1");
     }

@@ -1,5 +1,7 @@
 #include "common/image/image_compare.h"
 
+#include "common/core/not_done.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -201,21 +203,35 @@ std::string ImageDiff::summary() const {
     return line;
 }
 
-Image difference_heatmap(const Image& actual, const Image& expected) {
+Image difference_heatmap(const Image& actual, const Image& expected, int max_channel_diff) {
     require_same_size(actual, expected, "difference_heatmap");
     Image heatmap(actual.width, actual.height);
     const std::size_t pixel_count = heatmap.rgba.size() / 4;
     for (std::size_t p = 0; p < pixel_count; ++p) {
-        // Three equal segments of the ramp: red rises over the first third, green over the second,
-        // blue over the last.
-        const int level = 3 * pixel_max_diff(actual.rgba.data() + p * 4, expected.rgba.data() + p * 4);
+        const std::uint8_t* e = expected.rgba.data() + p * 4;
+        const int over = pixel_max_diff(actual.rgba.data() + p * 4, e) - max_channel_diff;
         std::uint8_t* out = heatmap.rgba.data() + p * 4;
-        out[0] = std::uint8_t(std::clamp(level, 0, 255));
-        out[1] = std::uint8_t(std::clamp(level - 255, 0, 255));
-        out[2] = std::uint8_t(std::clamp(level - 510, 0, 255));
+        if (over > 0) {
+            out[0] = 255;
+            out[1] = std::uint8_t(std::min(255, 4 * (over - 1)));
+            out[2] = 0;
+        } else {
+            out[0] = out[1] = out[2] = std::uint8_t((e[0] + e[1] + e[2]) / 9);  // a third of the grey
+        }
         out[3] = 255;
     }
     return heatmap;
+}
+
+long not_done_pixels(const Image& image) {
+    static_assert(kNotDoneRgb[0] == kNotDoneRgb[2] && kNotDoneRgb[1] == 0, "the test below is for magenta");
+    long count = 0;
+    const std::size_t bytes = image.rgba.size();
+    for (std::size_t i = 0; i + 4 <= bytes; i += 4) {
+        const int r = image.rgba[i], g = image.rgba[i + 1], b = image.rgba[i + 2];
+        count += r > 100 && g < 20 && std::abs(r - b) < 4;
+    }
+    return count;
 }
 
 bool is_blank(const Image& image) {

@@ -43,9 +43,10 @@ struct ImageDiff {
 ImageDiff compare_images(const Image& actual, const Image& expected,
                          const ImageTolerance& tolerance);
 
-// Per-pixel largest channel difference through a black -> red -> yellow -> white ramp (linear in
-// the difference, white = 255), opaque. Throws gsv::Error when the sizes differ.
-Image difference_heatmap(const Image& actual, const Image& expected);
+// Where the tolerance is exceeded, so that a 13-level error over a tolerance of 2 is as plain as a 200-level one:
+// pixels over `max_channel_diff` bright, from red (just over) to yellow (over by 64 levels or more); the rest the
+// expected image in dim grey, for where-am-I. Opaque. Throws gsv::Error when the sizes differ.
+Image difference_heatmap(const Image& actual, const Image& expected, int max_channel_diff);
 
 // Mean SSIM (Wang, Bovik, Sheikh, Simoncelli 2004) of the luma Y = 0.299R + 0.587G + 0.114B;
 // alpha is ignored. Throws gsv::Error when the sizes differ. See image_compare.cpp for the window
@@ -55,6 +56,10 @@ double ssim_luma(const Image& a, const Image& b);
 // True when every pixel has the same RGBA (vacuously for an empty image): a render that drew
 // nothing, or only the clear colour.
 bool is_blank(const Image& image);
+
+// Pixels in the starter's not-done colour (gsv::kNotDoneRgb, magenta), lit or not: red and blue equal and bright,
+// no green.
+long not_done_pixels(const Image& image);
 
 struct FloatStats {
     long nan_count = 0, inf_count = 0;  // counted per channel value

@@ -60,7 +60,7 @@ ShaderProgram ShaderProgram::build(const ProgramSpec& spec, const PreprocessOpti
         glGetShaderiv(shader.get(), GL_COMPILE_STATUS, &ok);
         if (!ok) {
             throw Error("shader compile error in " + file.string() + ":\n" +
-                        translate_compile_log(info_log(shader.get(), false), source));
+                        translate_compile_log(info_log(shader.get(), false), source, options.stage));
         }
         shaders.push_back(std::move(shader));
     }

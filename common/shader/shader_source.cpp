@@ -3,6 +3,7 @@
 #include "common/core/enum_names.h"
 #include "common/core/error.h"
 #include "common/core/not_done.h"
+#include "common/shader/reference_compiler.h"
 
 #include <algorithm>
 #include <cctype>
@@ -399,8 +400,25 @@ ShaderSource preprocess_shader(const fs::path& main_file, const PreprocessOption
     return source;
 }
 
-std::string translate_compile_log(const std::string& log, const ShaderSource& source) {
+namespace {
+
+// Where glslangValidator places the first error of `source`, when it is in a file (not the generated header).
+std::optional<LogLocation> placed_by_reference_compiler(const ShaderSource& source, ShaderStage stage) {
+    const std::optional<std::string> log = reference_compiler_log(source.text, stage);
+    if (!log) return std::nullopt;
+    std::istringstream in(*log);
+    for (std::string line; std::getline(in, line);)
+        if (std::optional<LogLocation> at = parse_log_line(line);
+            at && at->source_string > 0 && static_cast<std::size_t>(at->source_string) < source.files.size())
+            return at;
+    return std::nullopt;
+}
+
+}  // namespace
+
+std::string translate_compile_log(const std::string& log, const ShaderSource& source, ShaderStage stage) {
     std::string translated;
+    std::optional<std::optional<LogLocation>> placed;  // asked at most once
     std::istringstream in(log);
     std::string line;
     bool first = true;
@@ -417,8 +435,15 @@ std::string translate_compile_log(const std::string& log, const ShaderSource& so
         if (at->source_string == 0 && at->line > kGeneratedHeaderLineOffset) {
             at->line -= kGeneratedHeaderLineOffset;
         } else if (at->source_string == 0 && at->line != 1) {
-            at->source_string = source.main_file_index;
-            note = " (the driver named no file: the main file's line)";
+            if (!placed) placed = placed_by_reference_compiler(source, stage);
+            if (*placed) {
+                at->source_string = (*placed)->source_string;
+                at->line = (*placed)->line;
+                note = " (placed by glslangValidator: the driver named no file)";
+            } else {
+                at->source_string = source.main_file_index;
+                note = " (the driver named no file: the main file's line)";
+            }
         }
         translated += source.files[static_cast<std::size_t>(at->source_string)] + ":" + std::to_string(at->line) +
                       ": " + trim(at->message) + note;

@@ -67,8 +67,10 @@ struct ShaderSource {
 ShaderSource preprocess_shader(const std::filesystem::path& main_file, const PreprocessOptions& options);
 
 // Rewrites a driver's compile/link info log so each message names the original file and line and
-// is followed by that source line indented by 4 spaces. Lines it cannot parse pass through unchanged.
-std::string translate_compile_log(const std::string& log, const ShaderSource& source);
+// is followed by that source line indented by 4 spaces. Lines it cannot parse pass through unchanged. A message
+// the driver files under no file is placed by glslangValidator where it is installed (common/shader/reference_compiler.h),
+// else in the main file, saying so.
+std::string translate_compile_log(const std::string& log, const ShaderSource& source, ShaderStage stage = ShaderStage::Fragment);
 
 const char* stage_name(ShaderStage stage);                           // "vertex", "fragment", "tess_control", ...
 ShaderStage stage_from_extension(const std::filesystem::path& file);  // .vert .frag .geom .comp .tesc .tese
