@@ -17,8 +17,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <fstream>
 #include <map>
 #include <optional>
+#include <regex>
+#include <set>
 
 namespace fs = std::filesystem;
 
@@ -63,6 +66,9 @@ public:
 
 private:
     void load_labs();
+    // An instructor's mistake in a case file stops grading with one line, before any student code runs: a TODO id
+    // no lab has, a parameter the lab does not have or a value out of its range (hidden cases as drawn included).
+    void check_cases() const;
     void set_up_sandbox(const fs::path& student_bin, const fs::path& student_root, const fs::path& build_dir);
     void grade_lab(const LabCases& lab, bool live, const LabBuild* build);
     void blame_needed_todos(const LabCases& lab, std::size_t first);
@@ -121,6 +127,54 @@ ProcessLimits Grading::limits(const LabCases& lab, bool student) const {
     return l;
 }
 
+void Grading::check_cases() const {
+    // The TODO ids the kit's labs have: the reference's blocks, or in a student edition the starters' TODO comments.
+    std::set<std::string> todos;
+    static const std::regex id(R"((?://@solution |TODO\()(L[0-9]{2}-T[0-9]+))");
+    const KitLayout kit{kit_};
+    for (const fs::path& folder : {kit.solutions(), kit.labs()}) {
+        std::error_code ec;
+        for (auto it = fs::recursive_directory_iterator(folder, fs::directory_options::follow_directory_symlink, ec);
+             !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+            if (!it->is_regular_file(ec) || it->file_size(ec) > (1u << 20)) continue;
+            std::ifstream in(it->path());
+            for (std::string line; std::getline(in, line);)
+                for (std::sregex_iterator m(line.begin(), line.end(), id), end; m != end; ++m) todos.insert((*m)[1]);
+        }
+    }
+    for (std::size_t i = 0; i < labs_.size(); ++i) {
+        const LabCases& lab = labs_[i];
+        const fs::path file = KitLayout{kit_}.case_file(lab.lab);
+        for (const auto& c : lab.cases) {
+            const std::string where = (c.visibility == "public" ? file : hidden_case_file(kit_, lab.lab)).string() + ": case '" + c.name + "'";
+            if (!todos.empty() && !todos.count(c.todo)) throw Error(where + ": no lab has a TODO '" + c.todo + "'");
+            for (const auto& n : c.needs)
+                if (!todos.empty() && !todos.count(n)) throw Error(where + " needs '" + n + "', which no lab has");
+        }
+        // The settings, through the reference's own parameters (where it is built): `list` reads the public case file
+        // and refuses an unknown name or a value out of range at its file:line:column; with a hidden case's settings
+        // given, it applies those.
+        const fs::path reference = bin_ / (lab.lab + "_solution");
+        if (!fs::exists(reference)) continue;
+        const auto refused = [&](const std::vector<std::string>& settings) {
+            std::vector<std::string> argv{reference.string(), "list"};
+            for (const auto& s : settings) argv.insert(argv.end(), {"--set", s});
+            ProcessLimits l;
+            l.timeout = std::chrono::seconds(20);
+            const ProcessResult checked = run_process(argv, kit_, l, {"GSV_ROOT=" + kit_.string()});
+            if (checked.exit_code == 0) return std::string();
+            std::string why = checked.output;
+            if (const auto at = why.find(lab.lab + ": "); at != std::string::npos) why = why.substr(at + lab.lab.size() + 2);
+            return why.substr(0, why.find('\n'));
+        };
+        if (const std::string why = refused({}); !why.empty()) throw Error(why);
+        for (const auto& c : lab.cases)
+            if (c.visibility != "public")
+                if (const std::string why = refused(c.settings); !why.empty())
+                    throw Error(hidden_case_file(kit_, lab.lab).string() + ": case '" + c.name + "' (as drawn): " + why);
+    }
+}
+
 void Grading::load_labs() {
     std::vector<std::string> known;
     for (const auto& file : case_files(kit_)) {
@@ -163,6 +217,7 @@ void Grading::load_labs() {
             for (const auto& c : lab.cases) found = found || c.name == wanted;
         if (!found) throw Error("no case named '" + wanted + "' in the labs being graded (`<lab> list` and grader/cases/<lab>.json name them)");
     }
+    check_cases();
     if (!options_.todo.empty()) {
         std::size_t cases = 0;
         for (const auto& lab : labs_) cases += lab.cases.size();

@@ -7,7 +7,9 @@
 #include "grader/draw.h"
 #include "grader/grade.h"
 #include "grader/report.h"
+#include "grader/report_format.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <cstdlib>
@@ -183,6 +185,14 @@ int main(int argc, char** argv) {
         if (!quiet) {
             std::printf("%s", gsv::score_table(report).c_str());
             std::printf("reports (report.html, junit.xml, results.json, report.json) and images in %s\n", options.out_dir.c_str());
+        }
+        // A reference that failed is the kit's fault: no grade rests on it.
+        const auto kit_faults = std::count_if(report.results.begin(), report.results.end(),
+                                              [](const gsv::CaseResult& r) { return gsv::is_kit_fault(r.status); });
+        if (kit_faults > 0) {
+            std::fprintf(stderr, "gsv-grade: the reference failed on %ld checks (marked 'reference failed'): fix the kit before "
+                                 "grading; no grade was given\n", static_cast<long>(kit_faults));
+            return 2;
         }
         if (fail_under >= 0 && report.max_score() > 0 && report.score() < fail_under * report.max_score()) {
             std::fprintf(stderr, "gsv-grade: score %.1f / %.1f is under --fail-under %.2f\n", report.score(), report.max_score(), fail_under);

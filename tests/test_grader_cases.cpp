@@ -12,6 +12,7 @@
 #include <set>
 
 using namespace gsv;
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -183,4 +184,76 @@ TEST_CASE("cases: the arrays tolerance and a case's arrays are read, bad values 
     const auto hidden = dir.write("grader/hidden/lab05.json", R"({"lab": "lab05", "cases": [
         {"name": "h", "todo": "L05-T3", "settings": [], "draw": {}, "arrays": ["positions"]}]})");
     CHECK(test::gsv_error_message([&] { add_hidden_cases(lab, hidden, 1); }).find("hidden/lab05.json: case 'h' lists arrays") != std::string::npos);
+}
+
+TEST_CASE("cases: an instructor's mistake stops grading in one line before any student code runs", "[grader]") {
+    test::TempDir dir;
+    const auto kit = dir.path("kit");
+    fs::create_directories(kit / "grader" / "cases");
+    fs::create_directories(kit / "solutions");
+    fs::create_directory_symlink(test::source_root() / "solutions" / "lab02_lic", kit / "solutions" / "lab02_lic");
+    fs::create_directory_symlink(test::source_root() / "shaders", kit / "shaders");
+    fs::create_directory_symlink(test::source_root() / "data", kit / "data");
+    const std::string original = test::read_text(test::source_root() / "grader" / "cases" / "lab02.json");
+    GradeOptions options;
+    options.kit_root = kit;
+    options.bin_dir = test::bin_dir();
+    options.out_dir = dir.path("out");
+    options.labs = {"lab02"};
+    options.timing = false;
+    options.allow_readable_kit = true;
+    const auto with = [&](const std::string& from, const std::string& to) {
+        std::string text = original;
+        REQUIRE(text.find(from) != std::string::npos);
+        text.replace(text.find(from), from.size(), to);
+        std::ofstream(kit / "grader" / "cases" / "lab02.json") << text;
+    };
+    with("\"length=120\"", "\"lenght=120\"");
+    std::string message = test::gsv_error_message([&] { grade(options); });
+    CHECK(message.find("lab02.json:") != std::string::npos);
+    CHECK(message.find("case 'long': unknown parameter 'lenght'") != std::string::npos);
+    with("\"length=120\"", "\"length=9999\"");
+    message = test::gsv_error_message([&] { grade(options); });
+    CHECK(message.find("case 'long'") != std::string::npos);
+    CHECK(message.find("9999") != std::string::npos);
+    with("\"todo\": \"L02-T5\"", "\"todo\": \"L02-T9\"");
+    message = test::gsv_error_message([&] { grade(options); });
+    CHECK(message.find("case 'midpoint': no lab has a TODO 'L02-T9'") != std::string::npos);
+    // A hidden case as drawn: its settings go through the reference's parameters too.
+    with("\"length=120\"", "\"length=120\"");
+    fs::create_directories(kit / "grader" / "hidden");
+    std::ofstream(kit / "grader" / "hidden" / "lab02.json")
+        << R"({"lab": "lab02", "cases": [{"name": "far", "todo": "L02-T1", "settings": ["length=500"], "draw": {}}]})";
+    message = test::gsv_error_message([&] { grade(options); });
+    CHECK(message.find("hidden/lab02.json: case 'far' (as drawn): ") != std::string::npos);
+    CHECK(message.find("500") != std::string::npos);
+    CHECK(message.find('\n') == std::string::npos);
+}
+
+TEST_CASE("cases: a reference that fails to render ends grading with status 2, never a zero for the student", "[grader]") {
+    test::TempDir dir;
+    dir.write("kit/grader/cases/lab99.json", R"({"lab": "lab99", "size": "4x4", "timeout_s": 20,
+        "tolerance": {"live": {"max_channel_diff": 0, "max_differing_fraction": 0},
+                      "golden": {"max_channel_diff": 0, "max_differing_fraction": 0}},
+        "cases": [{"name": "only", "todo": "L99-T1", "points": 1, "settings": []}]})");
+    Image image(4, 4);
+    write_png(dir.path("picture.png"), image);
+    // The student's lab draws; the reference fails at render time (its `list` is fine).
+    const auto script = [&](const std::string& name, const std::string& body) {
+        const auto path = dir.write("bin/" + name, "#!/bin/sh\n" + body);
+        fs::permissions(path, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec | fs::perms::others_read | fs::perms::others_exec);
+    };
+    script("lab99", "out=\nwhile [ $# -gt 0 ]; do case \"$1\" in --out) out=$2; shift;; esac; shift; done\n"
+                    "printf ff >&3\ncp '" + dir.path("picture.png").string() + "' \"$out\"\necho '{}' > \"${out%.png}.json\"\n");
+    script("lab99_solution", "[ \"$1\" = list ] && exit 0\necho 'lab99: the reference broke' >&2\nexit 1\n");
+    ProcessLimits limits;
+    limits.timeout = std::chrono::seconds(60);
+    const ProcessResult graded = run_process({(test::bin_dir() / "gsv-grade").string(), "--kit", dir.path("kit").string(), "--bin",
+                                              dir.path("bin").string(), "--out", dir.path("out").string(), "--no-timing",
+                                              "--allow-readable-kit", "--no-sandbox"},
+                                             dir.path(), limits);
+    INFO(graded.output);
+    CHECK(graded.exit_code == 2);
+    CHECK(graded.output.find("the reference failed on 1 checks") != std::string::npos);
+    CHECK(graded.output.find("reference failed") != std::string::npos);
 }
