@@ -13,7 +13,9 @@
 # files that git does not ignore. Outside git, every file is copied but those excluded above and those matching
 # the kit's top-level .gitignore (simple patterns only).
 # Replaced or added in DEST: .ci/run (the student self-check), .github/workflows/self-check.yml (from
-# grader/ci/github-classroom.yml), STUDENT.md, and a first line in README.md pointing at it.
+# grader/ci/github-classroom.yml), and README.md, the student edition's own (its two commands work there). The lab
+# sheets lose what points at the reference or the tests; the slides keep the figures the edition ships (the golden
+# images) and name the ones only the reference renders.
 # DEST must not exist or be an empty folder, and must be outside the kit.
 set -euo pipefail
 
@@ -177,55 +179,91 @@ EOF
 chmod 755 "$dest_abs/.ci/run"
 cp "$root/grader/ci/github-classroom.yml" "$dest_abs/.github/workflows/self-check.yml"
 
-cat >"$dest_abs/STUDENT.md" <<'EOF'
-# Student edition
+# Its own README, whose two commands work here (the instructor's README names tests and solutions it lacks).
+cat >"$dest_abs/README.md" <<'EOF'
+# GPU Shaders for Visualization: student edition
 
-This is the student edition of the kit: the framework, the labs' starter code, and the grading cases with their
-golden images. It has no reference solutions, no test suite and no hidden grading cases.
+The framework, the labs' starter code, the slides, and the grading cases with their golden images. The reference
+solutions, the test suite and the hidden grading cases stay with your instructor.
+
+## Quick start (Debian 12 / Ubuntu; two commands)
+
+```sh
+scripts/kit grade                  # install what is missing, build, self-check every lab against the golden images
+scripts/kit grade --todo L01-T3    # build one lab and self-check one TODO's cases (the ids are in each lab sheet)
+```
+
+`scripts/kit grade --labs lab02` self-checks one lab. On macOS and Windows, `scripts/setup.sh` prints the Homebrew
+and vcpkg equivalents; then `cmake --preset default && cmake --build --preset default`.
 
 ## Your work
 
-- Edit the files in `labs/<lab>/` (for example `labs/lab01_gooch/`); each TODO has an id such as `L01-T3`, and
-  `labs/<lab>/README.md` describes it. Only `labs/` is graded: the instructor's grader builds your `labs/` against
-  its own copy of the framework, shaders and data, so changes anywhere else are not seen.
-- `build/bin/lab01` opens your lab in a window (shaders reload when saved); `build/bin/lab01 list` shows its
-  parameters and named cases; `build/bin/lab01 render --case phong --out phong.png` renders one headless.
+- Edit the files in `labs/<lab>/` (for example `labs/lab01_gooch/`). Each TODO has an id such as `L01-T3`; the lab
+  sheet, `labs/<lab>/README.md`, explains it and names its grading cases. Only `labs/` is graded: the instructor's
+  grader builds your `labs/` against its own copy of the framework, shaders and data, so changes anywhere else are
+  not seen.
+- `build/bin/lab01` opens your lab in a window (shaders reload when saved; H lists the keys); `build/bin/lab01 list`
+  shows its parameters and named cases; `build/bin/lab01 render --case phong --out phong.png` renders one headless.
 
 ## Self-check
 
-```sh
-scripts/kit grade                  # install what is missing, build, grade every lab
-scripts/kit grade --labs lab01     # one lab
-```
-
 The self-check renders each public case of `grader/cases/<lab>.json` with your lab and compares the image with the
-committed golden image in `grader/golden/<lab>/`, rendered by the reference solution. The tolerance is wide enough
-for another GPU or driver. It prints a score table and writes `build/grade-results/`: `report.html` (your image,
-the expected one and their difference side by side), `results.json`, `junit.xml`, and the images of each case.
-Every push runs the same check on GitHub (`.github/workflows/self-check.yml`, also `.ci/run`), and the reports
-are attached to the run as the artifact `grade-results`.
+committed golden image in `grader/golden/<lab>/`, rendered by the reference solution, with a tolerance wide enough
+for another GPU or driver. It prints a score table: each failing case says what is wrong (not done, which TODO it
+needs first, a compile error in your file, a wrong image) and the command that reproduces it. It writes
+`build/grade-results/`: `report.html` (your image, the expected one and where they differ, side by side),
+`results.json` and `junit.xml`. Every push runs the same check on GitHub (`.github/workflows/self-check.yml`, also
+`.ci/run`).
 
 ## What the instructor's grade adds
 
-- **Hidden cases**, drawn from a seed that is kept secret until after the due date: other settings (models,
-  scales, camera, mesh resolution, ...) for the same TODOs. Solve each TODO in general, not for the public cases.
-- **A live reference**: the reference solution renders each case on the grading machine, and your image must
-  match it with a tight tolerance.
-- **Timing**: cases whose frame time is compared with the reference's.
-- Each lab runs in a sandbox with limits on time, memory and output.
+- **Hidden cases**, drawn from a seed kept secret until after the due date: other settings (models, scales, camera,
+  resolutions, ...) for the same TODOs. Solve each TODO in general, not for the public cases.
+- **A live reference**: the reference solution renders each case on the grading machine, and your image must match
+  it with a tight tolerance.
+- **Timing**: cases whose frame time is compared with the reference's, measured by the grader's own clock.
+- Each build and run of your code is sandboxed: it sees only your lab and the kit's public files.
 
 So a full self-check score is a good sign, not a guarantee; a case that fails the self-check will almost surely fail
 the grade too.
+
+## Where things are
+
+`labs/` your code; `common/` the framework and `support/` the labs' shared domain code (read them, don't change them:
+the grader uses its own); `shaders/` shared GLSL; `data/` meshes and data sets (sources in `data/README.md`);
+`grader/` the grader, the public cases and the golden images; `slides/` a deck per lab (Markdown); `CONTRIBUTING.md`
+the kit's conventions for names and GLSL.
 EOF
 
-if [ -f "$dest_abs/README.md" ]; then
-  readme=$(cat "$dest_abs/README.md")
-  {
-    echo "> **Student edition**: see [STUDENT.md](STUDENT.md). The reference solutions, the test suite and the hidden"
-    echo "> grading cases are not included; \`scripts/kit grade\` self-checks your labs against the golden images."
-    echo
-    printf '%s\n' "$readme"
-  } >"$dest_abs/README.md"
+# The lab sheets as a student reads them: nothing that points at the reference or the test suite.
+for sheet in "$dest_abs"/labs/*/README.md; do
+  [ -f "$sheet" ] || continue
+  sed -i -e "/instructor's kit/d" \
+         -e '/^| your code | /d' \
+         -e 's/ and `build\/bin\/\(lab[0-9]*\)_solution` for the reference//' \
+         -e 's/\(lab[0-9][0-9]\)_solution/\1/g' \
+         -e 's/`*tests\/test_[a-z0-9_]*\.cpp`*\(, `*tests\/test_[a-z0-9_]*\.cpp`*\)*/the kit'"'"'s tests/g' \
+         "$sheet"
+done
+
+# The decks: a figure the edition ships stays; one that only the reference solutions render is named instead.
+if command -v python3 >/dev/null 2>&1; then
+  python3 - "$dest_abs" <<'PY'
+import os, re, sys
+root = sys.argv[1]
+figure = re.compile(r"!\[([^\]]*)\]\(([^)\s]+)\)(\{[^}]*\})?")
+for name in sorted(os.listdir(os.path.join(root, "slides"))):
+    if not name.endswith(".md"):
+        continue
+    path = os.path.join(root, "slides", name)
+    text = open(path, encoding="utf-8").read()
+    def keep(m):
+        target = os.path.normpath(os.path.join(root, "slides", m.group(2)))
+        if os.path.exists(target):
+            return m.group(0)
+        return f"*({m.group(1) or 'figure'}: rendered by the reference solution, in the instructor's edition)*"
+    open(path, "w", encoding="utf-8").write(figure.sub(keep, text))
+PY
 fi
 
 total=$(cd "$dest_abs" && find . -type f | wc -l | tr -d ' ')

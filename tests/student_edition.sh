@@ -27,7 +27,7 @@ tail -n 1 "$log"
 for p in solutions tests grader/hidden build grade-results .git; do
   [ ! -e "$kit/$p" ] || fail "$p was exported"
 done
-for p in labs/lab01_gooch grader/golden/lab01 grader/cases/lab01.json STUDENT.md .github/workflows/self-check.yml; do
+for p in labs/lab01_gooch grader/golden/lab01 grader/cases/lab01.json README.md .github/workflows/self-check.yml; do
   [ -e "$kit/$p" ] || fail "$p is missing from the export"
 done
 # The golden arrays (<case>.<array>.f32s) ship with the golden images: the self-check checks a lab's numbers too.
@@ -36,6 +36,24 @@ while IFS= read -r -d '' f; do
   [ -e "$kit/$rel" ] || fail "$rel is missing from the export"
 done < <(find "$root/grader/golden" -name '*.f32s' -print0)
 grep -q "scripts/kit grade" "$kit/.ci/run" || fail ".ci/run of the export does not run the self-check"
+# Its own README: two commands that work here, none that need what it lacks.
+grep -q "^scripts/kit grade  " "$kit/README.md" || fail "the export's README does not give 'scripts/kit grade'"
+grep -q "^scripts/kit grade --todo L01-T3" "$kit/README.md" || fail "the export's README does not give the per-TODO check"
+! grep -q "scripts/kit test" "$kit/README.md" || fail "the export's README names 'scripts/kit test', which it cannot run"
+# Lab sheets and decks that point at nothing the edition lacks.
+if grep -n "_solution\|tests/test_\|solutions/" "$kit"/labs/*/README.md; then fail "a lab sheet points at the reference or the tests (above)"; fi
+python3 - "$kit" <<'PY' || fail "a deck embeds a figure the edition has not got (above)"
+import os, re, sys
+root = sys.argv[1]
+missing = []
+for name in sorted(os.listdir(os.path.join(root, "slides"))):
+    if name.endswith(".md"):
+        for m in re.finditer(r"!\[[^\]]*\]\(([^)\s]+)\)", open(os.path.join(root, "slides", name), encoding="utf-8").read()):
+            if not os.path.exists(os.path.normpath(os.path.join(root, "slides", m.group(1)))):
+                missing.append(f"slides/{name}: {m.group(1)}")
+print("\n".join(missing))
+sys.exit(1 if missing else 0)
+PY
 if ! { [ -x "$kit/.ci/run" ] && [ -x "$kit/scripts/kit" ]; }; then fail "scripts lost their executable bit"; fi
 
 # DEST must be new or empty, and outside the kit.
@@ -45,10 +63,16 @@ run "$root/scripts/kit" export-student "$root/build-student-export-test" && fail
 [ ! -e "$root/build-student-export-test" ] || fail "a refused export left $root/build-student-export-test behind"
 
 # Configure and build the export on its own: no solutions/, no tests/.
-step "configure the export"
-run cmake -S "$kit" -B "$kit/build" -G Ninja -DCMAKE_BUILD_TYPE=Release || fail "the export does not configure"
-step "build lab01 and gsv-grade"
-run cmake --build "$kit/build" --target lab01 gsv-grade -j 2 || fail "the export does not build"
+# The README's per-TODO command, as written: set-up, configure, build lab01 and the grader only, self-check one TODO.
+step "scripts/kit grade --todo L01-T1 in the export"
+(cd "$kit" && run scripts/kit grade --todo L01-T1) || fail "the export's 'scripts/kit grade --todo L01-T1' failed"
+python3 - "$kit/build/grade-results/results.json" <<'PY' || fail "the per-TODO self-check graded other TODOs, or gave the starter points"
+import json, sys
+tests = json.load(open(sys.argv[1]))["tests"]
+bad = [t["name"] for t in tests if "L01-T1" not in t.get("tags", []) or float(t["score"]) != 0]
+print(f"{len(tests)} checks of L01-T1, all 0 points" if tests and not bad else f"checks: {[t['name'] for t in tests]}, wrong: {bad}")
+sys.exit(0 if tests and not bad else 1)
+PY
 [ ! -e "$kit/build/bin/lab01_solution" ] || fail "the export built lab01_solution"
 
 # Grades the export's labs (self-check, as a student would) into $1 and checks results.json (Gradescope shape;

@@ -206,8 +206,9 @@ TEST_CASE("every lab: the solution scores full marks against the goldens and liv
     std::set<std::string> todos_failed, todos;
     for (const auto& r : grade(options).results) {
         INFO(r.name << ": " << status_name(r.status) << " " << r.detail);
-        // It ran and rendered, and the image is wrong (flat "not done" magenta counts as blank).
-        CHECK((r.status == CaseStatus::WrongImage || r.status == CaseStatus::BlankImage));
+        // It ran and rendered, and says why it lost the points: not done, another TODO first, or a wrong image.
+        CHECK((r.status == CaseStatus::NotDone || r.status == CaseStatus::NeedsFirst || r.status == CaseStatus::WrongImage ||
+               r.status == CaseStatus::BlankImage || r.status == CaseStatus::WrongData));
         todos.insert(r.todo);
         if (r.points == 0) todos_failed.insert(r.todo);
     }
