@@ -31,6 +31,7 @@ std::map<std::string, std::vector<std::string>> todo_files(const std::string& la
 struct Outcome {
     bool lost = false;    // some case of the TODO lost points
     std::string details;  // a line per case
+    std::string log;      // the output of the first case that lost points
 };
 
 // Grades the cases of `todo` (public ones, untimed), against the live reference or the goldens.
@@ -42,6 +43,7 @@ Outcome grade_todo(GradeOptions options, const std::string& todo, bool self_chec
     options.reference_cache = cache;
     Outcome o;
     for (const auto& r : grade(options).results) {
+        if (r.points < r.max_points && !o.lost) o.log = r.output.substr(0, 3000);
         o.lost = o.lost || r.points < r.max_points;
         o.details += r.name + ": " + status_name(r.status) + " " + r.detail + "\n";
     }
@@ -71,9 +73,11 @@ TEST_CASE("every TODO: left undone or with a classic bug it loses points, live a
         for (const auto& [todo, files] : todos) {
             if (std::any_of(files.begin(), files.end(), is_cpp)) continue;  // C++ TODOs: the test below builds them
             mutants.push_back({todo, todo + " left undone", [todo = todo, files = files](const std::filesystem::path& folder) {
-                                   for (const auto& file : files)
-                                       std::ofstream(folder / file, std::ios::binary)
-                                           << make_starter(test::read_text(folder / file), file, todo).text;
+                                   // Read before the stream truncates the file: `a << b` runs a first.
+                                   for (const auto& file : files) {
+                                       const std::string undone = make_starter(test::read_text(folder / file), file, todo).text;
+                                       std::ofstream(folder / file, std::ios::binary) << undone;
+                                   }
                                }});
         }
         std::map<std::string, int> classic;
@@ -163,4 +167,102 @@ TEST_CASE("grader: a shader doing sixteen times the work is too slow, though its
         }
     }
     CHECK(timed_faults == 1);
+}
+
+namespace {
+
+// A TODO's block of C++ (//@solution ... //@starter ... //@end) becomes a choice made at run time, so that one
+// build holds the solution, the TODO left undone and each classic bug: $GSV_TEST_MUTANT picks (the grader passes
+// GSV_ variables on to student processes).
+std::string switch_blocks(const std::string& text, const std::string& file, const Json& cpp_mutants) {
+    std::istringstream in(text);
+    std::string out = "bool gsv_test_mutant_is(const char* name);\n", line, todo, solution, starter;
+    enum { Both, Solution, Starter } state = Both;
+    while (std::getline(in, line)) {
+        const auto marker = line.find_first_not_of(" \t");
+        const std::string t = marker == std::string::npos ? "" : line.substr(marker);
+        if (t.rfind("//@solution", 0) == 0) {
+            todo = t.substr(12);
+            solution.clear();
+            starter.clear();
+            state = Solution;
+        } else if (t == "//@starter") {
+            state = Starter;
+        } else if (t == "//@end") {
+            out += "if (gsv_test_mutant_is(\"" + todo + " left undone\")) {\n" + starter + "}";
+            for (const Json& m : cpp_mutants.as_array()) {
+                if (m.string_at("file") != file || m.string_at("todo") != todo) continue;
+                std::string bugged = solution;
+                const auto at = bugged.find(m.string_at("find"));
+                if (at == std::string::npos) FAIL("cpp mutant '" << m.string_at("name") << "': its find is not in " << todo << "'s block");
+                bugged.replace(at, m.string_at("find").size(), m.string_at("replace"));
+                out += " else if (gsv_test_mutant_is(\"" + m.string_at("name") + "\")) {\n" + bugged + "}";
+            }
+            out += " else {\n" + solution + "}\n";
+            state = Both;
+        } else if (state == Solution) {
+            solution += line + "\n";
+        } else if (state == Starter) {
+            starter += line.substr(line.find("//") + 2) + "\n";
+        } else {
+            out += line + "\n";
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("every C++ TODO: left undone or with a classic bug it loses points, live and in the self-check", "[.][grader][mutants]") {
+    const auto cache = std::make_shared<ReferenceCache>();
+    for (const auto& lab : test::labs_with_mutants()) {
+        const Json spec = test::mutant_spec(lab);
+        const std::string lab_dir = spec.string_at("lab_dir");
+        std::vector<std::string> cpp_todos;
+        for (const auto& [todo, files] : todo_files(lab_dir))
+            if (std::any_of(files.begin(), files.end(), is_cpp)) cpp_todos.push_back(todo);
+        if (cpp_todos.empty()) continue;
+        const Json none = Json::array();
+        const Json& cpp_mutants = spec.contains("cpp_mutants") ? spec.array_at("cpp_mutants") : none;
+        // One submission: the reference with every C++ TODO block switched at run time.
+        test::TempDir dir;
+        const auto folder = dir.path("submission/labs") / lab_dir;
+        std::filesystem::create_directories(folder.parent_path());
+        std::filesystem::copy(test::source_root() / "solutions" / lab_dir, folder, std::filesystem::copy_options::recursive);
+        for (const auto& e : std::filesystem::directory_iterator(folder))
+            if (is_cpp(e.path().filename().string())) {
+                const std::string switched = switch_blocks(test::read_text(e.path()), e.path().filename().string(), cpp_mutants);
+                std::ofstream(e.path(), std::ios::binary) << switched;
+            }
+        std::ofstream(folder / "mutant_switch.cpp")
+            << "#include <cstdlib>\n#include <cstring>\nbool gsv_test_mutant_is(const char* name) {\n"
+               "    const char* chosen = std::getenv(\"GSV_TEST_MUTANT\");\n    return chosen && std::strcmp(chosen, name) == 0;\n}\n";
+        GradeOptions built = test::instructor_options(lab, dir.path("built"));
+        built.submission = dir.path("submission");
+        for (const auto& todo : cpp_todos) {
+            // The build, graded as it is: the solution, full marks.
+            const Outcome unchanged = grade_todo(built, todo, false, cache);
+            INFO(lab << ": the switched build as the solution:\n" << unchanged.details << unchanged.log);
+            REQUIRE_FALSE(unchanged.lost);
+        }
+        GradeOptions options = test::instructor_options(lab, dir.path("out"));
+        options.student_bin_dir = dir.path("built/submission-build/build/bin");
+        options.student_root = dir.path("built/submission-build/kit");
+        std::vector<std::pair<std::string, std::string>> mutants;  // todo, name
+        for (const auto& todo : cpp_todos) mutants.push_back({todo, todo + " left undone"});
+        for (const Json& m : cpp_mutants.as_array()) mutants.push_back({m.string_at("todo"), m.string_at("name")});
+        for (const auto& todo : cpp_todos) {
+            const auto n = std::count_if(mutants.begin(), mutants.end(), [&](const auto& m) { return m.first == todo; });
+            INFO(lab << ": classic bugs of " << todo << " in cpp_mutants");
+            CHECK(n - 1 >= 3);
+        }
+        for (const bool self_check : {true, false})
+            for (const auto& [todo, name] : mutants) {
+                setenv("GSV_TEST_MUTANT", name.c_str(), 1);
+                const Outcome o = grade_todo(options, todo, self_check, cache);
+                unsetenv("GSV_TEST_MUTANT");
+                INFO(lab << " (" << (self_check ? "self-check" : "live") << ") C++ mutant '" << name << "' of " << todo << ":\n" << o.details);
+                CHECK(o.lost);
+            }
+    }
 }
