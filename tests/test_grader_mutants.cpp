@@ -50,18 +50,14 @@ Outcome grade_todo(GradeOptions options, const std::string& todo, bool self_chec
     return o;
 }
 
-}  // namespace
-
 // The mutation test of the grading cases: for each TODO the reference with that TODO left as the starter has it, and
 // the classic bugs in tests/mutants/<lab>.json, must each lose points on a case of that TODO, against the live
-// reference AND against the golden images (what students run); the correct variants beside them must not.
-TEST_CASE("every TODO: left undone or with a classic bug it loses points, live and in the self-check; correct variants do not", "[.][grader][mutants]") {
+// reference AND against the golden images (what students run); the correct variants beside them must not. A test
+// case a lab, so that ctest spreads them over the cores.
+void mutation_test(const std::string& lab) {
     const auto cache = std::make_shared<ReferenceCache>();
     std::string summary = "lab    mode        killed / mutants, variants kept\n";
-    // GSV_TEST_LABS=lab02,lab03 narrows the run while a lab's mutants are being written.
-    const char* only = std::getenv("GSV_TEST_LABS");
-    for (const auto& lab : test::labs_with_mutants()) {
-        if (only && std::string(",") .append(only).append(",").find("," + lab + ",") == std::string::npos) continue;
+    {
         const Json spec = test::mutant_spec(lab);
         const std::string lab_dir = spec.string_at("lab_dir");
         const auto todos = todo_files(lab_dir);
@@ -115,6 +111,20 @@ TEST_CASE("every TODO: left undone or with a classic bug it loses points, live a
         }
     }
     WARN(summary);
+}
+
+}  // namespace
+
+TEST_CASE("lab01: every TODO left undone or with a classic bug loses points, live and in the self-check, variants do not", "[grader][mutants]") { mutation_test("lab01"); }
+TEST_CASE("lab02: every TODO left undone or with a classic bug loses points, live and in the self-check, variants do not", "[grader][mutants]") { mutation_test("lab02"); }
+TEST_CASE("lab03: every TODO left undone or with a classic bug loses points, live and in the self-check, variants do not", "[grader][mutants]") { mutation_test("lab03"); }
+TEST_CASE("lab04: every TODO left undone or with a classic bug loses points, live and in the self-check, variants do not", "[grader][mutants]") { mutation_test("lab04"); }
+TEST_CASE("lab05: every TODO left undone or with a classic bug loses points, live and in the self-check, variants do not", "[grader][mutants][gl43]") { mutation_test("lab05"); }
+TEST_CASE("lab06: every TODO left undone or with a classic bug loses points, live and in the self-check, variants do not", "[grader][mutants]") { mutation_test("lab06"); }
+TEST_CASE("lab07: every TODO left undone or with a classic bug loses points, live and in the self-check, variants do not", "[grader][mutants]") { mutation_test("lab07"); }
+
+TEST_CASE("every lab has a mutation test above", "[grader][mutants]") {
+    CHECK(test::labs_with_mutants() == std::vector<std::string>{"lab01", "lab02", "lab03", "lab04", "lab05", "lab06", "lab07"});
 }
 
 TEST_CASE("grader: planted shader faults each get their own status, and every case is still graded", "[grader]") {
@@ -213,7 +223,7 @@ std::string switch_blocks(const std::string& text, const std::string& file, cons
 
 }  // namespace
 
-TEST_CASE("every C++ TODO: left undone or with a classic bug it loses points, live and in the self-check", "[.][grader][mutants]") {
+TEST_CASE("every C++ TODO: left undone or with a classic bug it loses points, live and in the self-check", "[grader][mutants]") {
     const auto cache = std::make_shared<ReferenceCache>();
     for (const auto& lab : test::labs_with_mutants()) {
         const Json spec = test::mutant_spec(lab);

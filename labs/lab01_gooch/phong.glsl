@@ -7,7 +7,7 @@ uniform float uSpecularStrength;  // strength of the white highlight
 
 // TODO(L01-T2): the diffuse (Lambert) term. n and l are unit vectors in eye space.
 // Light arriving from behind the surface (n.l < 0) adds nothing; keep a little ambient light
-// (0.15 of k_d) so the unlit side is not pure black.
+// (0.15 of k_d) so the unlit side is not pure black: k_d (0.15 + 0.85 max(n.l, 0)), never above k_d.
 vec3 diffuse(vec3 n, vec3 l, vec3 kd) {
     return kNotDone;
 }

@@ -12,8 +12,9 @@ vec2 flowAt(vec2 st) {
 // long as fast ones.
 vec2 stepDirection(vec2 v) {
 #ifdef EFFECT_NORMALIZED
-    // TODO(L02-T4): a unit vector along v (one texel per step). At a zero of the field (the centre
-    // of a source, a vortex, a saddle) there is no direction: stay put rather than divide by zero.
+    // TODO(L02-T4): a unit vector along v (one texel per step, however slow the flow). At a zero of
+    // the field (the centre of a source, a vortex, a saddle) there is no direction: stay put rather
+    // than divide by zero.
     // (normalize(0) is NaN; a NaN position fails every comparison, so only streamlineContinues
     // would stop it, and a GPU need not even honour that.)
 //@solution L02-T4
