@@ -298,7 +298,7 @@ TEST_CASE("lab01: assets are found from any working directory, never through it"
     CHECK(run.exit_code() == 0);
 }
 
-TEST_CASE("lab01: sweep mode writes the accuracy-vs-time table, CSV and plot", "[labs]") {
+TEST_CASE("lab01: sweep mode measures both shading rates against the exact sphere, as a table, CSV and plots", "[labs]") {
     const auto dir = test::temp_dir("sweep");
     const auto run = test::run_lab("lab01_solution",
                                    {"sweep", "--size", "128x128", "--frames", "1", "--warmup", "0", "--out-dir", dir.string()},
@@ -308,32 +308,42 @@ TEST_CASE("lab01: sweep mode writes the accuracy-vs-time table, CSV and plot", "
     const std::string csv = test::read_text(dir / "lab01-sweep.csv");
     const auto rows = test::lines_of(csv);
     REQUIRE(rows.size() == 1 + 2 * 10);  // header, 2 shading rates x 10 resolutions
-    CHECK(rows[0] == "shading_rate,mesh_resolution,median_ms,min_ms,rmse,max_diff,normal_err_mean_deg,normal_err_max_deg");
-    auto column = [&](const std::string& row, int k) {
-        std::stringstream s(row);
-        std::string cell;
-        for (int i = 0; i <= k; ++i) std::getline(s, cell, ',');
-        return std::stod(cell);
-    };
-    // Per fragment, the error against the converged reference falls as the mesh is refined...
-    const std::string coarse = rows[11], fine = rows[20];
-    REQUIRE(coarse.rfind("fragment,6,", 0) == 0);
-    REQUIRE(fine.rfind("fragment,512,", 0) == 0);
-    CHECK(column(fine, 4) < 0.25 * column(coarse, 4));
-    // ...and the normal error shrinks with the segment angle (about 360/6/2 degrees at 6 segments).
-    CHECK(column(coarse, 7) > 5.0);
-    CHECK(column(fine, 7) < 0.5);
-    // Where the outline has converged (128 segments), lighting per vertex still errs where per fragment does not.
+    const std::string& header = rows[0];
+    CHECK(header == "shading_rate,mesh_resolution,median_ms,min_ms,rmse,max_diff,shading_err_mean,shading_err_max,"
+                    "normal_err_mean_deg,normal_err_max_deg,p25_ms,p75_ms,reference");
+    // The reference is named in words: the exact sphere, not the finest mesh.
+    CHECK(rows[1].find(",the exact sphere, ray-cast") == std::string::npos);  // commas in a cell would split it
+    CHECK(rows[1].find("the exact sphere; ray-cast at each pixel and lit with its exact normal") != std::string::npos);
+    auto value = [&](int row, const std::string& name) { return test::csv_value(header, rows[row], name); };
+    REQUIRE(rows[1].rfind("vertex,6,", 0) == 0);
     REQUIRE(rows[8].rfind("vertex,128,", 0) == 0);
+    REQUIRE(rows[11].rfind("fragment,6,", 0) == 0);
     REQUIRE(rows[18].rfind("fragment,128,", 0) == 0);
-    CHECK(column(rows[8], 4) > 1.5 * column(rows[18], 4));
+    REQUIRE(rows[20].rfind("fragment,512,", 0) == 0);
+    // Against the exact sphere, the image error falls as the mesh is refined, to far below one level...
+    CHECK(value(20, "rmse") < 0.25 * value(11, "rmse"));
+    CHECK(value(20, "rmse") < 0.2);
+    CHECK(value(10, "rmse") < 0.2);
+    // ...and so does the normal per fragment lights with (about 360/6/2 degrees at 6 segments).
+    CHECK(value(11, "normal_err_mean_deg") > 5.0);
+    CHECK(value(20, "normal_err_mean_deg") < 0.5);
+    // Per vertex lights with no interpolated normal: no normal error is claimed for it.
+    CHECK(test::count_of(rows[1], ",,") >= 1);
+    CHECK_THROWS(value(1, "normal_err_mean_deg"));
+    // Where the outline has converged (128 segments), what per vertex lights with still errs about twice as much
+    // as per fragment (0.056 and 0.026 levels measured).
+    CHECK(value(8, "shading_err_mean") > 1.5 * value(18, "shading_err_mean"));
     CHECK(fs::exists(dir / "lab01-sweep.gp"));
+    CHECK(fs::exists(dir / "lab01-tradeoff.gp"));
     // The same rows as a Markdown table for the slides: a header, a separator and one line per row.
     const std::string md = test::read_text(dir / "lab01-sweep.md");
-    CHECK(md.rfind("| shading_rate | mesh_resolution | ms/frame | RMSE | max diff |", 0) == 0);
+    CHECK(md.rfind("| shading_rate | mesh_resolution | ms/frame (spread) | RMSE | max diff |", 0) == 0);
     CHECK(md.find("\n| fragment | 512 | ") != std::string::npos);
     CHECK(test::count_of(md, "\n| ") == 1 + 20);  // the separator, then 2 shading rates x 10 resolutions
-    if (std::system("command -v gnuplot >/dev/null 2>&1") == 0) CHECK(fs::file_size(dir / "lab01-sweep.png") > 1000);
+    if (std::system("command -v gnuplot >/dev/null 2>&1") == 0) {
+        CHECK(fs::file_size(dir / "lab01-sweep.png") > 1000);
+        CHECK(fs::file_size(dir / "lab01-tradeoff.png") > 1000);
+    }
 }
 
 TEST_CASE("sweep report: a measure only some rows have gets one column, blank or '-' where a row lacks it", "[labs]") {
@@ -341,16 +351,21 @@ TEST_CASE("sweep report: a measure only some rows have gets one column, blank or
     report.lab = "labX";
     report.knob = "k";
     report.series = "mode";
-    report.rows = {{"a", "1", 2.0, 2.0, 0.5, 3, {{"shared", 1.0}}},
-                   {"b", "1", 4.0, 4.0, 0.25, 2, {{"only_b", 7.0}, {"shared", 2.0}}}};
+    report.reference_name = "the exact answer, analytic";
+    report.rows = {{"a", "1", 2.0, 2.0, 1.5, 2.5, 0.5, 3, {{"shared", 1.0}}},
+                   {"b", "1", 4.0, 4.0, 3.5, 4.5, 0.25, 2, {{"only_b", 7.0}, {"shared", 2.0}}}};
     const auto csv = test::lines_of(report.csv());
     REQUIRE(csv.size() == 3);
-    CHECK(csv[0] == "mode,k,median_ms,min_ms,rmse,max_diff,shared,only_b");
-    CHECK(csv[1] == "a,1,2.0000,2.0000,0.5000,3,1,");
-    CHECK(csv[2] == "b,1,4.0000,4.0000,0.2500,2,2,7");
+    // The spread and the reference in words come last, so a column's number does not depend on them.
+    CHECK(csv[0] == "mode,k,median_ms,min_ms,rmse,max_diff,shared,only_b,p25_ms,p75_ms,reference");
+    CHECK(csv[1] == "a,1,2.0000,2.0000,0.5000,3,1,,1.5000,2.5000,the exact answer; analytic");
+    CHECK(csv[2] == "b,1,4.0000,4.0000,0.2500,2,2,7,3.5000,4.5000,the exact answer; analytic");
     const std::string md = report.markdown();
-    CHECK(md.find("| mode | k | ms/frame | RMSE | max diff | shared | only_b |") == 0);
-    CHECK(md.find("| a | 1 | 2 | 0.5 | 3 | 1 | - |") != std::string::npos);
-    CHECK(md.find("| b | 1 | 4 | 0.25 | 2 | 2 | 7 |") != std::string::npos);
-    CHECK(report.table().find("only_b") != std::string::npos);
+    CHECK(md.find("| mode | k | ms/frame (spread) | RMSE | max diff | shared | only_b |") == 0);
+    CHECK(md.find("| a | 1 | 2 (1.5-2.5) | 0.5 | 3 | 1 | - |") != std::string::npos);
+    CHECK(md.find("| b | 1 | 4 (3.5-4.5) | 0.25 | 2 | 2 | 7 |") != std::string::npos);
+    CHECK(md.find("error against the exact answer, analytic") != std::string::npos);
+    const std::string table = report.table();
+    CHECK(table.find("only_b") != std::string::npos);
+    CHECK(table.find("error against the exact answer, analytic") != std::string::npos);
 }

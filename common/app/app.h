@@ -7,6 +7,7 @@
 #include "common/app/case_file.h"
 #include "common/app/params.h"
 #include "common/context/context.h"
+#include "common/image/image.h"
 #include "common/io/data_array.h"
 #include "common/scene/transforms.h"
 #include "common/shader/shader_library.h"
@@ -14,6 +15,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -52,8 +54,17 @@ public:
     // A parameter changed (window keys, the next sweep point or animation frame): rebuild what depends on it,
     // e.g. a mesh.
     virtual void params_changed(LabKit&) {}
-    // The settings of the converged reference a sweep measures error against; empty: the knob's last value.
+    // The settings of the reference a sweep measures error against; empty: the knob's last value.
     virtual std::vector<std::string> sweep_reference() const { return {}; }
+    // That reference in words, for the table, the CSV and the slides ("LIC along the exact streamlines, in double
+    // precision on the CPU"); empty: its settings, said to be the most accurate setting.
+    virtual std::string sweep_reference_name() const { return {}; }
+    // The next refinement of sweep_reference(), to show it converged: the sweep draws both and reports whether their
+    // difference is below the smallest error it measured. Empty: exact, or no claim.
+    virtual std::vector<std::string> sweep_reference_refinement() const { return {}; }
+    // An exact reference image for the current settings, drawn by the lab itself (on the CPU, in double): the sweep's
+    // error is then against it rather than against a rendered sweep_reference(). None: not available.
+    virtual std::optional<Image> sweep_exact_image(LabKit&, const Frame&) { return std::nullopt; }
     // True: each curve of the series is measured against the reference drawn with its own series value
     // (lab 06: an isosurface against an isosurface, not against DVR). False: one reference for all curves.
     virtual bool sweep_reference_per_series() const { return false; }

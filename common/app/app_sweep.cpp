@@ -1,7 +1,9 @@
-// Sweep mode: what accuracy costs in time. Steps the lab's accuracy knob, times each setting and
-// measures its error against a converged reference, then prints a table and writes a CSV and a plot.
+// Sweep mode: what accuracy costs in time. Steps the lab's accuracy knob; measures each setting's error against the
+// lab's reference (exact where the lab draws one, else a rendered one, named and checked for convergence); then times
+// every setting interleaved with the others; prints a table and writes a CSV, a Markdown table and plots.
 #include "common/app/app_session.h"
 #include "common/app/sweep_report.h"
+#include "common/core/number_text.h"
 #include "common/core/error.h"
 #include "common/gl/framebuffer.h"
 #include "common/gl/gl.h"
@@ -9,16 +11,14 @@
 #include "common/image/image_compare.h"
 #include "common/timing/timing.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
+#include <optional>
 
 namespace gsv {
 namespace {
-
-struct Rendered {
-    Image image;
-    TimingStats timing;
-};
 
 // The swept parameter and its values: the lab's accuracy knob, or --knob NAME --values A,B,C.
 struct SweepAxis {
@@ -66,20 +66,25 @@ int run_sweep(Session& s) {
     const Frame frame{width, height, 0.0};
     const int warmup = s.options.warmup >= 0 ? s.options.warmup : 2;
     const int frames = s.options.frames > 0 ? s.options.frames : 9;
+    // Frames are timed in rounds over every point (A B C ... A B C ...): three rounds where the frames allow.
+    const int rounds = std::min(3, frames);
+    const int frames_per_round = std::max(1, frames / rounds);
     const Params base = s.params;
 
-    auto render_with = [&](const std::vector<std::string>& settings, int timed_frames) {
+    auto use = [&](const std::vector<std::string>& settings) {
         s.params = base;
         for (const auto& setting : settings) s.params.set_assignment(setting);
         if (auto error = s.sync_params()) throw Error(*error);
-        Rendered r;
-        r.timing = time_frames([&] {
-            target.bind();
-            s.render_frame(frame);
-        }, warmup, timed_frames);
+    };
+    auto draw = [&] {
+        target.bind();
+        s.render_frame(frame);
+    };
+    auto image_with = [&](const std::vector<std::string>& settings) {
+        use(settings);
+        time_frames(draw, 1, 1);
         check_gl_error("rendering a sweep point");
-        r.image = target.read_rgba8();
-        return r;
+        return target.read_rgba8();
     };
 
     // The lab's reference belongs to its own knob; another knob converges at its last value.
@@ -90,28 +95,32 @@ int run_sweep(Session& s) {
     for (const auto& series_value : per_series ? series_values : std::vector<std::string>{""}) {
         std::vector<std::string> settings = reference_settings;
         if (per_series) settings.push_back(series_name + "=" + series_value);
-        references.push_back(render_with(settings, 1).image);
+        references.push_back(image_with(settings));
     }
-    if (per_series) reference_settings.push_back(series_name + "=<each curve's>");
 
     SweepReport report;
     report.lab = s.info.id;
     report.knob = knob_name;
     report.series = series_name;
     report.reference = reference_settings;
+    if (per_series) report.reference.push_back(series_name + "=<each curve's>");
     report.gl = s.context->describe();
     report.width = width;
     report.height = height;
     report.plotted_error = s.lab->sweep_error_column();
+
+    // First what each point draws and how far it is from the reference; the times after, interleaved.
+    std::vector<std::vector<std::string>> point_settings;
+    bool exact = false;
     for (std::size_t curve = 0; curve < series_values.size(); ++curve) {
         const std::string& series_value = series_values[curve];
         const Image& reference = references[per_series ? curve : 0];
         for (const auto& knob_value : knob_values) {
             std::vector<std::string> settings{knob_name + "=" + knob_value};
             if (!series_name.empty()) settings.push_back(series_name + "=" + series_value);
-            Rendered r;
+            Image image;
             try {
-                r = render_with(settings, frames);
+                image = image_with(settings);
             } catch (const UnsupportedError& e) {
                 // A point this GPU cannot draw (lab 03's separate textures past the unit limit) is left out,
                 // said once, and the rest of the sweep goes on.
@@ -119,19 +128,69 @@ int run_sweep(Session& s) {
                              knob_name.c_str(), knob_value.c_str(), e.what());
                 continue;
             }
-            const ImageDiff diff = compare_images(r.image, reference, ImageTolerance{});
+            const std::optional<Image> exact_image = axis.lab_knob ? s.lab->sweep_exact_image(*s.kit, frame) : std::nullopt;
+            exact = exact || exact_image.has_value();
+            const ImageDiff diff = compare_images(image, exact_image ? *exact_image : reference, ImageTolerance{});
             SweepRow row;
             row.series = series_value;
             row.knob = knob_value;
-            row.median_ms = r.timing.median_ms;
-            row.min_ms = r.timing.min_ms;
             row.rmse = diff.rmse;
             row.max_diff = diff.max_channel_diff;
             row.extra = s.lab->sweep_metrics(*s.kit, frame);
             report.rows.push_back(row);
-            std::fprintf(stderr, "  %s%s%s %s=%s: %.3f ms, rmse %.3f\n", series_name.c_str(), series_name.empty() ? "" : "=",
-                         series_value.c_str(), knob_name.c_str(), knob_value.c_str(), row.median_ms, row.rmse);
+            point_settings.push_back(settings);
         }
+    }
+
+    // The reference in words, and whether it is shown to be converged.
+    const std::string named = axis.lab_knob ? s.lab->sweep_reference_name() : std::string();
+    std::string joined;
+    for (const auto& r : reference_settings) joined += (joined.empty() ? "" : " ") + r;
+    if (exact) {
+        report.reference_name = named.empty() ? "an exact image the lab draws" : named;
+    } else {
+        const bool lab_reference = axis.lab_knob && !s.lab->sweep_reference().empty();
+        report.reference_name = !named.empty()   ? named + " (" + joined + ")"
+                                : lab_reference ? joined
+                                                : joined + " (the last value swept; not shown converged)";
+        const std::vector<std::string> refinement = axis.lab_knob ? s.lab->sweep_reference_refinement() : std::vector<std::string>{};
+        if (!refinement.empty()) {
+            // Each reference against its own refinement; the worst of them is reported, beside the smallest
+            // error measured against it.
+            std::string next;
+            for (const auto& r : refinement) next += (next.empty() ? "" : " ") + r;
+            bool converged = true;
+            double worst_change = 0, smallest_beside = 0;
+            for (std::size_t i = 0; i < references.size(); ++i) {
+                std::vector<std::string> settings = refinement;
+                if (per_series) settings.push_back(series_name + "=" + series_values[i]);
+                const double change = compare_images(image_with(settings), references[i], ImageTolerance{}).rmse;
+                double smallest = -1;
+                for (const auto& r : report.rows)
+                    if ((!per_series || r.series == series_values[i]) && r.rmse > 0 && (smallest < 0 || r.rmse < smallest))
+                        smallest = r.rmse;
+                if (i == 0 || change > worst_change) worst_change = change, smallest_beside = smallest;
+                if (smallest >= 0 && change >= smallest) converged = false;
+            }
+            report.reference_name += std::string(converged ? "; converged: " : "; NOT shown converged: ") + "its refinement " + next +
+                                     " changes it by RMSE " + format_number(worst_change, 3);
+            if (smallest_beside >= 0)
+                report.reference_name += std::string(converged ? ", below" : ", not below") + " the smallest error measured against it, " +
+                                         format_number(smallest_beside, 3);
+        }
+    }
+
+    std::vector<std::function<void()>> prepare;
+    for (const auto& settings : point_settings) prepare.push_back([&, settings] { use(settings); });
+    const std::vector<TimingStats> times = time_interleaved(prepare, draw, warmup, frames_per_round, rounds);
+    for (std::size_t i = 0; i < report.rows.size(); ++i) {
+        SweepRow& row = report.rows[i];
+        row.median_ms = times[i].median_ms;
+        row.min_ms = times[i].min_ms;
+        row.p25_ms = times[i].p25_ms;
+        row.p75_ms = times[i].p75_ms;
+        std::fprintf(stderr, "  %s%s%s %s=%s: %.3f ms [%.3f, %.3f], rmse %.3f\n", series_name.c_str(), series_name.empty() ? "" : "=",
+                     row.series.c_str(), knob_name.c_str(), row.knob.c_str(), row.median_ms, row.p25_ms, row.p75_ms, row.rmse);
     }
     s.params = base;
 

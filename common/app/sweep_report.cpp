@@ -4,6 +4,7 @@
 #include "common/core/number_text.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -53,21 +54,21 @@ const double* extra_value(const SweepRow& row, const std::string& name) {
 std::string SweepReport::table() const {
     std::ostringstream out;
     out << lab << " sweep of " << knob << " at " << width << "x" << height << " on " << gl << "\n";
-    out << "error is measured against the converged reference:";
-    for (const auto& r : reference) out << " " << r;
-    out << "\n";
+    out << "error against " << reference_name << "\n";
+    out << "times: the median of the frames, timed interleaved with every other setting; spread: the middle half\n";
     const double base_ms = rows.empty() ? 1.0 : rows.front().median_ms;
     char line[512];
-    std::snprintf(line, sizeof line, "%-12s %-10s %10s %8s %10s %8s", series.empty() ? "" : series.c_str(),
-                  knob.c_str(), "ms/frame", "x first", "RMSE", "max diff");
+    std::snprintf(line, sizeof line, "%-12s %-10s %10s %17s %8s %10s %8s", series.empty() ? "" : series.c_str(),
+                  knob.c_str(), "ms/frame", "spread", "x first", "RMSE", "max diff");
     out << line;
     const std::vector<std::string> extras = extra_columns(rows);
     for (const auto& name : extras) out << " " << std::string(14 - std::min<std::size_t>(14, name.size()), ' ') << name;
     // Values are right-aligned under their names, however long the names are.
     out << "\n";
     for (const auto& r : rows) {
-        std::snprintf(line, sizeof line, "%-12s %-10s %10.3f %8.2f %10.3f %8d", r.series.c_str(), r.knob.c_str(),
-                      r.median_ms, base_ms > 0 ? r.median_ms / base_ms : 0.0, r.rmse, r.max_diff);
+        const std::string spread = format_number(r.p25_ms, 4) + "-" + format_number(r.p75_ms, 4);
+        std::snprintf(line, sizeof line, "%-12s %-10s %10.3f %17s %8.2f %10.3f %8d", r.series.c_str(), r.knob.c_str(),
+                      r.median_ms, spread.c_str(), base_ms > 0 ? r.median_ms / base_ms : 0.0, r.rmse, r.max_diff);
         out << line;
         for (const auto& name : extras) {
             const int width = static_cast<int>(std::max<std::size_t>(14, name.size()));
@@ -86,7 +87,10 @@ std::string SweepReport::csv() const {
     out << (series.empty() ? "series" : series) << "," << knob << ",median_ms,min_ms,rmse,max_diff";
     const std::vector<std::string> extras = extra_columns(rows);
     for (const auto& name : extras) out << "," << name;
-    out << "\n";
+    out << ",p25_ms,p75_ms,reference\n";
+    // The reference in words, in the last column (no commas in a CSV field that is not quoted).
+    std::string words = reference_name;
+    std::replace(words.begin(), words.end(), ',', ';');
     for (const auto& r : rows) {
         out << (r.series.empty() ? "-" : r.series) << "," << r.knob << "," << fixed(r.median_ms, 4) << ","
             << fixed(r.min_ms, 4) << "," << fixed(r.rmse, 4) << "," << r.max_diff;
@@ -95,14 +99,14 @@ std::string SweepReport::csv() const {
             if (const double* value = extra_value(r, name)) out << "," << format_number(*value);
             else out << ",";
         }
-        out << "\n";
+        out << "," << fixed(r.p25_ms, 4) << "," << fixed(r.p75_ms, 4) << "," << words << "\n";
     }
     return out.str();
 }
 
 std::string SweepReport::markdown() const {
     std::ostringstream out;
-    out << "| " << (series.empty() ? "" : series + " | ") << knob << " | ms/frame | RMSE | max diff";
+    out << "| " << (series.empty() ? "" : series + " | ") << knob << " | ms/frame (spread) | RMSE | max diff";
     const std::vector<std::string> extras = extra_columns(rows);
     for (const auto& name : extras) out << " | " << name;
     out << " |\n|";
@@ -111,8 +115,8 @@ std::string SweepReport::markdown() const {
     out << "\n";
     auto number = [](double value) { return format_number(value, 4); };
     for (const auto& r : rows) {
-        out << "| " << (series.empty() ? "" : r.series + " | ") << r.knob << " | " << number(r.median_ms) << " | "
-            << number(r.rmse) << " | " << r.max_diff;
+        out << "| " << (series.empty() ? "" : r.series + " | ") << r.knob << " | " << number(r.median_ms) << " ("
+            << number(r.p25_ms) << "-" << number(r.p75_ms) << ") | " << number(r.rmse) << " | " << r.max_diff;
         for (const auto& name : extras) {
             const double* value = extra_value(r, name);
             out << " | " << (value ? number(*value) : "-");
@@ -120,10 +124,23 @@ std::string SweepReport::markdown() const {
         out << " |\n";
     }
     // A pipe table's caption: ": text" after a blank line.
-    out << "\n: " << lab << ", " << width << "x" << height << ", " << gl << "; error against";
-    for (const auto& r : reference) out << " " << r;
-    out << ".\n";
+    out << "\n: " << lab << ", " << width << "x" << height << ", " << gl << "; error against " << reference_name
+        << "; times interleaved.\n";
     return out.str();
+}
+
+double SweepReport::plotted_value(const SweepRow& row) const {
+    if (plotted_error.empty()) return row.rmse;
+    const double* value = extra_value(row, plotted_error);
+    return value ? *value : std::nan("");
+}
+
+bool SweepReport::all_positive_errors() const {
+    for (const auto& r : rows) {
+        const double e = plotted_value(r);
+        if (e == e && !(e > 0)) return false;
+    }
+    return true;
 }
 
 std::vector<std::string> SweepReport::write(const std::filesystem::path& dir) const {
@@ -137,52 +154,105 @@ std::vector<std::string> SweepReport::write(const std::filesystem::path& dir) co
     const auto md_path = dir / (lab + "-sweep.md");
     write_file(md_path, markdown());
 
-    // One curve per series; x is the knob (log scale for numeric knobs spanning a decade or more).
+    // One curve per series; x is the knob (log scale for numeric knobs spanning a decade or more). Sized for a slide:
+    // shown at the slide's width, the text stays about 12 px high.
     std::vector<std::string> series_values;
     for (const auto& r : rows)
         if (series_values.empty() || series_values.back() != r.series) series_values.push_back(r.series);
     const bool numeric = all_numeric(rows);
-    std::ostringstream gp;
-    gp << "# gnuplot script written by the kit's sweep mode; run: gnuplot " << gp_path.filename().string() << "\n"
-       << "set datafile separator ','\nset terminal pngcairo size 1200,460 font ',10'\n"
-       << "set output '" << png_path.filename().string() << "'\n"
-       << "set multiplot layout 1,2 title '" << lab << ": what accuracy costs in time (" << width << "x" << height << ")'\n"
-       << "set termoption noenhanced\nset key top right\nset grid\n";
-    if (numeric) gp << "set logscale x 2\n";
-    else gp << "set xtics rotate by -30\n";
-    auto plot = [&](int column, const std::string& ylabel) {
-        gp << "set xlabel '" << knob << "'\nset ylabel '" << ylabel << "'\nplot ";
-        for (std::size_t i = 0; i < series_values.size(); ++i) {
-            const std::string& sv = series_values[i].empty() ? std::string("-") : series_values[i];
-            gp << (i ? ", " : "") << "'" << csv_path.filename().string() << "' using "
-               << (numeric ? "2" : "0") << ":(strcol(1) eq '" << sv << "' ? $" << column << " : 1/0)"
-               << (numeric ? "" : ":xtic(2)") << " with linespoints lw 2 title '"
-               << (series.empty() ? knob : series + "=" + sv) << "'";
-        }
-        gp << "\n";
-    };
-    gp << "set logscale y\n";  // errors fall by orders of magnitude as the knob converges
     int error_column = 5;
     std::string error_label = "RMSE against the reference (0-255)";
     const std::vector<std::string> extras = extra_columns(rows);
     for (std::size_t i = 0; i < extras.size(); ++i)
         if (!plotted_error.empty() && extras[i] == plotted_error) {
             error_column = 7 + static_cast<int>(i);  // after series, knob, median_ms, min_ms, rmse, max_diff
-            error_label = plotted_error;
+            error_label = plotted_error + ", against the reference";
         }
+    const std::string data = csv_path.filename().string();
+    const auto curve_title = [&](const std::string& sv) { return series.empty() ? knob : series + "=" + sv; };
+    const auto only = [&](const std::string& sv, const std::string& column) {
+        return "(strcol(1) eq '" + (sv.empty() ? std::string("-") : sv) + "' ? " + column + " : 1/0)";
+    };
+    std::ostringstream gp;
+    gp << "# gnuplot script written by the kit's sweep mode; run: gnuplot " << gp_path.filename().string() << "\n"
+       << "set datafile separator ','\nset terminal pngcairo size 1600,640 font 'DejaVu Sans,20'\n"
+       << "set output '" << png_path.filename().string() << "'\n"
+       << "set termoption noenhanced\n"  // before any text: knob names have underscores
+       << "set multiplot layout 1,2 title '" << lab << ": error and time against " << knob << " (" << width << "x" << height << ")'\n"
+       << "set key top right\nset grid\n";
+    if (numeric) gp << "set logscale x 2\n";
+    else gp << "set xtics rotate by -30\n";
+    auto plot = [&](int column, const std::string& ylabel) {
+        gp << "set xlabel '" << knob << "'\nset ylabel '" << ylabel << "'\nplot ";
+        for (std::size_t i = 0; i < series_values.size(); ++i)
+            gp << (i ? ", " : "") << "'" << data << "' using " << (numeric ? "2" : "0") << ":"
+               << only(series_values[i], "$" + std::to_string(column)) << (numeric ? "" : ":xtic(2)")
+               << " with linespoints lw 3 pt 7 ps 1.5 title '" << curve_title(series_values[i]) << "'";
+        gp << "\n";
+    };
+    // Errors fall by orders of magnitude as the knob converges; a zero cannot go on a log axis.
+    const bool log_error = all_positive_errors();
+    if (log_error) gp << "set logscale y\n";
     plot(error_column, error_label);
-    gp << "unset logscale y\n";
+    if (log_error) gp << "unset logscale y\n";
     plot(3, "median ms per frame");
     gp << "unset multiplot\n";
     write_file(gp_path, gp.str());
 
-    std::vector<std::string> written{csv_path.string(), md_path.string(), gp_path.string()};
-    const std::string command = "cd \"" + dir.string() + "\" && gnuplot \"" + gp_path.filename().string() + "\" 2>&1";
-    if (std::system("command -v gnuplot >/dev/null 2>&1") == 0) {
-        if (std::system(command.c_str()) == 0) written.push_back(png_path.string());
-        else std::fprintf(stderr, "sweep: gnuplot failed on %s; the CSV is complete\n", gp_path.string().c_str());
-    } else {
-        std::fprintf(stderr, "sweep: gnuplot not installed: wrote the CSV and the plot script only\n");
+    // What accuracy costs: error against time, log-log, points named by their knob values. A label is left out
+    // where it would sit on the previous one of its curve (the first and the last always have one), and the
+    // curves put theirs on alternate sides.
+    const auto trade_gp = dir / (lab + "-tradeoff.gp");
+    const auto trade_png = dir / (lab + "-tradeoff.png");
+    std::ostringstream tp;
+    tp << "# gnuplot script written by the kit's sweep mode; run: gnuplot " << trade_gp.filename().string() << "\n"
+       << "set datafile separator ','\nset terminal pngcairo size 1200,800 font 'DejaVu Sans,22'\n"
+       << "set output '" << trade_png.filename().string() << "'\nset termoption noenhanced\nset grid\n"
+       << "set title '" << lab << ": what accuracy costs (" << knob << " beside each point)'\n"
+       << "set xlabel 'median ms per frame'\nset ylabel '" << error_label << "'\n"
+       << "set logscale x\n" << (log_error ? "set logscale y\n" : "") << "set key top right\n"
+       << "set offsets graph 0.08, graph 0.08, graph 0.1, graph 0.1\n";
+    double t_lo = 0, t_hi = 0, e_lo = 0, e_hi = 0;
+    bool first = true;
+    for (const auto& r : rows) {
+        const double e = plotted_value(r);
+        if (!(r.median_ms > 0) || !(e == e)) continue;
+        const double t = std::log(r.median_ms), le = log_error ? std::log(e) : e;
+        if (first) t_lo = t_hi = t, e_lo = e_hi = le, first = false;
+        t_lo = std::min(t_lo, t), t_hi = std::max(t_hi, t), e_lo = std::min(e_lo, le), e_hi = std::max(e_hi, le);
+    }
+    for (std::size_t i = 0; i < series_values.size(); ++i) {
+        std::vector<const SweepRow*> curve;
+        for (const auto& r : rows)
+            if (r.series == series_values[i] && r.median_ms > 0 && plotted_value(r) == plotted_value(r)) curve.push_back(&r);
+        double last_x = -1, last_y = -1;
+        for (std::size_t k = 0; k < curve.size(); ++k) {
+            const double e = plotted_value(*curve[k]);
+            const double x = (std::log(curve[k]->median_ms) - t_lo) / std::max(1e-9, t_hi - t_lo);
+            const double y = ((log_error ? std::log(e) : e) - e_lo) / std::max(1e-9, e_hi - e_lo);
+            const bool ends = k == 0 || k + 1 == curve.size();
+            if (!ends && last_x >= 0 && std::hypot(x - last_x, y - last_y) < 0.07) continue;
+            last_x = x, last_y = y;
+            tp << "set label '" << curve[k]->knob << "' at " << curve[k]->median_ms << "," << e
+               << (i % 2 ? " right offset -0.8,-0.9" : " left offset 0.8,0.9") << "\n";
+        }
+    }
+    tp << "plot ";
+    for (std::size_t i = 0; i < series_values.size(); ++i)
+        tp << (i ? ", " : "") << "'" << data << "' using 3:" << only(series_values[i], "$" + std::to_string(error_column))
+           << " with linespoints lw 3 pt 7 ps 1.8 title '" << curve_title(series_values[i]) << "'";
+    tp << "\n";
+    write_file(trade_gp, tp.str());
+
+    std::vector<std::string> written{csv_path.string(), md_path.string(), gp_path.string(), trade_gp.string()};
+    if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) {
+        std::fprintf(stderr, "sweep: gnuplot not installed: wrote the CSV and the plot scripts only\n");
+        return written;
+    }
+    for (const auto& [script, png] : {std::pair{gp_path, png_path}, std::pair{trade_gp, trade_png}}) {
+        const std::string command = "cd \"" + dir.string() + "\" && gnuplot \"" + script.filename().string() + "\" 2>&1";
+        if (std::system(command.c_str()) == 0) written.push_back(png.string());
+        else std::fprintf(stderr, "sweep: gnuplot failed on %s; the CSV is complete\n", script.string().c_str());
     }
     return written;
 }

@@ -12,7 +12,8 @@ struct SweepRow {
     std::string series;   // value of the lab's series parameter ("" when it has none)
     std::string knob;     // value of the accuracy knob
     double median_ms = 0, min_ms = 0;
-    double rmse = 0;      // image RMSE over RGB (0..255) against the converged reference
+    double p25_ms = 0, p75_ms = 0;  // the middle half of the frames: the spread beside the median
+    double rmse = 0;      // image RMSE over RGB (0..255) against the reference
     int max_diff = 0;     // largest channel difference against the reference
     SweepMetrics extra;   // the lab's own error measures
 };
@@ -20,6 +21,7 @@ struct SweepRow {
 struct SweepReport {
     std::string lab, knob, series, gl;
     std::vector<std::string> reference;
+    std::string reference_name;  // what the error is measured against, in words (and whether shown converged)
     int width = 0, height = 0;
     std::vector<SweepRow> rows;
     std::string plotted_error;  // an extra column to plot as the error instead of the image RMSE; empty: RMSE
@@ -29,9 +31,15 @@ struct SweepReport {
     // The table as a Markdown pipe table, numbers to 4 significant digits, with a caption (pandoc's ": text")
     // naming the machine, the size and the reference: what the slides include.
     std::string markdown() const;
-    // Writes <lab>-sweep.csv, <lab>-sweep.md, <lab>-sweep.gp and, when gnuplot is installed, <lab>-sweep.png;
-    // returns the paths.
+    // Writes <lab>-sweep.csv, <lab>-sweep.md, the gnuplot scripts and, when gnuplot is installed, <lab>-sweep.png
+    // (error and time against the knob) and <lab>-tradeoff.png (error against time, a point per setting labelled
+    // with its knob value, a curve per series); returns the paths.
     std::vector<std::string> write(const std::filesystem::path& dir) const;
+
+    // The error a row is plotted with (the RMSE or plotted_error's column; NaN where the row lacks it), and
+    // whether every one there is is above zero, so the plots may take a log axis.
+    double plotted_value(const SweepRow& row) const;
+    bool all_positive_errors() const;
 };
 
 }  // namespace gsv

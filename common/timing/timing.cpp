@@ -23,6 +23,15 @@ TimingStats summarize(std::vector<double> samples_ms) {
     stats.min_ms = samples_ms.front();
     stats.max_ms = samples_ms.back();
     stats.median_ms = n % 2 ? samples_ms[n / 2] : 0.5 * (samples_ms[n / 2 - 1] + samples_ms[n / 2]);
+    // Quartiles by linear interpolation between order statistics.
+    const auto quantile = [&](double q) {
+        const double at = q * static_cast<double>(n - 1);
+        const std::size_t lo = static_cast<std::size_t>(at);
+        const std::size_t hi = std::min(lo + 1, n - 1);
+        return samples_ms[lo] + (at - static_cast<double>(lo)) * (samples_ms[hi] - samples_ms[lo]);
+    };
+    stats.p25_ms = quantile(0.25);
+    stats.p75_ms = quantile(0.75);
     stats.mean_ms = std::accumulate(samples_ms.begin(), samples_ms.end(), 0.0) / static_cast<double>(n);
     return stats;
 }
@@ -44,6 +53,31 @@ TimingStats time_frames(const std::function<void()>& frame, int warmup, int fram
         if (marks) marks->mark();
     }
     return summarize(std::move(samples));
+}
+
+std::vector<TimingStats> time_interleaved(const std::vector<std::function<void()>>& prepare, const std::function<void()>& frame,
+                                          int warmup, int frames, int rounds) {
+    std::vector<std::vector<double>> samples(prepare.size());
+    for (std::size_t i = 0; i < prepare.size(); ++i) {
+        prepare[i]();
+        for (int w = 0; w < warmup; ++w) frame();
+        glFinish();
+    }
+    for (int round = 0; round < rounds; ++round)
+        for (std::size_t i = 0; i < prepare.size(); ++i) {
+            prepare[i]();
+            frame();  // one untimed frame after the switch: a rebuilt program's first draw compiles on some drivers
+            glFinish();
+            for (int f = 0; f < frames; ++f) {
+                const double t0 = now_seconds();
+                frame();
+                glFinish();
+                samples[i].push_back(1000.0 * (now_seconds() - t0));
+            }
+        }
+    std::vector<TimingStats> stats;
+    for (auto& s : samples) stats.push_back(summarize(std::move(s)));
+    return stats;
 }
 
 void FrameClock::tick() {
