@@ -19,24 +19,10 @@ done
 rm -rf "$figures"
 mkdir -p "$figures"
 
-# Small and quick: the decks show the shape of each trade-off; the lab sheets hold the full-size tables.
-sweep() {  # sweep <figure dir> <lab binary> [options...]
-  local dir="$figures/$1" lab="$2"
-  shift 2
-  echo "build-slides: figures/$(basename "$dir")"
-  "$bin/$lab" sweep --size 192x192 --frames 3 --warmup 1 --out-dir "$dir" "$@" >"$dir.log" 2>&1 ||
-    { cat "$dir.log" >&2; exit 1; }
-}
-sweep lab01 lab01_solution
-sweep lab02 lab02_solution --knob length --values 1,5,25,100
-sweep lab03 lab03_solution
-sweep lab04 lab04_solution
-sweep lab05 lab05_solution --set particles=65536
-sweep lab06 lab06_solution --set compositing=iso
-sweep lab06-shaders lab06_solution --size 256x256 --knob samples_per_voxel --values 1,2 --set compare_shaders=on \
-  --set compositing=dvr
-sweep lab07 lab07_solution
-sweep lab07-runge lab07_solution --set mesh=grid --set columns=1 --set rows=1 --set field=runge
+# Every sweep the decks show (scripts/sweeps.sh, shared with `scripts/kit tradeoffs`), and the table across the labs.
+. "$root/scripts/sweeps.sh"
+run_sweeps "$bin" "$figures" all
+python3 "$root/scripts/tradeoffs.py" --markdown "$figures" >"$figures/tradeoffs.md"
 mkdir -p "$figures/lab06-debug"
 "$bin/lab06_solution" render --case probe --size 256x256 --debug-images --out "$figures/lab06-debug/probe.png" \
   >"$figures/lab06-debug.log" 2>&1 || { cat "$figures/lab06-debug.log" >&2; exit 1; }

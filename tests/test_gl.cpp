@@ -284,6 +284,40 @@ TEST_CASE("timing: median of glFinish-bracketed frames after warm-up", "[gl]") {
     CHECK(summarize({3, 1, 2, 10}).median_ms == 2.5);
 }
 
+TEST_CASE("timing: interleaved rounds, quartiles, ratios with the rounds' spread, short frames in batches", "[gl]") {
+    auto context = test::headless_context();
+    std::vector<std::string> order;
+    int prepared_a = 0, frames_a = 0, frames_b = 0;
+    const auto sleep_ms = [](int ms) { std::this_thread::sleep_for(std::chrono::milliseconds(ms)); };
+    const InterleavedTimes times = time_interleaved(
+        {{[&] { ++prepared_a; order.push_back("a"); }, [&] { ++frames_a; sleep_ms(9); }},
+         {[&] { order.push_back("b"); }, [&] { ++frames_b; sleep_ms(27); }}},
+        1, 2, 3);
+    // A warm-up of each, then A B A B A B: each made current once per round (and once for its warm-up).
+    CHECK(order == std::vector<std::string>{"a", "b", "a", "b", "a", "b", "a", "b"});
+    CHECK(prepared_a == 4);
+    // Per making-current: one untimed frame; the warm-up adds one and one to size the batch; 9 ms needs no batch.
+    CHECK(frames_a == 4 + 1 + 1 + 3 * 2);
+    REQUIRE(times.stats.size() == 2);
+    CHECK(times.stats[0].frames == 6);
+    CHECK(times.round_medians[1].size() == 3);
+    const TimeRatio ratio = times.ratio(1, 0);
+    CHECK(ratio.median == Approx(3.0).epsilon(0.25));
+    CHECK(ratio.low <= ratio.median + 1e-12);
+    CHECK(ratio.high >= ratio.median - 1e-12);
+    // A frame of a fraction of a millisecond is timed in batches of them: still its own time per frame.
+    int tiny = 0;
+    const InterleavedTimes batched = time_interleaved({{nullptr, [&] { ++tiny; sleep_ms(1); }}}, 0, 2, 2);
+    CHECK(tiny > 2 * 4);
+    CHECK(batched.stats[0].median_ms == Approx(1.0).margin(0.6));
+    // Quartiles interpolate between order statistics.
+    const TimingStats q = summarize({4, 1, 3, 2, 5});
+    CHECK(q.p25_ms == 2.0);
+    CHECK(q.p75_ms == 4.0);
+    CHECK(summarize({1, 2}).p25_ms == 1.25);
+    CHECK_THROWS_AS(time_interleaved({{nullptr, [] {}}}, 0, 0, 1), Error);
+}
+
 TEST_CASE("shader_program: a type error the driver files under no source string still names the shader's file and line", "[gl]") {
     auto context = test::headless_context();
     const auto dir = test::temp_dir("lost_source");

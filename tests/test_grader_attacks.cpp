@@ -68,7 +68,7 @@ TEST_CASE("grader: a hostile submission learns nothing, earns nothing it did not
     std::ofstream(lab / "leak.frag") << "#include \"" << (test::source_root() / "solutions" / lab_dir / "gooch.glsl").string()
                                      << "\"\nout vec4 fColor;\nvoid main() { fColor = vec4(1.0); }\n";
     std::string lab_cpp = test::read_text(lab / "lab.cpp");
-    const std::string draw = "        draw(kit, frame, *shade_);\n    }\n\n    std::vector<std::string> sweep_reference";
+    const std::string draw = "        draw(kit, frame, *shade_, kBackground);\n    }\n";
     REQUIRE(lab_cpp.find(draw) != std::string::npos);
     lab_cpp = substitute(lab_cpp, draw, "        attack(kit, frame);\n" + draw);
     lab_cpp = substitute(lab_cpp, "namespace {\n", "void attack(gsv::LabKit& kit, const gsv::Frame& frame);\n\nnamespace {\n");

@@ -149,6 +149,34 @@ TEST_CASE("lab05: the sweep measures each integrator's order against the double-
     CHECK(value(11, err) / value(12, err) > 10);
     CHECK(value(12, err) / value(13, err) > 10);
     CHECK(value(15, err) < 2e-6);
-    // The plot shows that error, not the image's RMSE, which restarts at step-dependent times swamp.
-    CHECK(test::read_text(dir.path("lab05-sweep.gp")).find("set ylabel 'pos_err_rms'") != std::string::npos);
+    // The plot shows that error, not the image's RMSE, which restarts at step-dependent times swamp: the share of
+    // particles that left the domain says how many.
+    CHECK(test::read_text(dir.path("lab05-sweep.gp")).find("set ylabel 'pos_err_rms, against the reference'") != std::string::npos);
+    const int left = column(rows[0], "left_share");
+    CHECK(value(15, left) > 0.1);
+    CHECK(value(15, left) == Approx(1.0 - value(15, followed) / 2048.0));
+    // No rotation, no radii.
+    CHECK(rows[0].find("radius_ratio") == std::string::npos);
+}
+
+TEST_CASE("lab05: on the rotation the sweep shows each integrator's radius after a turn beside its closed form", "[lab05][gl43]") {
+    test::TempDir dir;
+    const auto run = test::run_lab("lab05_solution", {"sweep", "--size", "48x48", "--frames", "1", "--warmup", "0", "--set",
+                                                      "particles=1024", "--set", "field=rotation", "--set", "time=6.3", "--knob",
+                                                      "time_step", "--values", "0.2,0.1", "--out-dir", dir.path().string()},
+                                   dir.path());
+    INFO(run.process.output);
+    REQUIRE(run.exit_code() == 0);
+    const auto rows = test::lines_of(test::read_text(dir.path("lab05-sweep.csv")));
+    REQUIRE(rows.size() == 1 + 3 * 2);
+    const std::string& header = rows[0];
+    // Euler, midpoint, RK4 at h = 0.1, 63 steps: the lab sheet's 1.368, 1.0008 and 0.9999996.
+    const double expected[] = {1.368, 1.0008, 0.9999996};
+    for (int m = 0; m < 3; ++m) {
+        const std::string& row = rows[2 + 2 * m];
+        INFO(row);
+        CHECK(test::csv_value(header, row, "radius_ratio_closed_form") == Approx(expected[m]).margin(5e-4));
+        // The GPU's particles, in float, do what the closed form says.
+        CHECK(test::csv_value(header, row, "radius_ratio") == Approx(test::csv_value(header, row, "radius_ratio_closed_form")).epsilon(1e-4));
+    }
 }

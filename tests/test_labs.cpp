@@ -346,7 +346,7 @@ TEST_CASE("lab01: sweep mode measures both shading rates against the exact spher
     }
 }
 
-TEST_CASE("sweep report: a measure only some rows have gets one column, blank or '-' where a row lacks it", "[labs]") {
+TEST_CASE("sweep report: a measure only some rows have gets one column, blank or '-' where a row lacks it, and a summary line", "[labs]") {
     SweepReport report;
     report.lab = "labX";
     report.knob = "k";
@@ -368,4 +368,30 @@ TEST_CASE("sweep report: a measure only some rows have gets one column, blank or
     const std::string table = report.table();
     CHECK(table.find("only_b") != std::string::npos);
     CHECK(table.find("error against the exact answer, analytic") != std::string::npos);
+    // What accuracy costs, in a line: the cheapest setting, the most accurate, and the ratios between them.
+    const auto summary = test::lines_of(report.summary());
+    REQUIRE(summary.size() == 2);
+    CHECK(summary[0] == "lab,knob,error,cheapest,cheapest_error,cheapest_ms,most_accurate,accurate_error,accurate_ms,time_ratio,error_ratio");
+    CHECK(summary[1] == "labX,k,rmse,mode=a k=1,0.5,2,mode=b k=1,0.25,4,2,2");
+    // A plotted measure of the lab's own replaces the RMSE; a row without it is neither.
+    report.plotted_error = "only_b";
+    CHECK(test::lines_of(report.summary())[1] == "labX,k,only_b,mode=a k=1,-,2,mode=b k=1,7,4,2,-");
+}
+
+TEST_CASE("sweep report: a time or ratio with its spread is one cell in the table and the Markdown, three in the CSV", "[labs]") {
+    SweepReport report;
+    report.lab = "labX";
+    report.knob = "k";
+    report.reference_name = "k=2";
+    SweepRow row;
+    row.knob = "1";
+    row.extra = {{"uber_over_specialised", 2.5}, {"uber_over_specialised_lo", 2.25}, {"uber_over_specialised_hi", 2.75}, {"x_lo", 1}};
+    report.rows = {row};
+    const std::string md = report.markdown();
+    CHECK(md.find("| k | ms/frame (spread) | RMSE | max diff | uber_over_specialised | x_lo |") == 0);
+    CHECK(md.find("| 2.5 (2.25-2.75) | 1 |") != std::string::npos);
+    CHECK(report.table().find("2.5 (2.25-2.75)") != std::string::npos);
+    CHECK(test::lines_of(report.csv())[0] ==
+          "series,k,median_ms,min_ms,rmse,max_diff,uber_over_specialised,uber_over_specialised_lo,uber_over_specialised_hi,x_lo,"
+          "p25_ms,p75_ms,reference");
 }

@@ -101,6 +101,8 @@ TEST_CASE("particles: one turn of rotation gives each integrator's closed-form r
     const double expected[] = {euler, midpoint, rk4};
     for (int m = 0; m < 3; ++m) {
         INFO(gsv::integrator_name(gsv::kIntegrators[m]));
+        // The sweep's closed-form column, written another way.
+        CHECK(std::pow(gsv::rotation_radius_growth_per_step(gsv::kIntegrators[m], h), steps) == Approx(expected[m]).epsilon(1e-13));
         const StepSpec spec{ParticleScene::Rotation, gsv::kIntegrators[m], h};
         const glm::dvec3 start(0.5, 0, 0);
         const double ratio = glm::length(run<double>(spec, start, {0, 0.5, 0}, steps)) / 0.5;

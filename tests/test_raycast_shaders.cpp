@@ -344,6 +344,7 @@ TEST_CASE("raycast_config: a module the compositing cannot use is dropped, and t
           "#include \"shade_phong.glsl\"\n"
           "#define RC_SHADE(color, gradient, p) rcShadePhong(color, gradient, p)\n"
           "#include \"composite_dvr.glsl\"\n"
+          "#define RC_START(ray) rcStartDvr(ray)\n"
           "#define RC_COMPOSITE(state, ray, t, intensity) rcCompositeDvr(state, ray, t, intensity)\n"
           "#define RC_TERMINATE(state) rcTerminateDvr(state)\n"
           "#define RC_FINISH(state) rcFinishDvr(state)\n");
@@ -356,6 +357,7 @@ TEST_CASE("raycast_config: a module the compositing cannot use is dropped, and t
           "#define RC_CLASSIFY(intensity) rcClassifyRaw(intensity)\n"
           "#define RC_SHADE(color, gradient, p) (color)\n"
           "#include \"composite_mip.glsl\"\n"
+          "#define RC_START(ray) rcStartMip(ray)\n"
           "#define RC_COMPOSITE(state, ray, t, intensity) rcCompositeMip(state, ray, t, intensity)\n"
           "#define RC_TERMINATE(state) rcTerminateMip(state)\n"
           "#define RC_FINISH(state) rcFinishMip(state)\n");

@@ -39,7 +39,9 @@ SweepAxis sweep_axis(const Session& s) {
         throw Error("--knob " + spec.name + " needs --values with at least two values, least accurate first");
     Params check = s.params;
     for (const auto& value : s.options.values) check.set(spec.name, value);  // refuses an out-of-range value by name
-    return {spec.name, s.options.values, false};
+    // The lab's own knob through other values keeps the lab's reference.
+    const ParamSpec* knob = s.params.knob();
+    return {spec.name, s.options.values, knob && knob->name == spec.name};
 }
 
 }  // namespace
@@ -90,13 +92,18 @@ int run_sweep(Session& s) {
     // The lab's reference belongs to its own knob; another knob converges at its last value.
     std::vector<std::string> reference_settings = axis.lab_knob ? s.lab->sweep_reference() : std::vector<std::string>{};
     if (reference_settings.empty()) reference_settings.push_back(knob_name + "=" + knob_values.back());
-    std::vector<Image> references;  // one, or one per series value
+    // One reference, or one per series value, drawn when first needed: not at all where the lab draws exact ones.
     const bool per_series = s.lab->sweep_reference_per_series() && !series_name.empty();
-    for (const auto& series_value : per_series ? series_values : std::vector<std::string>{""}) {
-        std::vector<std::string> settings = reference_settings;
-        if (per_series) settings.push_back(series_name + "=" + series_value);
-        references.push_back(image_with(settings));
-    }
+    std::vector<std::optional<Image>> references(per_series ? series_values.size() : 1);
+    auto reference_of = [&](std::size_t curve) -> const Image& {
+        std::optional<Image>& reference = references[per_series ? curve : 0];
+        if (!reference) {
+            std::vector<std::string> settings = reference_settings;
+            if (per_series) settings.push_back(series_name + "=" + series_values[curve]);
+            reference = image_with(settings);
+        }
+        return *reference;
+    };
 
     SweepReport report;
     report.lab = s.info.id;
@@ -114,7 +121,6 @@ int run_sweep(Session& s) {
     bool exact = false;
     for (std::size_t curve = 0; curve < series_values.size(); ++curve) {
         const std::string& series_value = series_values[curve];
-        const Image& reference = references[per_series ? curve : 0];
         for (const auto& knob_value : knob_values) {
             std::vector<std::string> settings{knob_name + "=" + knob_value};
             if (!series_name.empty()) settings.push_back(series_name + "=" + series_value);
@@ -130,13 +136,13 @@ int run_sweep(Session& s) {
             }
             const std::optional<Image> exact_image = axis.lab_knob ? s.lab->sweep_exact_image(*s.kit, frame) : std::nullopt;
             exact = exact || exact_image.has_value();
-            const ImageDiff diff = compare_images(image, exact_image ? *exact_image : reference, ImageTolerance{});
             SweepRow row;
             row.series = series_value;
             row.knob = knob_value;
+            row.extra = s.lab->sweep_metrics(*s.kit, frame);  // while this point's settings are current
+            const ImageDiff diff = compare_images(image, exact_image ? *exact_image : reference_of(curve), ImageTolerance{});
             row.rmse = diff.rmse;
             row.max_diff = diff.max_channel_diff;
-            row.extra = s.lab->sweep_metrics(*s.kit, frame);
             report.rows.push_back(row);
             point_settings.push_back(settings);
         }
@@ -164,7 +170,8 @@ int run_sweep(Session& s) {
             for (std::size_t i = 0; i < references.size(); ++i) {
                 std::vector<std::string> settings = refinement;
                 if (per_series) settings.push_back(series_name + "=" + series_values[i]);
-                const double change = compare_images(image_with(settings), references[i], ImageTolerance{}).rmse;
+                const Image& reference = reference_of(i);
+                const double change = compare_images(image_with(settings), reference, ImageTolerance{}).rmse;
                 double smallest = -1;
                 for (const auto& r : report.rows)
                     if ((!per_series || r.series == series_values[i]) && r.rmse > 0 && (smallest < 0 || r.rmse < smallest))
@@ -180,9 +187,9 @@ int run_sweep(Session& s) {
         }
     }
 
-    std::vector<std::function<void()>> prepare;
-    for (const auto& settings : point_settings) prepare.push_back([&, settings] { use(settings); });
-    const std::vector<TimingStats> times = time_interleaved(prepare, draw, warmup, frames_per_round, rounds);
+    std::vector<TimedWork> work;
+    for (const auto& settings : point_settings) work.push_back({[&, settings] { use(settings); }, draw});
+    const std::vector<TimingStats> times = time_interleaved(work, warmup, frames_per_round, rounds).stats;
     for (std::size_t i = 0; i < report.rows.size(); ++i) {
         SweepRow& row = report.rows[i];
         row.median_ms = times[i].median_ms;

@@ -49,6 +49,33 @@ const double* extra_value(const SweepRow& row, const std::string& name) {
     return nullptr;
 }
 
+bool ends_with(const std::string& text, const std::string& tail) {
+    return text.size() >= tail.size() && text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+// The columns a reader sees: NAME_lo and NAME_hi (common/app/sweep_metrics.h) go into NAME's cell.
+std::vector<std::string> shown_columns(const std::vector<std::string>& all) {
+    std::vector<std::string> shown;
+    for (const auto& name : all) {
+        const bool spread = (ends_with(name, "_lo") || ends_with(name, "_hi")) &&
+                            std::find(all.begin(), all.end(), name.substr(0, name.size() - 3)) != all.end();
+        if (!spread) shown.push_back(name);
+    }
+    return shown;
+}
+
+// A shown cell: the value to `digits` significant digits, with its spread where the row has one; "-" where the
+// row lacks the measure.
+std::string shown_cell(const SweepRow& row, const std::string& name, int digits) {
+    const double* value = extra_value(row, name);
+    if (!value) return "-";
+    std::string cell = format_number(*value, digits);
+    const double* lo = extra_value(row, name + "_lo");
+    const double* hi = extra_value(row, name + "_hi");
+    if (lo && hi) cell += " (" + format_number(*lo, 3) + "-" + format_number(*hi, 3) + ")";
+    return cell;
+}
+
 }  // namespace
 
 std::string SweepReport::table() const {
@@ -61,20 +88,24 @@ std::string SweepReport::table() const {
     std::snprintf(line, sizeof line, "%-12s %-10s %10s %17s %8s %10s %8s", series.empty() ? "" : series.c_str(),
                   knob.c_str(), "ms/frame", "spread", "x first", "RMSE", "max diff");
     out << line;
-    const std::vector<std::string> extras = extra_columns(rows);
-    for (const auto& name : extras) out << " " << std::string(14 - std::min<std::size_t>(14, name.size()), ' ') << name;
+    const std::vector<std::string> extras = shown_columns(extra_columns(rows));
     // Values are right-aligned under their names, however long the names are.
+    std::vector<int> widths;
+    for (const auto& name : extras) {
+        std::size_t width = std::max<std::size_t>(14, name.size());
+        for (const auto& r : rows) width = std::max(width, shown_cell(r, name, 4).size());
+        widths.push_back(static_cast<int>(width));
+        out << " " << std::string(static_cast<std::size_t>(widths.back()) - name.size(), ' ') << name;
+    }
     out << "\n";
     for (const auto& r : rows) {
         const std::string spread = format_number(r.p25_ms, 4) + "-" + format_number(r.p75_ms, 4);
         std::snprintf(line, sizeof line, "%-12s %-10s %10.3f %17s %8.2f %10.3f %8d", r.series.c_str(), r.knob.c_str(),
                       r.median_ms, spread.c_str(), base_ms > 0 ? r.median_ms / base_ms : 0.0, r.rmse, r.max_diff);
         out << line;
-        for (const auto& name : extras) {
-            const int width = static_cast<int>(std::max<std::size_t>(14, name.size()));
-            // %g: an error of 3e-8 must not print as 0.0000.
-            if (const double* value = extra_value(r, name)) std::snprintf(line, sizeof line, " %*.4g", width, *value);
-            else std::snprintf(line, sizeof line, " %*s", width, "-");
+        for (std::size_t k = 0; k < extras.size(); ++k) {
+            // Significant digits: an error of 3e-8 must not print as 0.0000.
+            std::snprintf(line, sizeof line, " %*s", widths[k], shown_cell(r, extras[k], 4).c_str());
             out << line;
         }
         out << "\n";
@@ -107,7 +138,7 @@ std::string SweepReport::csv() const {
 std::string SweepReport::markdown() const {
     std::ostringstream out;
     out << "| " << (series.empty() ? "" : series + " | ") << knob << " | ms/frame (spread) | RMSE | max diff";
-    const std::vector<std::string> extras = extra_columns(rows);
+    const std::vector<std::string> extras = shown_columns(extra_columns(rows));
     for (const auto& name : extras) out << " | " << name;
     out << " |\n|";
     const std::size_t columns = (series.empty() ? 4 : 5) + extras.size();
@@ -117,10 +148,7 @@ std::string SweepReport::markdown() const {
     for (const auto& r : rows) {
         out << "| " << (series.empty() ? "" : r.series + " | ") << r.knob << " | " << number(r.median_ms) << " ("
             << number(r.p25_ms) << "-" << number(r.p75_ms) << ") | " << number(r.rmse) << " | " << r.max_diff;
-        for (const auto& name : extras) {
-            const double* value = extra_value(r, name);
-            out << " | " << (value ? number(*value) : "-");
-        }
+        for (const auto& name : extras) out << " | " << shown_cell(r, name, 4);
         out << " |\n";
     }
     // A pipe table's caption: ": text" after a blank line.
@@ -143,6 +171,33 @@ bool SweepReport::all_positive_errors() const {
     return true;
 }
 
+std::string SweepReport::summary() const {
+    const SweepRow* cheapest = nullptr;
+    const SweepRow* accurate = nullptr;
+    for (const auto& r : rows) {
+        if (!cheapest || r.median_ms < cheapest->median_ms) cheapest = &r;
+        const double e = plotted_value(r);
+        if (e > 0 && (!accurate || e < plotted_value(*accurate))) accurate = &r;
+    }
+    auto setting = [&](const SweepRow* r) {
+        return r ? (series.empty() ? "" : series + "=" + r->series + " ") + knob + "=" + r->knob : std::string("-");
+    };
+    auto number = [](double v) { return v == v ? format_number(v, 4) : std::string("-"); };
+    std::string measure = plotted_error.empty() ? "rmse" : plotted_error;
+    std::ostringstream out;
+    out << "lab,knob,error,cheapest,cheapest_error,cheapest_ms,most_accurate,accurate_error,accurate_ms,time_ratio,error_ratio\n"
+        << lab << "," << knob << "," << measure << "," << setting(cheapest) << ","
+        << (cheapest ? number(plotted_value(*cheapest)) : "-") << "," << (cheapest ? number(cheapest->median_ms) : "-") << ","
+        << setting(accurate) << "," << (accurate ? number(plotted_value(*accurate)) : "-") << ","
+        << (accurate ? number(accurate->median_ms) : "-") << ",";
+    if (cheapest && accurate && cheapest->median_ms > 0)
+        out << number(accurate->median_ms / cheapest->median_ms) << "," << number(plotted_value(*cheapest) / plotted_value(*accurate));
+    else
+        out << "-,-";
+    out << "\n";
+    return out.str();
+}
+
 std::vector<std::string> SweepReport::write(const std::filesystem::path& dir) const {
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
@@ -153,6 +208,8 @@ std::vector<std::string> SweepReport::write(const std::filesystem::path& dir) co
     write_file(csv_path, csv());
     const auto md_path = dir / (lab + "-sweep.md");
     write_file(md_path, markdown());
+    const auto summary_path = dir / (lab + "-summary.csv");
+    write_file(summary_path, summary());
 
     // One curve per series; x is the knob (log scale for numeric knobs spanning a decade or more). Sized for a slide:
     // shown at the slide's width, the text stays about 12 px high.
@@ -244,7 +301,7 @@ std::vector<std::string> SweepReport::write(const std::filesystem::path& dir) co
     tp << "\n";
     write_file(trade_gp, tp.str());
 
-    std::vector<std::string> written{csv_path.string(), md_path.string(), gp_path.string(), trade_gp.string()};
+    std::vector<std::string> written{csv_path.string(), md_path.string(), summary_path.string(), gp_path.string(), trade_gp.string()};
     if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) {
         std::fprintf(stderr, "sweep: gnuplot not installed: wrote the CSV and the plot scripts only\n");
         return written;

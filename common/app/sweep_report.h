@@ -31,7 +31,11 @@ struct SweepReport {
     // The table as a Markdown pipe table, numbers to 4 significant digits, with a caption (pandoc's ": text")
     // naming the machine, the size and the reference: what the slides include.
     std::string markdown() const;
-    // Writes <lab>-sweep.csv, <lab>-sweep.md, the gnuplot scripts and, when gnuplot is installed, <lab>-sweep.png
+    // What accuracy costs, in one CSV line under a header: the cheapest setting (lowest median time) and the most
+    // accurate one (lowest plotted error above 0: an error of 0 is the reference itself), each one's error and
+    // time, and the ratios between them. `scripts/kit tradeoffs` gathers these across the labs.
+    std::string summary() const;
+    // Writes <lab>-sweep.csv, <lab>-sweep.md, <lab>-summary.csv, the gnuplot scripts and, when gnuplot is installed, <lab>-sweep.png
     // (error and time against the knob) and <lab>-tradeoff.png (error against time, a point per setting labelled
     // with its knob value, a curve per series); returns the paths.
     std::vector<std::string> write(const std::filesystem::path& dir) const;

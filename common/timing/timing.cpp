@@ -1,11 +1,14 @@
 #include "common/timing/timing.h"
 
 #include "common/gl/gl.h"
+#include "common/core/error.h"
 #include "common/timing/frame_marks.h"
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <numeric>
+#include <string>
 
 namespace gsv {
 
@@ -55,29 +58,61 @@ TimingStats time_frames(const std::function<void()>& frame, int warmup, int fram
     return summarize(std::move(samples));
 }
 
-std::vector<TimingStats> time_interleaved(const std::vector<std::function<void()>>& prepare, const std::function<void()>& frame,
-                                          int warmup, int frames, int rounds) {
-    std::vector<std::vector<double>> samples(prepare.size());
-    for (std::size_t i = 0; i < prepare.size(); ++i) {
-        prepare[i]();
-        for (int w = 0; w < warmup; ++w) frame();
+InterleavedTimes time_interleaved(const std::vector<TimedWork>& work, int warmup, int frames, int rounds) {
+    if (frames < 1 || rounds < 1 || warmup < 0)
+        throw Error("time_interleaved: frames and rounds must be at least 1 and warmup at least 0, got " + std::to_string(frames) +
+                    ", " + std::to_string(rounds) + " and " + std::to_string(warmup));
+    auto make_current = [&](std::size_t i) {
+        if (work[i].prepare) work[i].prepare();
+        work[i].frame();  // one untimed frame after each switch: a rebuilt program's first draw compiles on some drivers
         glFinish();
+    };
+    // A sample is a batch of frames lasting at least kMinSampleMs: a frame of a tenth of a millisecond is mostly
+    // glFinish and the scheduler, and the other core's work lands on it whole.
+    constexpr double kMinSampleMs = 8.0;
+    std::vector<int> batch(work.size(), 1);
+    for (std::size_t i = 0; i < work.size(); ++i) {
+        make_current(i);
+        for (int w = 0; w < warmup; ++w) work[i].frame();
+        glFinish();
+        const double t0 = now_seconds();
+        work[i].frame();
+        glFinish();
+        const double one_ms = 1000.0 * (now_seconds() - t0);
+        batch[i] = one_ms >= kMinSampleMs ? 1 : std::min(1000, static_cast<int>(std::ceil(kMinSampleMs / std::max(one_ms, 1e-3))));
     }
+    InterleavedTimes times;
+    std::vector<std::vector<double>> samples(work.size());
+    times.round_medians.assign(work.size(), {});
     for (int round = 0; round < rounds; ++round)
-        for (std::size_t i = 0; i < prepare.size(); ++i) {
-            prepare[i]();
-            frame();  // one untimed frame after the switch: a rebuilt program's first draw compiles on some drivers
-            glFinish();
+        for (std::size_t i = 0; i < work.size(); ++i) {
+            make_current(i);
+            std::vector<double> this_round;
             for (int f = 0; f < frames; ++f) {
                 const double t0 = now_seconds();
-                frame();
+                for (int k = 0; k < batch[i]; ++k) work[i].frame();
                 glFinish();
-                samples[i].push_back(1000.0 * (now_seconds() - t0));
+                this_round.push_back(1000.0 * (now_seconds() - t0) / batch[i]);
             }
+            samples[i].insert(samples[i].end(), this_round.begin(), this_round.end());
+            times.round_medians[i].push_back(summarize(this_round).median_ms);
         }
-    std::vector<TimingStats> stats;
-    for (auto& s : samples) stats.push_back(summarize(std::move(s)));
-    return stats;
+    for (auto& s : samples) times.stats.push_back(summarize(std::move(s)));
+    return times;
+}
+
+TimeRatio InterleavedTimes::ratio(std::size_t a, std::size_t b) const {
+    TimeRatio r;
+    r.median = stats.at(b).median_ms > 0 ? stats.at(a).median_ms / stats.at(b).median_ms : 0.0;
+    bool first = true;
+    for (std::size_t k = 0; k < round_medians.at(a).size(); ++k) {
+        const double denominator = round_medians[b][k];
+        const double q = denominator > 0 ? round_medians[a][k] / denominator : 0.0;
+        r.low = first ? q : std::min(r.low, q);
+        r.high = first ? q : std::max(r.high, q);
+        first = false;
+    }
+    return r;
 }
 
 void FrameClock::tick() {

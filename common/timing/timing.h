@@ -2,6 +2,7 @@
 // Frame timing that is honest on a software rasterizer: each frame is bracketed by glFinish and timed
 // with a steady clock (GL timer queries do not see llvmpipe's rasterization), after a warm-up,
 // and summarised by the median.
+#include <cstddef>
 #include <functional>
 #include <vector>
 
@@ -21,13 +22,32 @@ class FrameMarks;
 // first timed frame and one after each (common/timing/frame_marks.h).
 TimingStats time_frames(const std::function<void()>& frame, int warmup, int frames, const FrameMarks* marks = nullptr);
 
+// One of several things timed against each other: `prepare` (untimed, may be empty) makes it current (sets a
+// parameter, binds a program), `frame` is one frame of it.
+struct TimedWork {
+    std::function<void()> prepare;
+    std::function<void()> frame;
+};
+
+// A time ratio: of the overall medians, and the lowest and highest of the rounds' own ratios (its spread).
+struct TimeRatio {
+    double median = 0, low = 0, high = 0;
+};
+
+struct InterleavedTimes {
+    std::vector<TimingStats> stats;                 // each thing over all its frames
+    std::vector<std::vector<double>> round_medians;  // [thing][round]
+    // Thing a's time over thing b's.
+    TimeRatio ratio(std::size_t a, std::size_t b) const;
+};
+
 // Several things timed against each other fairly: a warm-up of each, then `rounds` rounds of A B C ..., `frames`
-// glFinish-bracketed frames of each per round, so that a machine that slows down (another process, a clock change)
-// slows them all alike; each one's statistics over all its frames. `prepare[i]` (untimed) makes thing i current
-// (sets a parameter, binds a program), `frame` draws one frame of whatever is current. Two things timed in separate
-// blocks on this 2-core machine gave a ratio of 2.91, 0.95 and 0.65 in three runs; interleaved, they agree.
-std::vector<TimingStats> time_interleaved(const std::vector<std::function<void()>>& prepare, const std::function<void()>& frame,
-                                          int warmup, int frames, int rounds);
+// glFinish-bracketed frames of each per round, so that a machine that slows down (another process, a clock change,
+// a core taken away) slows them all alike. A frame shorter than a few milliseconds is timed in batches (the
+// batch's time over its frames), so that glFinish and the scheduler do not decide it. Every time and ratio a sweep or a benchmark reports comes from here:
+// lab 07's two shaders timed in separate blocks on this 2-core machine gave ratios of 2.91, 0.95 and 0.65 in three
+// runs of the same sweep.
+InterleavedTimes time_interleaved(const std::vector<TimedWork>& work, int warmup, int frames, int rounds);
 
 // Frame-to-frame time in window mode, smoothed so the number on screen can be read.
 class FrameClock {

@@ -11,9 +11,12 @@
 #include "common/image/image.h"
 #include "common/scene/mesh_data.h"
 
+#include "sphere_measure.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
+#include <optional>
 
 namespace {
 
@@ -47,6 +50,8 @@ public:
     void setup(gsv::LabKit& kit) override {
         shade_ = &kit.program("shade", {"shade.vert", "shade.frag"});
         normal_error_ = &kit.program("normal_error", {"shade.vert", "normal_error.frag"});
+        exact_sphere_ = &kit.program("exact_sphere", {"gsv/fullscreen.vert", "exact_sphere.frag"});
+        quad_ = gsv::GpuMesh(gsv::make_fullscreen_quad(), kit.profile());
         teapot_ = gsv::load_obj(kit.assets().data_file("meshes/teapot.obj"));
         gsv::normalize_to_unit_sphere(teapot_);
         params_changed(kit);
@@ -65,38 +70,48 @@ public:
     }
 
     void render(gsv::LabKit& kit, const gsv::Frame& frame) override {
-        draw(kit, frame, *shade_);
+        draw(kit, frame, *shade_, kBackground);
     }
 
+    // Where the exact image does not apply (another model, a cut, silhouettes, an unequal scale), the sweep falls
+    // back to this rendered one.
     std::vector<std::string> sweep_reference() const override {
         return {"shading_rate=fragment", "mesh_resolution=1024"};
     }
+    // Plotted: the error of what each rate lights a pixel with; the image RMSE adds the outline's error.
+    std::string sweep_error_column() const override { return "shading_err_mean"; }
+    std::string sweep_reference_name() const override {
+        return "the exact sphere, ray-cast at each pixel and lit with its exact normal (exact_sphere.frag)";
+    }
 
-    // The normal the shader lights with against the sphere's exact normal, over the covered pixels.
-    gsv::SweepMetrics sweep_metrics(gsv::LabKit& kit, const gsv::Frame& frame) override {
-        if (kit.params().get_choice("model") != "sphere") return {};
-        gsv::Framebuffer target(frame.width, frame.height, gsv::ColorFormat::RGBA32F);
+    std::optional<gsv::Image> sweep_exact_image(gsv::LabKit& kit, const gsv::Frame& frame) override {
+        if (!exact_sphere_applies(kit.params())) return std::nullopt;
+        gsv::Framebuffer target(frame.width, frame.height, gsv::ColorFormat::RGBA8);
         target.bind();
-        glClearColor(0, 0, 0, 0);
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        draw(kit, frame, *normal_error_);
-        const gsv::ImageF angles = target.read_rgba32f();
-        double sum = 0, worst = 0;
-        long covered = 0;
-        for (int y = 0; y < angles.height; ++y)
-            for (int x = 0; x < angles.width; ++x) {
-                const float* texel = angles.at(x, y);
-                if (texel[3] == 0.0f) continue;
-                sum += texel[0];
-                worst = std::max(worst, static_cast<double>(texel[0]));
-                ++covered;
-            }
-        return {{"normal_err_mean_deg", covered ? sum / static_cast<double>(covered) : 0.0},
-                {"normal_err_max_deg", worst}};
+        draw(kit, frame, *exact_sphere_, kBackground);
+        return target.read_rgba8();
+    }
+
+    // What each rate lights a pixel with against the exact sphere's shading there; per fragment, also the normal
+    // it lights with against the exact normal (per vertex lights with no interpolated normal).
+    gsv::SweepMetrics sweep_metrics(gsv::LabKit& kit, const gsv::Frame& frame) override {
+        if (!exact_sphere_applies(kit.params())) return {};
+        gsv::SweepMetrics metrics = lab01::shading_error(float_image(kit, frame, *shade_), float_image(kit, frame, *exact_sphere_));
+        if (kit.params().get_choice("shading_rate") == "fragment")
+            for (auto& m : lab01::normal_error(float_image(kit, frame, *normal_error_))) metrics.push_back(m);
+        return metrics;
     }
 
 private:
-    void draw(gsv::LabKit& kit, const gsv::Frame& frame, const gsv::ShaderLibrary::Entry& entry) {
+    static constexpr glm::vec4 kBackground{0.32f, 0.33f, 0.36f, 1.0f};
+
+    static bool exact_sphere_applies(const gsv::Params& p) {
+        const glm::vec3 scale = p.get_vec3("scale");
+        return p.get_choice("model") == "sphere" && p.get_float("cut") >= 1.0 && !p.get_bool("silhouette") &&
+               scale.x == scale.y && scale.y == scale.z;
+    }
+
+    void draw(gsv::LabKit& kit, const gsv::Frame& frame, const gsv::ShaderLibrary::Entry& entry, glm::vec4 background) {
         const auto& p = kit.params();
         const gsv::OrbitCamera camera = gsv::orbit_camera(p);
         gsv::Transforms t;
@@ -104,17 +119,33 @@ private:
         t.view = camera.view();
         t.projection = camera.projection(frame.aspect());
 
-        glEnable(GL_DEPTH_TEST);
-        glClearColor(0.32f, 0.33f, 0.36f, 1.0f);
-        if (&entry == shade_) glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        glClearColor(background.r, background.g, background.b, background.a);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         const gsv::ShaderProgram& program = kit.use(entry);
         kit.set_transforms(program, t);
         program.set("uLightEye", glm::vec3(t.view * glm::vec4(p.get_vec3("light_position"), 1.0f)));
+        if (&entry == exact_sphere_) {
+            program.set("uInverseProjection", glm::inverse(t.projection));
+            glDisable(GL_DEPTH_TEST);
+            quad_.draw();
+            return;
+        }
+        glEnable(GL_DEPTH_TEST);
         mesh_->draw();
+    }
+
+    // A pass drawn into a float target whose background has alpha 0, so covered pixels can be told apart.
+    gsv::ImageF float_image(gsv::LabKit& kit, const gsv::Frame& frame, const gsv::ShaderLibrary::Entry& entry) {
+        gsv::Framebuffer target(frame.width, frame.height, gsv::ColorFormat::RGBA32F);
+        target.bind();
+        draw(kit, frame, entry, glm::vec4(0.0f));
+        return target.read_rgba32f();
     }
 
     const gsv::ShaderLibrary::Entry* shade_ = nullptr;
     const gsv::ShaderLibrary::Entry* normal_error_ = nullptr;
+    const gsv::ShaderLibrary::Entry* exact_sphere_ = nullptr;
+    gsv::GpuMesh quad_;
     gsv::MeshData teapot_;
     gsv::Tracked<gsv::GpuMesh> mesh_;
 };

@@ -11,9 +11,12 @@
 #include "common/image/image.h"
 #include "common/scene/mesh_data.h"
 #include "support/flow/flow_field.h"
+#include "support/flow/lic_reference.h"
 #include "support/flow/noise.h"
 
 #include <algorithm>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace {
@@ -58,7 +61,26 @@ public:
         quad_.draw();
     }
 
-    std::vector<std::string> sweep_reference() const override { return {"length=200"}; }
+    // Where the field has a formula and the input is the noise, each image of the sweep is measured against LIC of
+    // the same length along the field's exact streamlines, so that the error is the step's alone: against a longer
+    // LIC, Euler's and midpoint's errors came out the same.
+    std::optional<gsv::Image> sweep_exact_image(gsv::LabKit& kit, const gsv::Frame& frame) override {
+        const auto& p = kit.params();
+        exact_applies_ = p.get_choice("field") != "file" && p.get_choice("input") == "noise";
+        if (!exact_applies_) return std::nullopt;
+        exact_.update(p, [&] {
+            return gsv::ExactLic(exact_field(p, frame), noise(p, frame), frame.width, frame.height, {p.get_bool("normalized")});
+        }, frame.width, frame.height);
+        return exact_->image(p.get_int("length"));
+    }
+    std::string sweep_reference_name() const override {
+        if (exact_applies_)
+            return "LIC of the same length along the exact streamlines of the analytic field: RK4 in double on the CPU, " +
+                   std::to_string(gsv::kLicSubsteps) + " substeps per step, bilinear noise lookups";
+        return "midpoint LIC of length 200, there being no exact LIC of a field from a file or of the photograph: a longer "
+               "filter, so the error measures the length as well as the accuracy";
+    }
+    std::vector<std::string> sweep_reference() const override { return {"step=midpoint", "length=200"}; }
 
 private:
     // One flow texel per pixel: a step of one texel is a step of one pixel.
@@ -68,7 +90,8 @@ private:
         const double speed = p.get_float("speed");
         const gsv::FlowField flow =
             field == "file"    ? field_from_file(kit, speed)
-            : field == "swirl" ? gsv::make_photo_swirl(frame.width, frame.height, speed, 0.5, 0.62, p.get_float("swirl_radius"))
+            : field == "swirl" ? gsv::make_photo_swirl(frame.width, frame.height, speed, kSwirlCentre.x, kSwirlCentre.y,
+                                                       p.get_float("swirl_radius"))
                                : gsv::make_flow(gsv::flow_kind_from_name(field), frame.width, frame.height, speed,
                                                 p.get_float("time"), static_cast<std::uint64_t>(p.get_int("seed")));
         return gsv::Texture::create_2d(flow.width, flow.height, gsv::TexelFormat::RG32F, flow.velocity.data());
@@ -82,10 +105,25 @@ private:
             return gsv::Texture::create_2d(photo_.width, photo_.height, gsv::TexelFormat::RGBA8, bottom_up.rgba.data());
         }
         // Grey noise in all three channels, in float: a texel's value is exactly what the CPU drew.
-        const std::vector<float> noise = gsv::white_noise(frame.width, frame.height, static_cast<std::uint64_t>(p.get_int("seed")));
-        std::vector<float> rgb(noise.size() * 3);
-        for (std::size_t i = 0; i < noise.size(); ++i) rgb[3 * i] = rgb[3 * i + 1] = rgb[3 * i + 2] = noise[i];
+        const std::vector<float> grey = noise(p, frame);
+        std::vector<float> rgb(grey.size() * 3);
+        for (std::size_t i = 0; i < grey.size(); ++i) rgb[3 * i] = rgb[3 * i + 1] = rgb[3 * i + 2] = grey[i];
         return gsv::Texture::create_2d(frame.width, frame.height, gsv::TexelFormat::RGB32F, rgb.data());
+    }
+
+    static std::vector<float> noise(const gsv::Params& p, const gsv::Frame& frame) {
+        return gsv::white_noise(frame.width, frame.height, static_cast<std::uint64_t>(p.get_int("seed")));
+    }
+
+    // The field make_flow_texture samples, everywhere: for the sweep's exact streamlines.
+    static gsv::VelocityAt exact_field(const gsv::Params& p, const gsv::Frame& frame) {
+        const std::string field = p.get_choice("field");
+        const double speed = p.get_float("speed");
+        if (field == "swirl")
+            return gsv::analytic_photo_swirl(frame.width, frame.height, speed, kSwirlCentre.x, kSwirlCentre.y,
+                                             p.get_float("swirl_radius"));
+        return gsv::analytic_flow(gsv::flow_kind_from_name(field), frame.width, frame.height, speed, p.get_float("time"),
+                                  static_cast<std::uint64_t>(p.get_int("seed")));
     }
 
     // A file's field keeps its own grid (the shader steps in flow texels) and is rescaled like the
@@ -103,11 +141,16 @@ private:
         return field;
     }
 
+    // Grace Hopper's face in the photograph, in texture coordinates: what the swirl turns.
+    static constexpr glm::dvec2 kSwirlCentre{0.5, 0.62};
+
     const gsv::ShaderLibrary::Entry* lic_ = nullptr;
     gsv::GpuMesh quad_;
     gsv::Image photo_;
     gsv::Tracked<gsv::Texture> input_, flow_;
     gsv::Tracked<gsv::FlowSequence> file_;
+    gsv::Tracked<gsv::ExactLic> exact_;
+    bool exact_applies_ = false;
 };
 
 }  // namespace

@@ -71,6 +71,8 @@ public:
 
     // Storage changes what an image costs, not what it shows: the reference is always the array's.
     std::vector<std::string> sweep_reference() const override { return {"slices=256", "blend=linear", "storage=array"}; }
+    std::vector<std::string> sweep_reference_refinement() const override { return {"slices=512", "blend=linear", "storage=array"}; }
+    std::string sweep_reference_name() const override { return "the flow blended linearly between 256 slices per period"; }
 
     gsv::SweepMetrics sweep_metrics(gsv::LabKit& kit, const gsv::Frame&) override {
         return lab03::measure_sampling(kit, *probe_, quad_, *flow_, [&](const gsv::ShaderProgram& p) { bind_flow(p); });

@@ -1,5 +1,6 @@
 #include "particle_measure.h"
 
+#include "common/app/sweep_metrics.h"
 #include "common/gl/buffer.h"
 #include "common/gl/gl.h"
 #include "common/timing/timing.h"
@@ -26,11 +27,6 @@ gsv::ParticleSet subset(const gsv::ParticleSet& all, const std::vector<std::size
         out.origins.push_back(all.origins[i]);
     }
     return out;
-}
-
-// Median seconds of `work` (bracketed by glFinish, which costs the CPU's work nothing).
-double median_seconds(const std::function<void()>& work, int repeats) {
-    return gsv::time_frames(work, 0, repeats).median_ms / 1000.0;
 }
 
 // Bytes per second a buffer-to-buffer copy moves on this GPU (read and write counted): the speed limit of a
@@ -82,7 +78,7 @@ gsv::SweepMetrics measure(gsv::LabKit& kit, const Stepper& stepper, const gsv::P
     // Correctness: the same update on the CPU in float.
     gsv::ParticleSet same = subset(initial, sample);
     gsv::advance_cpu(same, same.count(), spec, static_cast<int>(steps));
-    double sum2 = 0, worst = 0, cpu_gap = 0;
+    double sum2 = 0, worst = 0, cpu_gap = 0, radius_ratio = 0;
     int followed = 0;
     for (std::size_t k = 0; k < sample.size(); ++k) {
         const glm::dvec3 q(gpu[sample[k]]);
@@ -91,34 +87,42 @@ gsv::SweepMetrics measure(gsv::LabKit& kit, const Stepper& stepper, const gsv::P
         const double e = glm::length(q - reference.positions[k]);
         sum2 += e * e;
         worst = std::max(worst, e);
+        const glm::dvec2 start(glm::dvec3(initial.positions[sample[k]]));
+        if (glm::length(start) > 1e-3) radius_ratio += glm::length(glm::dvec2(q)) / glm::length(start);
         ++followed;
     }
 
-    // Speed: steps alone on the GPU (no drawing), and the same step on every CPU core.
+    // Speed: steps alone on the GPU (no drawing), and the same step on every CPU core, timed in turns.
     const float hf = static_cast<float>(h);
     stepper.restart(initial);
-    stepper.run(2, hf);
-    glFinish();
-    const int batch = 4;
-    const double gpu_step_s = median_seconds([&] { stepper.run(batch, hf); }, 5) / batch;
     gsv::ParticleSet cpu_set = initial;
-    const double cpu_step_s = median_seconds([&] { gsv::advance_cpu(cpu_set, count, spec, 1); }, 3);
-    const double gpu_rate = static_cast<double>(count) / gpu_step_s;
-    const double cpu_rate = static_cast<double>(count) / cpu_step_s;
+    const gsv::InterleavedTimes times = gsv::time_interleaved(
+        {{nullptr, [&] { stepper.run(1, hf); }}, {nullptr, [&] { gsv::advance_cpu(cpu_set, count, spec, 1); }}}, 1, 2, 3);
+    const double gpu_rate = static_cast<double>(count) / (times.stats[0].median_ms / 1000.0);
+    const double cpu_rate = static_cast<double>(count) / (times.stats[1].median_ms / 1000.0);
     // Without colours the shader writes 16 bytes a particle fewer.
     const double bytes = gsv::bytes_per_particle_step(spec) - (p.get_bool("color_by_speed") ? 0.0 : 16.0);
 
-    return {{"steps", static_cast<double>(steps)},
-            {"gpu_ms_per_step", 1000.0 * gpu_step_s},
-            {"gpu_Mparticles_s", gpu_rate / 1e6},
-            {"cpu_Mparticles_s", cpu_rate / 1e6},
-            {"gpu_over_cpu", gpu_rate / cpu_rate},
-            {"gpu_bandwidth_fraction", gpu_rate * bytes / gpu_copy_bandwidth()},
-            {"cpu_bandwidth_fraction", cpu_rate * bytes / cpu_copy_bandwidth()},
-            {"pos_err_rms", followed ? std::sqrt(sum2 / followed) : 0.0},
-            {"pos_err_max", worst},
-            {"followed", static_cast<double>(followed)},
-            {"gpu_vs_cpu_max", cpu_gap}};
+    gsv::SweepMetrics m{{"steps", static_cast<double>(steps)}};
+    gsv::add_time(m, "gpu_ms_per_step", times.stats[0]);
+    m.emplace_back("gpu_Mparticles_s", gpu_rate / 1e6);
+    m.emplace_back("cpu_Mparticles_s", cpu_rate / 1e6);
+    gsv::add_ratio(m, "gpu_over_cpu", times.ratio(1, 0));
+    m.emplace_back("gpu_bandwidth_fraction", gpu_rate * bytes / gpu_copy_bandwidth());
+    m.emplace_back("cpu_bandwidth_fraction", cpu_rate * bytes / cpu_copy_bandwidth());
+    m.emplace_back("pos_err_rms", followed ? std::sqrt(sum2 / followed) : 0.0);
+    m.emplace_back("pos_err_max", worst);
+    m.emplace_back("followed", static_cast<double>(followed));
+    // The image is drawn from every particle, and one that left the domain restarted from its origin at a step
+    // that depends on h: where it is says nothing about accuracy, but it changes the image.
+    m.emplace_back("left_share", sample.empty() ? 0.0 : 1.0 - static_cast<double>(followed) / static_cast<double>(sample.size()));
+    m.emplace_back("gpu_vs_cpu_max", cpu_gap);
+    if (spec.scene == gsv::ParticleScene::Rotation && followed > 0) {
+        // The exact flow keeps every radius; each method's closed form says what its steps make of it.
+        m.emplace_back("radius_ratio", radius_ratio / followed);
+        m.emplace_back("radius_ratio_closed_form", std::pow(gsv::rotation_radius_growth_per_step(spec.integrator, h), steps));
+    }
+    return m;
 }
 
 }  // namespace lab05

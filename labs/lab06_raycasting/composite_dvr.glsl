@@ -12,11 +12,21 @@ uniform float uReferenceStepSize;
 // every ray going to its exit, and so does 0 (unset), which would otherwise stop every ray at once.
 uniform float uEarlyRayThreshold;
 
+// Every sample of a ray stands for the same ray.step: its opacity exponent is worked out once, here, and
+// carried in s.value (per sample it cost the assembled ray caster against the hand-written one).
+RcState rcStartDvr(RcRay ray) {
+    RcState s = rcStartState();
+    // TODO(L06-T3): the opacity correction's exponent for this ray, ray.step / uReferenceStepSize, kept in
+    // s.value for rcCompositeDvr; with no correction (1) when the reference is 0.
+    s.value = 1.0;
+    return s;
+}
+
 void rcCompositeDvr(inout RcState s, RcRay ray, float t, float intensity) {
     // TODO(L06-T3): classify the sample; skip it if transparent; shade it (RC_SHADE with RC_GRADIENT at
-    // its position); correct its opacity for the step, alpha' = 1 - (1 - alpha)^(ray.step /
-    // uReferenceStepSize), with no correction when the reference is 0; remember the first visible sample's
-    // t in s.hitT; and blend it front to back under what the ray has gathered (premultiplied).
+    // its position); correct its opacity for the step, alpha' = 1 - (1 - alpha)^exponent with the
+    // exponent rcStartDvr kept in s.value; remember the first visible sample's t in s.hitT; and blend it
+    // front to back under what the ray has gathered (premultiplied).
     s.color = vec4(kNotDone, 1.0);
     if (s.hitT < 0.0) s.hitT = t;
 }

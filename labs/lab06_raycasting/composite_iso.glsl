@@ -9,6 +9,8 @@ uniform float uIsoValue;
 // The surface bounds the inside, {v >= uIsoValue}; the ray hits it at its first sample inside. If the
 // sample before was outside, the crossing lies between the two, where their linear interpolation reaches
 // uIsoValue; a ray that starts inside (a cut through the object) is hit at its first sample.
+RcState rcStartIso(RcRay ray) { return rcStartState(); }
+
 void rcCompositeIso(inout RcState s, RcRay ray, float t, float intensity) {
     // TODO(L06-T5): the first sample at or above uIsoValue is a hit. Between it and the sample before
     // (s.value, if there was one) place the hit where their linear interpolation reaches uIsoValue, never

@@ -4,6 +4,8 @@
 #include "gsv/not_done.glsl"
 #include "raycast_common.glsl"
 
+RcState rcStartMip(RcRay ray) { return rcStartState(); }
+
 void rcCompositeMip(inout RcState s, RcRay ray, float t, float intensity) {
     // TODO(L06-T4): keep the largest intensity (s.value) and the t where it was (s.hitT, for the depth).
     s.hitT = t;

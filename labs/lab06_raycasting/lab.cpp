@@ -104,6 +104,11 @@ public:
     }
 
     std::vector<std::string> sweep_reference() const override { return {"samples_per_voxel=16"}; }
+    std::vector<std::string> sweep_reference_refinement() const override { return {"samples_per_voxel=32"}; }
+    std::string sweep_reference_name() const override {
+        return "images: the same compositing at 16 samples per voxel; isosurface hits (iso_err): the exact crossing of the "
+               "Marschner-Lobb signal along each ray, in double";
+    }
     bool sweep_reference_per_series() const override { return true; }
 
     gsv::SweepMetrics sweep_metrics(gsv::LabKit& kit, const gsv::Frame&) override {

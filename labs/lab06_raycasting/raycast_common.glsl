@@ -26,7 +26,9 @@ vec3 rcPosition(RcRay ray, float t) { return ray.entry + t * ray.direction; }
 struct RcState {
     vec4 color;  // premultiplied by alpha
     float hitT;  // the ray parameter whose depth is written; negative: no hit yet
-    float value; // the module's scalar: the largest intensity (MIP), the previous sample's (isosurface)
+    float value; // the module's scalar: the largest intensity (MIP), the previous sample's (isosurface), the
+                 // opacity correction's exponent (DVR: the same for every sample of the ray)
 };
 
+// Nothing gathered, no hit. A compositing module's rcStart... begins each ray from this.
 RcState rcStartState() { return RcState(vec4(0.0), -1.0, 0.0); }

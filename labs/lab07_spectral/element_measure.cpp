@@ -2,13 +2,13 @@
 
 #include "common/gl/framebuffer.h"
 #include "common/gl/gl.h"
+#include "common/app/sweep_metrics.h"
 #include "common/timing/timing.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace lab07 {
-
 gsv::SweepMetrics measure_elements(gsv::LabKit& kit, const ElementData& data, const MeasurePrograms& programs,
                                    const gsv::Transforms& transforms, int width, int height) {
     gsv::Framebuffer target(width, height, gsv::ColorFormat::RGBA32F, false);
@@ -42,16 +42,17 @@ gsv::SweepMetrics measure_elements(gsv::LabKit& kit, const ElementData& data, co
             worst_float = std::max(worst_float, std::abs(px[0] - in_double));
             ++count;
         }
-    const double drawn_ms = gsv::time_frames([&] { draw_with(*programs.color); }, 1, 5).median_ms;
-    const double corner_ms = gsv::time_frames([&] { draw_with(*programs.corners); }, 1, 5).median_ms;
-    return {{"err_max", worst},
-            {"err_rms", count ? std::sqrt(sum2 / count) : 0.0},
-            {"float_err_max", worst_float},
-            {"drawn_ms", drawn_ms},
-            {"corner_ms", corner_ms},
-            {"rate_vs_corners", corner_ms / drawn_ms},
-            {"basis_bytes", static_cast<double>(data.basis_bytes())},
-            {"value_bytes", static_cast<double>(data.value_texture.bytes())}};
+    // The two shaders timed in turns, so that whatever else the machine does falls on both alike.
+    const gsv::InterleavedTimes times = gsv::time_interleaved(
+        {{nullptr, [&] { draw_with(*programs.color); }}, {nullptr, [&] { draw_with(*programs.corners); }}}, gsv::kCompareWarmup,
+        gsv::kCompareFrames, gsv::kCompareRounds);
+    gsv::SweepMetrics m{{"err_max", worst}, {"err_rms", count ? std::sqrt(sum2 / count) : 0.0}, {"float_err_max", worst_float}};
+    gsv::add_time(m, "drawn_ms", times.stats[0]);
+    gsv::add_time(m, "corner_ms", times.stats[1]);
+    gsv::add_ratio(m, "rate_vs_corners", times.ratio(1, 0));
+    m.emplace_back("basis_bytes", static_cast<double>(data.basis_bytes()));
+    m.emplace_back("value_bytes", static_cast<double>(data.value_texture.bytes()));
+    return m;
 }
 
 }  // namespace lab07

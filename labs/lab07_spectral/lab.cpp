@@ -68,6 +68,10 @@ public:
 
     std::vector<std::string> sweep_reference() const override { return {"degree=16", "node_set=gll"}; }
     std::string sweep_error_column() const override { return "err_max"; }
+    std::string sweep_reference_name() const override {
+        return "values (err): the exact field in double at each pixel's point of the element; images: the highest "
+               "degree on GLL nodes";
+    }
 
     gsv::SweepMetrics sweep_metrics(gsv::LabKit& kit, const gsv::Frame& frame) override {
         return lab07::measure_elements(kit, data_, programs_, transforms(kit.params(), frame), frame.width, frame.height);

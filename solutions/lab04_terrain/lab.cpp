@@ -72,6 +72,15 @@ public:
     }
 
     std::vector<std::string> sweep_reference() const override { return {"delta=1"}; }
+    // The plotted error is the normals' against the truth where a formula gives it; real data have no truer
+    // normals than their own samples' finest differences.
+    std::string sweep_error_column() const override { return "normal_err_mean_deg"; }
+    std::string sweep_reference_name() const override {
+        return terrain_->procedural
+                   ? "normals: the analytic terrain's exact normals, in double; images: the image at the finest step"
+                   : "normals: central differences one sample apart on the full-resolution data, in double (the finest "
+                     "the samples allow, not the true ground); images: the image at that step";
+    }
 
     gsv::SweepMetrics sweep_metrics(gsv::LabKit& kit, const gsv::Frame&) override {
         return lab04::measure_normals(kit, *terrain_, *probe_, quad_,

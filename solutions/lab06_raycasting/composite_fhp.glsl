@@ -4,6 +4,8 @@
 #pragma once
 #include "raycast_common.glsl"
 
+RcState rcStartFhp(RcRay ray) { return rcStartState(); }
+
 void rcCompositeFhp(inout RcState s, RcRay ray, float t, float intensity) {
     if (RC_CLASSIFY(intensity).a <= 0.0) return;
     s.color = vec4(rcPosition(ray, t), 1.0);

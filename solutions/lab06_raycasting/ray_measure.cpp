@@ -1,5 +1,6 @@
 #include "ray_measure.h"
 
+#include "common/app/sweep_metrics.h"
 #include "common/timing/timing.h"
 #include "support/geometry/ray_box.h"
 #include "support/volume/gradient.h"
@@ -88,24 +89,25 @@ gsv::SweepMetrics measure_hits(const gsv::Params& p, const RayTraversal& raycast
 
 gsv::SweepMetrics compare_shaders(RayTraversal& raycaster) {
     const std::string chosen = raycaster.property("shader");
-    auto time_with = [&](const std::string& shader) {
-        raycaster.set_property("shader", shader);
-        return gsv::time_frames([&] { raycaster.process(); }, 1, 5).median_ms;
-    };
+    gsv::RaycastConfig dvr;
+    dvr.gradient = gsv::RaycastConfig::Gradient::Central;
+    dvr.classification = gsv::RaycastConfig::Classification::TransferFunction;
+    dvr.shading = gsv::RaycastConfig::Shading::Phong;
+    dvr.early_termination = raycaster.config().early_termination;
+    std::vector<std::string> shaders{"specialised", "uber"};
+    if (gsv::effective_config(raycaster.config()) == dvr) shaders.push_back("handwritten");
+    std::vector<gsv::TimedWork> work;
+    for (const auto& shader : shaders)
+        work.push_back({[&raycaster, shader] { raycaster.set_property("shader", shader); }, [&raycaster] { raycaster.process(); }});
     gsv::SweepMetrics m;
     try {
-        const double specialised = time_with("specialised");
-        const double uber = time_with("uber");
-        m = {{"specialised_ms", specialised}, {"uber_ms", uber}, {"uber_over_specialised", uber / specialised}};
-        gsv::RaycastConfig dvr;
-        dvr.gradient = gsv::RaycastConfig::Gradient::Central;
-        dvr.classification = gsv::RaycastConfig::Classification::TransferFunction;
-        dvr.shading = gsv::RaycastConfig::Shading::Phong;
-        dvr.early_termination = raycaster.config().early_termination;
-        if (gsv::effective_config(raycaster.config()) == dvr) {
-            const double handwritten = time_with("handwritten");
-            m.emplace_back("handwritten_ms", handwritten);
-            m.emplace_back("specialised_over_handwritten", specialised / handwritten);
+        const gsv::InterleavedTimes times = gsv::time_interleaved(work, gsv::kCompareWarmup, gsv::kCompareFrames, gsv::kCompareRounds);
+        gsv::add_time(m, "specialised_ms", times.stats[0]);
+        gsv::add_time(m, "uber_ms", times.stats[1]);
+        gsv::add_ratio(m, "uber_over_specialised", times.ratio(1, 0));
+        if (shaders.size() == 3) {
+            gsv::add_time(m, "handwritten_ms", times.stats[2]);
+            gsv::add_ratio(m, "specialised_over_handwritten", times.ratio(0, 2));
         }
     } catch (...) {
         raycaster.set_property("shader", chosen);

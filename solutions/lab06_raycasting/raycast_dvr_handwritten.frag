@@ -1,9 +1,9 @@
 // Lab 06: one single-purpose ray caster written out by hand: DVR, central-difference gradients, a 1D
 // transfer function, Phong shading, early ray termination. No modules and no placeholders: what the lab
-// measures the specialised raycast.frag against, to see what assembling it from modules costs. Here the
-// loop-invariant values (voxel step, physical scale, opacity exponent) are hoisted out of the loop, which
-// the modules, called per sample, cannot do; on llvmpipe that was worth about 4%. It takes the same
-// uniforms and computes the same image as raycast.frag for that configuration.
+// measures the specialised raycast.frag against, to see what assembling it from modules costs. The
+// loop-invariant values (voxel step, physical scale, opacity exponent) are worked out before the loop, as
+// the skeleton has the modules do (rcPrepareVolumeGeometry, RC_START). It takes the same uniforms and
+// computes the same image as raycast.frag for that configuration.
 #include "gsv/math.glsl"
 #include "gsv/not_done.glsl"
 

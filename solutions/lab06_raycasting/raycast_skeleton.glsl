@@ -1,5 +1,7 @@
 // Lab 06: the ray-casting skeleton. One loop from entry to exit, with the modules left as placeholders
 // that whoever includes this defines first:
+//   RC_START(ray)                           the state a ray begins with (what every sample would
+//                                          otherwise recompute, such as DVR's opacity exponent)
 //   RC_COMPOSITE(state, ray, t, intensity)  folds one sample into the state (and calls RC_CLASSIFY,
 //                                          RC_GRADIENT and RC_SHADE as its compositing needs them)
 //   RC_TERMINATE(state)                     true: the rest of the ray cannot change the pixel enough
@@ -61,7 +63,10 @@ void main() {
         gl_FragDepth = 1.0;
         return;
     }
-    RcState state = rcStartState();
+#ifdef RC_HAS_VOLUME_GEOMETRY
+    rcPrepareVolumeGeometry();  // volume_geometry.glsl is in: its figures once per ray, not once per sample
+#endif
+    RcState state = RC_START(ray);
     for (int i = 0; i < ray.samples; ++i) {
         float t = (float(i) + 0.5) * ray.step;
         RC_COMPOSITE(state, ray, t, texture(uVolume, rcPosition(ray, t)).r);

@@ -44,6 +44,13 @@ vec3 rcShadeUber(vec3 color, vec3 gradient, vec3 p) {
 #include "composite_iso.glsl"
 #include "composite_fhp.glsl"
 
+RcState rcStartUber(RcRay ray) {
+    if (uCompositingMode == 0) return rcStartDvr(ray);
+    if (uCompositingMode == 1) return rcStartMip(ray);
+    if (uCompositingMode == 2) return rcStartIso(ray);
+    return rcStartFhp(ray);
+}
+
 void rcCompositeUber(inout RcState s, RcRay ray, float t, float intensity) {
     if (uCompositingMode == 0) rcCompositeDvr(s, ray, t, intensity);
     else if (uCompositingMode == 1) rcCompositeMip(s, ray, t, intensity);
@@ -65,6 +72,7 @@ vec4 rcFinishUber(RcState s) {
     return rcFinishFhp(s);
 }
 
+#define RC_START(ray) rcStartUber(ray)
 #define RC_COMPOSITE(state, ray, t, intensity) rcCompositeUber(state, ray, t, intensity)
 #define RC_TERMINATE(state) rcTerminateUber(state)
 #define RC_FINISH(state) rcFinishUber(state)

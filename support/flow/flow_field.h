@@ -22,6 +22,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -73,6 +74,17 @@ const char* flow_kind_name(FlowKind kind);
 FlowField make_flow(FlowKind kind, int width, int height, double max_texels_per_step, double time = 0,
                     std::uint64_t seed = 0);
 
+// A continuous velocity field: the velocity in texels per step at any point in TEXEL coordinates (texel (i, j)'s
+// centre at (i + 0.5, j + 0.5), y from the bottom; the grid is [0,width]x[0,height]).
+using VelocityAt = std::function<glm::dvec2(glm::dvec2)>;
+
+// The field make_flow samples, everywhere: the same domain, the same carrying into texels and the same scale
+// factor (which make_flow finds at the texel centres), so at a texel centre it is make_flow's velocity before
+// the rounding to float, bit for bit. Beyond the grid it continues the formulas. For exact streamlines (the
+// reference of lab 02's sweep, lic_reference.h) rather than a texture. Throws as make_flow does.
+VelocityAt analytic_flow(FlowKind kind, int width, int height, double max_texels_per_step, double time = 0,
+                         std::uint64_t seed = 0);
+
 // One vortex of the Vortices field, in domain coordinates [-1,1]^2. Its velocity is the Lamb-Oseen
 // profile s (-(y-y0), x-x0) / r^2 * (1 - exp(-r^2/c^2)): a solid-body core of radius ~c, and 1/r decay
 // like a point vortex outside it.
@@ -106,6 +118,10 @@ FlowField make_vortex_flow(const std::vector<Vortex>& vortices, int width, int h
 // rotation. Throws gsv::Error for bad sizes or scale, non-finite cx, cy, or a radius not finite and >= 0.
 FlowField make_photo_swirl(int width, int height, double max_texels_per_step, double cx, double cy,
                            double radius);
+
+// make_photo_swirl's field everywhere, as analytic_flow is make_flow's. Throws as make_photo_swirl does.
+VelocityAt analytic_photo_swirl(int width, int height, double max_texels_per_step, double cx, double cy,
+                                double radius);
 
 // A von Karman vortex street on [0,2]x[0,1] (formulas and sources in vortex_street.cpp): a uniform stream
 // to the right plus two staggered rows of counter-rotating Lamb-Oseen vortices (vortex_velocity) that

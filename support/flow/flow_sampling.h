@@ -75,32 +75,66 @@ FlowSequence scaled_together(const char* who, int width, int height, int frames,
     return sequence;
 }
 
-// Texel centre i of n mapped onto [-1, 1]. Written as (2i + 1 - n) / n so that both the numerator and
-// the result are exact where it matters: texels i and n-1-i land on exactly opposite points, and the
-// middle texel of an odd n on exactly 0.
-inline double centred(int i, int n) { return (2.0 * i + 1.0 - n) / n; }
+// A point in texel coordinates (texel (i, j)'s centre at (i + 0.5, j + 0.5)) on the domain [-1,1]^2. Written as
+// (2q - n) / n so that at a texel centre the numerator 2i + 1 - n is an exact integer: texels i and n-1-i land
+// on exactly opposite points, and the middle texel of an odd n on exactly 0.
+inline glm::dvec2 square_domain_point(glm::dvec2 q, int width, int height) {
+    return {(2.0 * q.x - width) / width, (2.0 * q.y - height) / height};
+}
 
-// Analytic fields on [-1,1]^2, carried into texels: one domain unit spans n/2 texels along each axis.
+// The same on [0,2]x[0,1] (the double gyre, the vortex street): 2 domain units across width texels, 1 unit up
+// height texels.
+inline glm::dvec2 wide_domain_point(glm::dvec2 q, int width, int height) {
+    return {2.0 * q.x / width, 2.0 * q.y / (2.0 * height)};
+}
+
+// An analytic field on [-1,1]^2 as a field in texels at any point in texel coordinates, unscaled: one domain
+// unit spans n/2 texels along each axis.
 template <typename Analytic>
-DoubleField sample_square(int width, int height, Analytic analytic) {
-    DoubleField field(width, height);
-    field.fill([&](int x, int y) {
-        const glm::dvec2 v = analytic(glm::dvec2(centred(x, width), centred(y, height)));
+auto square_in_texels(int width, int height, Analytic analytic) {
+    return [width, height, analytic](glm::dvec2 q) {
+        const glm::dvec2 v = analytic(square_domain_point(q, width, height));
         return glm::dvec2(v.x * 0.5 * width, v.y * 0.5 * height);
-    });
+    };
+}
+
+// An analytic field on [0,2]x[0,1] the same way.
+template <typename Analytic>
+auto wide_in_texels(int width, int height, Analytic analytic) {
+    return [width, height, analytic](glm::dvec2 q) {
+        const glm::dvec2 v = analytic(wide_domain_point(q, width, height));
+        return glm::dvec2(v.x * 0.5 * width, v.y * height);
+    };
+}
+
+// A field in texels (a function of texel coordinates) sampled at the texel centres.
+template <typename InTexels>
+DoubleField sample_texel_centres(int width, int height, InTexels in_texels) {
+    DoubleField field(width, height);
+    field.fill([&](int x, int y) { return in_texels(glm::dvec2(x + 0.5, y + 0.5)); });
     return field;
 }
 
-// Analytic fields on [0,2]x[0,1] (the double gyre, the vortex street): 2 domain units across width texels,
-// 1 unit up height texels.
+// The continuous field whose samples make_flow rounds: `in_texels` everywhere, times the factor that makes its
+// largest speed over the texel centres max_texels_per_step. At a texel centre it is, bit for bit, what
+// sample_texel_centres(...).scaled_to(max_texels_per_step) rounds to float.
+template <typename InTexels>
+VelocityAt scaled_everywhere(int width, int height, double max_texels_per_step, InTexels in_texels) {
+    const double scale =
+        scale_for(sample_texel_centres(width, height, in_texels).largest_speed(), max_texels_per_step);
+    return [in_texels, scale](glm::dvec2 q) { return in_texels(q) * scale; };
+}
+
+// Analytic fields on [-1,1]^2 sampled at the texel centres.
+template <typename Analytic>
+DoubleField sample_square(int width, int height, Analytic analytic) {
+    return sample_texel_centres(width, height, square_in_texels(width, height, analytic));
+}
+
+// Analytic fields on [0,2]x[0,1] sampled at the texel centres.
 template <typename Analytic>
 DoubleField sample_wide(int width, int height, Analytic analytic) {
-    DoubleField field(width, height);
-    field.fill([&](int x, int y) {
-        const glm::dvec2 v = analytic(glm::dvec2((2.0 * x + 1.0) / width, (2.0 * y + 1.0) / (2.0 * height)));
-        return glm::dvec2(v.x * 0.5 * width, v.y * height);
-    });
-    return field;
+    return sample_texel_centres(width, height, wide_in_texels(width, height, analytic));
 }
 
 // The double gyre at `time`, unscaled (domain velocities carried into texels), for make_flow and for

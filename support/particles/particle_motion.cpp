@@ -128,6 +128,17 @@ bool step_particle(const StepSpec& spec, glm::tvec3<T>& p, glm::tvec3<T>& v, con
     return true;
 }
 
+double rotation_radius_growth_per_step(Integrator integrator, double h) {
+    // R(ih) = a + ib: its real part takes the even powers, its imaginary part the odd ones.
+    const double h2 = h * h;
+    switch (integrator) {
+        case Integrator::Euler: return std::sqrt(1.0 + h2);
+        case Integrator::Midpoint: return std::hypot(1.0 - h2 / 2.0, h);
+        case Integrator::Rk4: return std::hypot(1.0 - h2 / 2.0 + h2 * h2 / 24.0, h - h2 * h / 6.0);
+    }
+    throw Error("rotation_radius_growth_per_step: unknown integrator " + std::to_string(static_cast<int>(integrator)));
+}
+
 template glm::tvec3<float> field_velocity<float>(ParticleScene, glm::tvec3<float>);
 template glm::tvec3<double> field_velocity<double>(ParticleScene, glm::tvec3<double>);
 template bool step_particle<float>(const StepSpec&, glm::tvec3<float>&, glm::tvec3<float>&, const glm::tvec3<float>&,

@@ -49,6 +49,12 @@ const char* particle_scene_name(ParticleScene scene);
 Integrator integrator_from_name(const std::string& name);
 const char* integrator_name(Integrator integrator);
 
+// What one step of `integrator` does to a particle's distance from the axis of the rotation u = (-y, x, 0): the
+// exact flow keeps it, a step multiplies it by |R(ih)|, R the method's stability polynomial (1 + z for Euler,
+// 1 + z + z^2/2 for midpoint, up to z^4/24 for RK4). So n steps take a radius r to r |R(ih)|^n: after one turn
+// at h = 0.1, 1.368 for Euler, 1.0008 for midpoint, 0.9999996 for RK4.
+double rotation_radius_growth_per_step(Integrator integrator, double h);
+
 // The analytic field in domain units per unit time, for T = float or double (computed in T throughout, as
 // the shader computes in float):
 //   Rotation  u = (-y, x, 0)    circles about the z axis, period 2 pi; stagnation point at the origin

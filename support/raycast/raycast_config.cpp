@@ -139,6 +139,7 @@ std::string generate_raycast_header(const RaycastConfig& requested) {
     const Module& compositing = module_of(kCompositings, c.compositing);
     const std::string x = compositing.function;
     include(compositing);
+    text += "#define RC_START(ray) rcStart" + x + "(ray)\n";
     text += "#define RC_COMPOSITE(state, ray, t, intensity) rcComposite" + x + "(state, ray, t, intensity)\n";
     // Only DVR's termination is optional; the others' is their algorithm (stop at the hit, or never).
     const bool terminates = c.compositing != Config::Compositing::Dvr || c.early_termination;
