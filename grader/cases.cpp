@@ -141,7 +141,7 @@ void add_hidden_cases(LabCases& lab, const std::filesystem::path& file, std::uin
             drawn.visibility = "hidden";
             if (count > 1) drawn.name += "-" + std::to_string(i);
             SeededDraw draw(seed, lab.lab + "/" + drawn.name);
-            for (auto& s : draw_settings(c.object_at("draw"), draw)) drawn.settings.push_back(std::move(s));
+            for (auto& s : draw_settings(c.object_at("draw"), draw, base.settings)) drawn.settings.push_back(std::move(s));
             lab.cases.push_back(std::move(drawn));
         }
     }

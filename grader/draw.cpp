@@ -5,7 +5,9 @@
 
 #include <chrono>
 #include <cstdio>
+#include <optional>
 #include <random>
+#include <sstream>
 
 namespace gsv {
 namespace {
@@ -44,9 +46,11 @@ long SeededDraw::integer(long lo, long hi) {
     return lo + static_cast<long>(next() % span);
 }
 
-std::vector<std::string> draw_settings(const Json& spec, SeededDraw& draw) {
+std::vector<std::string> draw_settings(const Json& spec, SeededDraw& draw, const std::vector<std::string>& fixed) {
     std::vector<std::string> settings;
+    std::vector<std::pair<std::size_t, const Json*>> conditional;  // index in settings, its "when"
     for (const auto& [name, how] : spec.as_object()) {
+        if (const Json* when = how.find("when")) conditional.push_back({settings.size(), when});
         std::string value;
         if (how.contains("range")) {
             const auto [lo, hi] = bounds(how.array_at("range"), name + ".range");
@@ -70,7 +74,32 @@ std::vector<std::string> draw_settings(const Json& spec, SeededDraw& draw) {
         }
         settings.push_back(name + "=" + value);
     }
-    return settings;
+    if (conditional.empty()) return settings;
+    auto value_of = [&](const std::string& param) -> std::optional<std::string> {
+        std::optional<std::string> found;
+        for (const std::vector<std::string>* list : std::initializer_list<const std::vector<std::string>*>{&fixed, &settings})
+            for (const auto& s : *list)
+                if (s.rfind(param + "=", 0) == 0) found = s.substr(param.size() + 1);
+        return found;
+    };
+    std::vector<bool> keep(settings.size(), true);
+    for (const auto& [index, when] : conditional) {
+        const std::string text = when->as_string();
+        const auto eq = text.find('=');
+        const std::string param = text.substr(0, eq);
+        const std::optional<std::string> value = eq == std::string::npos ? std::nullopt : value_of(param);
+        if (!value)
+            throw Error(when->source_name() + ":" + std::to_string(when->line()) + ": \"when\": \"" + text +
+                        "\" needs PARAM=VALUE|VALUE with a parameter the case sets or draws");
+        bool holds = false;
+        std::stringstream values(text.substr(eq + 1));
+        for (std::string v; std::getline(values, v, '|');) holds = holds || v == *value;
+        keep[index] = holds;
+    }
+    std::vector<std::string> kept;
+    for (std::size_t i = 0; i < settings.size(); ++i)
+        if (keep[i]) kept.push_back(settings[i]);
+    return kept;
 }
 
 std::uint64_t fresh_seed() {

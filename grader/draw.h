@@ -26,7 +26,10 @@ private:
 //   {"light_x": {"range": [-4, 4]}, "steps": {"int": [1, 8]}, "model": {"choice": ["sphere", "torus"]},
 //    "light_position": {"vec3": [[-4, 4], [-1, 4], [0.5, 4]]}}
 // Throws gsv::Error naming the member when a spec is malformed.
-std::vector<std::string> draw_settings(const Json& spec, SeededDraw& draw);
+// A draw may hold only where another setting has one of some values ("when": "field=double_gyre|file"): it is
+// drawn all the same, so the rest of the stream does not depend on it, and kept only then. The other setting must be
+// one of `fixed` (the case's own settings) or drawn here; a parameter that would have no effect is refused by the lab.
+std::vector<std::string> draw_settings(const Json& spec, SeededDraw& draw, const std::vector<std::string>& fixed = {});
 
 // A seed for when none is given: from the clock and the OS's entropy, printed so the run can be repeated.
 std::uint64_t fresh_seed();

@@ -8,6 +8,7 @@
 #include "grader/draw.h"
 #include "grader/grade.h"
 
+#include <algorithm>
 #include <fstream>
 #include <set>
 
@@ -66,6 +67,36 @@ TEST_CASE("draw: hidden cases expand, take their seed, and stay in range", "[gra
     CHECK(draw_settings(spec, draw)[1] == "n=3");
     CHECK(draw_settings(spec, draw)[2] == "m=a");
     CHECK(draw_settings(spec, draw)[3] == "v=0,1,-1");
+}
+
+TEST_CASE("cases: a draw that holds only where another setting has a value is kept only there", "[grader][cases]") {
+    const Json spec = parse_json(R"({"field": {"choice": ["rotation", "double_gyre"]},
+                                     "time": {"range": [0, 10], "when": "field=double_gyre|file"}, "n": {"int": [1, 1000]}})",
+                                 "spec");
+    int kept = 0, dropped = 0;
+    for (int seed = 1; seed <= 40; ++seed) {
+        SeededDraw draw(static_cast<std::uint64_t>(seed), "s");
+        const auto settings = draw_settings(spec, draw);
+        const bool gyre = settings.front() == "field=double_gyre";
+        const bool has_time = std::any_of(settings.begin(), settings.end(), [](const std::string& s) { return s.rfind("time=", 0) == 0; });
+        CHECK(has_time == gyre);
+        (gyre ? kept : dropped) += 1;
+        // Drawn all the same: what follows does not depend on whether it was kept.
+        SeededDraw again(static_cast<std::uint64_t>(seed), "s");
+        const auto fixed = draw_settings(parse_json(R"({"field": {"choice": ["rotation", "double_gyre"]},
+                                                       "time": {"range": [0, 10]}, "n": {"int": [1, 1000]}})", "spec"),
+                                         again);
+        CHECK(settings.back() == fixed.back());
+    }
+    CHECK(kept > 0);
+    CHECK(dropped > 0);
+    // The condition may name one of the case's own settings; a parameter neither set nor drawn is a mistake.
+    SeededDraw draw(3, "s");
+    const Json on_fixed = parse_json(R"({"iso_value": {"range": [0.3, 0.7], "when": "compositing=iso"}})", "spec");
+    CHECK(draw_settings(on_fixed, draw, {"compositing=iso"}).size() == 1);
+    CHECK(draw_settings(on_fixed, draw, {"compositing=dvr"}).empty());
+    CHECK(test::gsv_error_message([&] { draw_settings(on_fixed, draw); }).find("a parameter the case sets or draws") !=
+          std::string::npos);
 }
 
 TEST_CASE("cases: a malformed spec or case file names the file and what is wrong", "[grader][cases]") {

@@ -48,7 +48,9 @@ double number(const std::map<std::string, std::string>& row, const std::string& 
 TEST_CASE("lab04: the shader's normals are the CPU's finite differences, borders included, on every terrain", "[lab04]") {
     for (const std::string terrain : {"franke", "sin_cos", "jacksboro", "topobathy"}) {
         test::TempDir dir;
-        const auto rows = sweep({"terrain=" + terrain, "grid=64", "exaggeration=4"}, dir.path());
+        std::vector<std::string> settings{"terrain=" + terrain, "exaggeration=4"};
+        if (terrain == "franke" || terrain == "sin_cos") settings.push_back("grid=64");  // real terrains have their own
+        const auto rows = sweep(settings, dir.path());
         REQUIRE(rows.size() == 5);  // delta 16, 8, 4, 2, 1
         // llvmpipe's bilinear weights are not exact at texel centres of a side that is not a power of two
         // (jacksboro's 403 x 344): 4e-3 degrees measured there, 4e-6 on the procedural 64 x 64.

@@ -53,12 +53,12 @@ Session::~Session() {
     context.reset();
 }
 
-void Session::open(Backend backend) {
+void Session::open(Backend backend, int extra_width) {
     ContextOptions context_options;
     context_options.backend = backend;
     context_options.profile = options.profile;
     context_options.version = options.gl.value_or(info.needs < GlVersion{4, 1} ? GlVersion{4, 1} : info.needs);
-    context_options.width = options.width;
+    context_options.width = options.width + extra_width;
     context_options.height = options.height;
     context_options.title = title();
     try {
@@ -105,7 +105,13 @@ void Session::apply_case(const std::string& name) {
 
 void Session::apply_command_line_settings() {
     if (!options.case_name.empty()) apply_case(options.case_name);
-    for (const auto& a : options.assignments) params.set_assignment(a);
+    std::vector<std::string> names;
+    for (const auto& a : options.assignments) {
+        params.set_assignment(a);
+        names.push_back(a.substr(0, a.find('=')));
+    }
+    // One rule everywhere: a setting that would change nothing is refused, naming what would enable it.
+    params.check_applies(names, "--set ");
 }
 
 void Session::render_frame(const Frame& frame) {

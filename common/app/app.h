@@ -5,6 +5,7 @@
 // one line: return gsv::run_lab<MyLab>(argc, argv);
 #include "common/app/assets.h"
 #include "common/app/case_file.h"
+#include "common/app/inspect_stage.h"
 #include "common/app/params.h"
 #include "common/context/context.h"
 #include "common/image/image.h"
@@ -78,6 +79,10 @@ public:
     // Visual debugging: the intermediate images of the last frame (lab 06: every port of its network), written
     // into `folder` (created); returns the files. Called by `render --debug-images` and by window screenshots.
     virtual std::vector<std::filesystem::path> write_debug_images(LabKit&, const std::filesystem::path&) { return {}; }
+    // The same, live in the window: the stages of the last frame, and one of their images (alpha and depth in
+    // pseudo-colour) read back now; none when it has none (its stage failed).
+    virtual std::vector<InspectStage> inspect_stages() const { return {}; }
+    virtual std::optional<Image> inspect_image(LabKit&, const std::string&) { return std::nullopt; }
 };
 
 // What a lab gets from the framework.

@@ -31,8 +31,9 @@ struct Session {
     std::unique_ptr<Context> context;
     std::unique_ptr<LabKit> kit;
 
-    // Creates the context, checks the lab's GL needs, builds the kit and runs lab->setup.
-    void open(Backend backend);
+    // Creates the context, checks the lab's GL needs, builds the kit and runs lab->setup. A window is
+    // `extra_width` wider than --size says (the panel's column beside the picture).
+    void open(Backend backend, int extra_width = 0);
     // Finds the kit's files (once): the lab's folder, shaders/, data/ and its case file.
     const Assets& find_assets();
     // The cases of the lab's case file, each checked against the declared parameters. Throws gsv::Error naming the

@@ -50,6 +50,7 @@ void check_sweep_command(const Session& s) { sweep_axis(s); }
 
 int run_sweep(Session& s) {
     const SweepAxis axis = sweep_axis(s);
+    s.params.check_applies({axis.name}, "sweep: the swept parameter ");
     const std::string knob_name = axis.name;
     const std::vector<std::string> knob_values = axis.values;
     std::vector<std::string> series_values{""};

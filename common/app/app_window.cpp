@@ -7,6 +7,8 @@
 #include "common/gl/gl.h"
 #include "common/image/image.h"
 #include "common/timing/timing.h"
+#include "common/window/image_view.h"
+#include "common/window/scripted_keys.h"
 #include "common/window/window_panel.h"
 
 #include <GLFW/glfw3.h>
@@ -22,18 +24,21 @@ namespace {
 const char* kControls =
     "keys: Tab/Down next parameter, Shift+Tab/Up previous, Left/Right change it (Shift: x10),\n"
     "      C next case, D defaults, R reload shaders, S screenshot, P print the command line, H help, Esc quit,\n"
-    "      Space play/pause the animated parameter (labs that have one)\n"
+    "      Space play/pause the animated parameter (labs that have one), U hide/show the panel,\n"
+    "      I show the next stage image (visual debugging: lab 06's ports)\n"
     "mouse: drag to orbit, scroll to zoom (3D labs)\n";
 
 struct WindowInput {
     Session* session = nullptr;
     WindowPanel* panel = nullptr;
+    PanelState* panel_state = nullptr;
     int selected = 0;
     int case_index = -1;
     bool params_changed = false;
     bool playing = false;  // off at start, so a window screenshot is the same picture every run
     bool screenshot = false;
     bool reload = false;
+    bool panel_shown = true;
     bool dragging = false;
     double last_x = 0, last_y = 0;
 };
@@ -79,9 +84,22 @@ std::string command_line(const Session& s) {
     return line;
 }
 
+// The picture, then every stage image in turn, then the picture again.
+void inspect_next(PanelState& state) {
+    std::vector<std::string> images{""};
+    for (const auto& stage : state.stages) images.insert(images.end(), stage.images.begin(), stage.images.end());
+    if (images.size() == 1) {
+        std::printf("this lab has no stages to inspect\n");
+        return;
+    }
+    const auto at = std::find(images.begin(), images.end(), state.inspected);
+    state.inspected = at == images.end() || at + 1 == images.end() ? images.front() : *(at + 1);
+    std::printf("inspecting %s\n", state.inspected.empty() ? "the picture" : state.inspected.c_str());
+}
+
 void on_key(GLFWwindow* window, int key, int, int action, int mods) {
     auto* in = static_cast<WindowInput*>(glfwGetWindowUserPointer(window));
-    if (action == GLFW_RELEASE || (in->panel && in->panel->wants_keyboard())) return;
+    if (action == GLFW_RELEASE || (in->panel_shown && in->panel && in->panel->wants_keyboard())) return;
     Session& s = *in->session;
     Params& params = s.params;
     const int count = static_cast<int>(params.specs().size());
@@ -95,11 +113,16 @@ void on_key(GLFWwindow* window, int key, int, int action, int mods) {
     case GLFW_KEY_DOWN: in->selected = (in->selected + 1) % count; break;
     case GLFW_KEY_UP: in->selected = (in->selected + count - 1) % count; break;
     case GLFW_KEY_RIGHT:
-    case GLFW_KEY_LEFT:
+    case GLFW_KEY_LEFT: {
         params.nudge(name, (key == GLFW_KEY_RIGHT ? 1 : -1) * (shift ? 10 : 1));
         in->params_changed = true;
-        std::printf("%s = %s\n", name.c_str(), params.get_text(name).c_str());
+        const std::string inactive = params.inactive_reason(name);
+        std::printf("%s = %s%s%s\n", name.c_str(), params.get_text(name).c_str(),
+                    inactive.empty() ? "" : " (no effect now: it ", inactive.empty() ? "" : (inactive + ")").c_str());
         break;
+    }
+    case GLFW_KEY_U: in->panel_shown = !in->panel_shown; break;
+    case GLFW_KEY_I: inspect_next(*in->panel_state); break;
     case GLFW_KEY_C:
         try {
             const std::vector<RenderCase>& cases = s.named_cases();
@@ -133,7 +156,7 @@ void on_key(GLFWwindow* window, int key, int, int action, int mods) {
 void on_mouse_button(GLFWwindow* window, int button, int action, int) {
     auto* in = static_cast<WindowInput*>(glfwGetWindowUserPointer(window));
     if (button != GLFW_MOUSE_BUTTON_LEFT) return;
-    in->dragging = action == GLFW_PRESS && !(in->panel && in->panel->wants_mouse());
+    in->dragging = action == GLFW_PRESS && !(in->panel_shown && in->panel && in->panel->wants_mouse());
     glfwGetCursorPos(window, &in->last_x, &in->last_y);
 }
 
@@ -152,12 +175,38 @@ void on_cursor(GLFWwindow* window, double x, double y) {
 
 void on_scroll(GLFWwindow* window, double, double dy) {
     auto* in = static_cast<WindowInput*>(glfwGetWindowUserPointer(window));
-    if (in->panel && in->panel->wants_mouse()) return;
+    if (in->panel_shown && in->panel && in->panel->wants_mouse()) return;
     Params& params = in->session->params;
     if (has_param(params, "camera_distance")) {
         adjust(params, "camera_distance", -0.2 * dy);
         in->params_changed = true;
     }
+}
+
+// Scripted key presses (--press KEY@FRAME) go through the same handler as the keyboard's.
+void press_scripted_keys(GLFWwindow* window, const std::vector<ScriptedKey>& keys, int next_frame) {
+    for (const auto& k : keys)
+        if (k.frame == next_frame) on_key(window, k.key, 0, GLFW_PRESS, 0);
+}
+
+// A stage image in place of the picture, read back each frame; where its stage has none now (it failed), the
+// picture stays and the status says why.
+void show_inspected(Session& s, PanelState& state, ImageView& view, const Framebuffer& picture) {
+    const std::optional<Image> image = s.lab->inspect_image(*s.kit, state.inspected);
+    if (!image) {
+        std::string why = "no image now";
+        for (const auto& stage : state.stages)
+            if (state.inspected.rfind(stage.name + ".", 0) == 0 && !stage.error.empty()) why = stage.name + ": " + stage.error;
+        state.status = state.inspected + ": " + why;
+        return;
+    }
+    picture.bind();
+    view.draw(*image, picture.width(), picture.height());
+}
+
+void write_screenshot(const std::string& path, const Image& image) {
+    write_png(path, image);
+    std::printf("wrote %s\n", path.c_str());
 }
 
 }  // namespace
@@ -166,10 +215,13 @@ int run_window(Session& s) {
     if (s.options.backend && *s.options.backend != Backend::Window)
         throw Error(std::string("window mode draws in a window; --backend ") + backend_name(*s.options.backend) +
                     " is for render and sweep");
-    s.open(Backend::Window);
+    const std::vector<ScriptedKey> scripted_keys = parse_scripted_keys(s.options.presses);
+    // The panel docks in a column beside the picture: --size is the picture's size, the window is wider.
+    s.open(Backend::Window, default_panel_width());
     if (auto error = s.sync_params()) throw Error(*error);
     GLFWwindow* window = s.context->window();
     auto panel = make_window_panel(window, s.context->effective_version());
+    if (panel->width() != default_panel_width()) glfwSetWindowSize(window, s.options.width + panel->width(), s.options.height);
 
     WindowInput input;
     input.session = &s;
@@ -182,7 +234,9 @@ int run_window(Session& s) {
     std::printf("%s", kControls);
     std::fflush(stdout);
 
-    PanelState panel_state{s.params, input.selected, 0, 0, s.title(), s.context->describe(), ""};
+    PanelState panel_state{s.params, input.selected, 0, 0, s.title(), s.context->describe(), "", "", {}, ""};
+    input.panel_state = &panel_state;
+    ImageView image_view;
     FrameClock clock;
     const double start = now_seconds();
     double last_reload_check = start;
@@ -190,8 +244,10 @@ int run_window(Session& s) {
     int frame_index = 0;
     int screenshot_count = 0;
     Params last_good = s.params;
+    Framebuffer picture;  // the lab draws here, as headless, then the picture is copied beside the panel
     while (!glfwWindowShouldClose(window)) {
         glfwPollEvents();
+        press_scripted_keys(window, scripted_keys, frame_index + 1);
         const double now = now_seconds();
         if (input.playing) {
             play(s.params, now - last_frame);
@@ -231,13 +287,18 @@ int run_window(Session& s) {
             }
         }
 
-        int width = 0, height = 0;
-        glfwGetFramebufferSize(window, &width, &height);
-        if (width == 0 || height == 0) {  // minimised
+        int window_w = 0, window_h = 0, framebuffer_w = 0, framebuffer_h = 0;
+        glfwGetWindowSize(window, &window_w, &window_h);
+        glfwGetFramebufferSize(window, &framebuffer_w, &framebuffer_h);
+        if (framebuffer_w == 0 || framebuffer_h == 0 || window_w == 0) {  // minimised
             glfwWaitEvents();
             continue;
         }
-        Framebuffer::bind_default(width, height);
+        const double density = static_cast<double>(framebuffer_w) / window_w;
+        const int panel_w = input.panel_shown ? std::min(framebuffer_w - 1, static_cast<int>(std::lround(panel->width() * density))) : 0;
+        const int width = framebuffer_w - panel_w, height = framebuffer_h;
+        if (picture.width() != width || picture.height() != height) picture = Framebuffer(width, height, ColorFormat::RGBA8);
+        picture.bind();
         const double t0 = now_seconds();
         try {
             s.render_frame(Frame{width, height, now - start, true});
@@ -250,23 +311,38 @@ int run_window(Session& s) {
         glFinish();
         panel_state.render_ms = 1000.0 * (now_seconds() - t0);
         ++frame_index;
+        panel_state.stages = s.lab->inspect_stages();
+        if (!panel_state.inspected.empty()) show_inspected(s, panel_state, image_view, picture);
 
+        // A screenshot is the picture as headless draws it, and beside it the window as the room sees it.
+        std::string window_shot;
         if (input.screenshot || frame_index == s.options.screenshot_after) {
-            glReadBuffer(GL_BACK);
-            const Image shot = read_current_framebuffer(width, height);
             std::string path = s.options.out;
             if (path.empty() || screenshot_count > 0)
                 path = s.info.id + "-screenshot-" + std::to_string(screenshot_count) + ".png";
-            write_png(path, shot);
-            std::printf("wrote %s\n", path.c_str());
-            const auto debug = std::filesystem::path(path).replace_extension().string() + "-debug";
-            for (const auto& file : s.lab->write_debug_images(*s.kit, debug)) std::printf("wrote %s\n", file.string().c_str());
-            Framebuffer::bind_default(width, height);  // the debug images bound their own targets
-            std::fflush(stdout);
+            write_screenshot(path, picture.read_rgba8());
+            const auto stem = std::filesystem::path(path).replace_extension().string();
+            for (const auto& file : s.lab->write_debug_images(*s.kit, stem + "-debug")) std::printf("wrote %s\n", file.string().c_str());
+            window_shot = stem + "-window.png";
             ++screenshot_count;
             input.screenshot = false;
         }
-        if (panel->draw(panel_state)) input.params_changed = true;
+        Framebuffer::bind_default(framebuffer_w, framebuffer_h);
+        glClearColor(0.06f, 0.06f, 0.07f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, picture.id());
+        glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+        if (input.panel_shown || panel->width() == 0) {  // the title panel takes no room: always drawn
+            const float x = static_cast<float>(width / density);
+            if (panel->draw(panel_state, PanelPlacement{x, static_cast<float>(window_w) - x, static_cast<float>(window_h)}))
+                input.params_changed = true;
+        }
+        if (!window_shot.empty()) {
+            glReadBuffer(GL_BACK);
+            write_screenshot(window_shot, read_current_framebuffer(framebuffer_w, framebuffer_h));
+        }
+        std::fflush(stdout);
         s.context->swap_buffers();
         clock.tick();
         panel_state.frame_ms = clock.smoothed_ms();

@@ -25,13 +25,19 @@ namespace {
 
 void check_settings(const Json& entry, const RenderCase& c, const Params& defaults) {
     Params probe = defaults;
+    auto where = [&](const Json& s) {
+        return s.source_name() + ":" + std::to_string(s.line()) + ":" + std::to_string(s.column()) + ": case '" + c.name + "': ";
+    };
     for (const Json& s : entry.array_at("settings").as_array()) {
         try {
             probe.set_assignment(s.as_string());
         } catch (const Error& e) {
-            throw Error(s.source_name() + ":" + std::to_string(s.line()) + ":" + std::to_string(s.column()) + ": case '" +
-                        c.name + "': " + e.what());
+            throw Error(where(s) + e.what());
         }
+    }
+    for (const Json& s : entry.array_at("settings").as_array()) {
+        const std::string name = s.as_string().substr(0, s.as_string().find('='));
+        probe.check_applies({name}, where(s));
     }
 }
 

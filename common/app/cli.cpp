@@ -2,6 +2,7 @@
 
 #include "common/core/error.h"
 #include "common/core/number_text.h"
+#include "common/window/scripted_keys.h"
 
 #include <cmath>
 #include <regex>
@@ -87,6 +88,7 @@ CliOptions parse_cli(int argc, const char* const* argv) {
         } else if (arg == "--frames") o.frames = parse_count(arg, next(), 1, 100000);
         else if (arg == "--warmup") o.warmup = parse_count(arg, next(), 0, 100000);
         else if (arg == "--screenshot-after") o.screenshot_after = parse_count(arg, next(), 1, 1000000);
+        else if (arg == "--press") o.presses.push_back(next());
         else if (arg == "--quit-after") {
             // N frames, or "Ns" seconds of wall time: tests wait the same while a lab's frames take 2 or 100 ms.
             const std::string text = next();
@@ -100,6 +102,7 @@ CliOptions parse_cli(int argc, const char* const* argv) {
         }
         else throw Error("unknown option '" + arg + "' (see --help)");
     }
+    parse_scripted_keys(o.presses);  // a bad key is a bad command line, refused before any window opens
     return o;
 }
 
@@ -112,8 +115,10 @@ std::string cli_usage(const std::string& program) {
            "  list                the lab's parameters and cases\n"
            "options:\n"
            "  --case NAME         start from a named case (see list)\n"
-           "  --set NAME=VALUE    set a parameter (repeatable); out-of-range values are refused\n"
-           "  --size WxH          image size for render, sweep and animate (default 512x512)\n"
+           "  --set NAME=VALUE    set a parameter (repeatable); out-of-range values are refused, and so is a\n"
+           "                      parameter that has no effect under the others (the error names what enables it)\n"
+           "  --size WxH          the picture's size (default 512x512); in a window the panel's column is added\n"
+           "                      beside it, and resizing the window resizes the picture\n"
            "  --out FILE          render: the PNG (default <lab>.png); window: screenshot file\n"
            "  --json FILE         render: the JSON report (default: the PNG's name with .json)\n"
            "  --out-dir DIR       sweep: where the CSV and plot go (default sweep-<lab>);\n"
@@ -132,6 +137,10 @@ std::string cli_usage(const std::string& program) {
            "  --profile P         core (default) or compat: the seeds' gl_ModelViewProjectionMatrix, gl_Vertex...\n"
            "  --gl X.Y            the OpenGL version to hold to (default: what the lab needs, at least 4.1)\n"
            "  --screenshot-after N, --quit-after N|Ns   window: save a screenshot / quit after N frames or N seconds\n"
+           "                      (a screenshot is the picture, FILE, and the whole window, FILE-window.png)\n"
+           "  --press KEY@N       window: press KEY before frame N (repeatable; U@5 hides the panel): scripted demos\n"
+           "window keys: Tab/arrows pick and change parameters, C next case, U hide/show the panel, S screenshot,\n"
+           "             H all keys (printed); parameters greyed in the panel have no effect under the current ones\n"
            "exit status: 0 ok, 1 error, 2 bad command line, 3 GL feature not available, 4 NaN/Inf in the image\n";
 }
 

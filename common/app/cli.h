@@ -32,6 +32,7 @@ struct CliOptions {
     int screenshot_after = -1;           // window: save a screenshot after N frames...
     int quit_after = -1;                 // ...and quit after N frames (Xvfb tests)
     double quit_after_s = 0;             // ...or after this many seconds ("--quit-after 8s")
+    std::vector<std::string> presses;    // window: scripted keys, "U@5" (--press), for demos and tests
     bool help = false;
 };
 

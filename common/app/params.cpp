@@ -50,6 +50,11 @@ ParamSpec& ParamSpec::at_compile_time(std::string macro) {
     return *this;
 }
 
+ParamSpec& ParamSpec::applies_when(std::string param, std::vector<std::string> values) {
+    applies_when_all.push_back({std::move(param), std::move(values)});
+    return *this;
+}
+
 ParamSpec& ParamSpec::accuracy_knob(std::vector<std::string> values) {
     sweep_values = std::move(values);
     return *this;
@@ -349,9 +354,35 @@ std::string Params::describe() const {
         else if (s.compile_time) out << ", compiled in as " << s.define;
         else out << ", uniform " << s.uniform;
         if (!s.sweep_values.empty()) out << ", ACCURACY KNOB";
+        for (const auto& condition : s.applies_when_all) {
+            out << ", only where " << condition.param << "=";
+            for (std::size_t k = 0; k < condition.values.size(); ++k) out << (k ? "|" : "") << condition.values[k];
+        }
         out << "\n      " << s.help << "\n";
     }
     return out.str();
+}
+
+std::string Params::inactive_reason(const std::string& name) const {
+    for (const auto& condition : specs_[index_of(name)].applies_when_all) {
+        const std::string value = text_at(index_of(condition.param));
+        if (std::find(condition.values.begin(), condition.values.end(), value) != condition.values.end()) continue;
+        std::string wanted;
+        for (std::size_t k = 0; k < condition.values.size(); ++k)
+            wanted += (k == 0 ? "" : k + 1 == condition.values.size() ? " or " : ", ") + condition.values[k];
+        return "needs " + condition.param + "=" + wanted + " (it is " + value + ")";
+    }
+    return {};
+}
+
+bool Params::applies(const std::string& name) const { return inactive_reason(name).empty(); }
+
+void Params::check_applies(const std::vector<std::string>& names, const std::string& where) const {
+    for (const auto& name : names) {
+        const std::string reason = inactive_reason(name);
+        if (!reason.empty())
+            throw Error(where + name + "=" + text_at(index_of(name)) + " has no effect here: it " + reason);
+    }
 }
 
 }  // namespace gsv

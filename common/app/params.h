@@ -28,6 +28,13 @@ struct ParamSpec {
     std::vector<std::string> sweep_values;  // set on the accuracy knob: its values, least accurate first
     bool sweep_series = false;         // a Choice swept as separate curves beside the knob
     bool animation_axis = false;       // a Float that window mode plays and `animate` steps through
+    // When the parameter has an effect: every condition holds (another parameter's value is one of these). Setting
+    // it where it has none is an error (Params::check_applies); the window greys it out.
+    struct Condition {
+        std::string param;
+        std::vector<std::string> values;
+    };
+    std::vector<Condition> applies_when_all;
 
     // Chainable refinements for declarations that read like a table.
     ParamSpec& at_compile_time(std::string macro = "");
@@ -36,6 +43,8 @@ struct ParamSpec {
     ParamSpec& accuracy_knob(std::vector<std::string> values_least_accurate_first);
     ParamSpec& series() { sweep_series = true; return *this; }
     ParamSpec& animated() { animation_axis = true; return *this; }
+    // Has an effect only while `param` is one of `values` ("field_file" only while field=file). Chainable: all hold.
+    ParamSpec& applies_when(std::string param, std::vector<std::string> values);
 };
 
 class Params {
@@ -88,6 +97,14 @@ public:
     const ParamSpec* series() const;
     const ParamSpec* animation_axis() const;
     std::string describe() const;  // one line per parameter: name, type, range, default, help
+
+    // Whether the parameter has an effect under the current values (its applies_when conditions hold); no read is
+    // noted. inactive_reason: empty where it applies, else what would enable it: "needs field=file (it is rotation)".
+    bool applies(const std::string& name) const;
+    std::string inactive_reason(const std::string& name) const;
+    // Throws gsv::Error for the first of `names` (parameters the user set) that has no effect under the current
+    // values: "<where>field_file has no effect while field=rotation: it needs field=file".
+    void check_applies(const std::vector<std::string>& names, const std::string& where) const;
 
 private:
     struct Value {

@@ -12,7 +12,7 @@ namespace gsv {
 // frames each, enough that three runs of the same sweep agree within 10% on every ratio on a 2-core machine.
 inline constexpr int kCompareWarmup = 2;
 inline constexpr int kCompareFrames = 4;
-inline constexpr int kCompareRounds = 5;
+inline constexpr int kCompareRounds = 9;
 
 // The median with the middle half of the frames (p25-p75).
 inline void add_time(SweepMetrics& metrics, const std::string& name, const TimingStats& stats) {

@@ -69,7 +69,7 @@ InterleavedTimes time_interleaved(const std::vector<TimedWork>& work, int warmup
     };
     // A sample is a batch of frames lasting at least kMinSampleMs: a frame of a tenth of a millisecond is mostly
     // glFinish and the scheduler, and the other core's work lands on it whole.
-    constexpr double kMinSampleMs = 8.0;
+    constexpr double kMinSampleMs = 20.0;
     std::vector<int> batch(work.size(), 1);
     for (std::size_t i = 0; i < work.size(); ++i) {
         make_current(i);

@@ -1,11 +1,14 @@
 #pragma once
 // The on-screen panel of window mode: every parameter, the frame time and the last shader error.
-// Dear ImGui where the build found it (sliders), the window title otherwise (keys still work).
+// Dear ImGui where the build found it (sliders, docked beside the picture), the window title otherwise (keys still
+// work).
+#include "common/app/inspect_stage.h"
 #include "common/app/params.h"
 #include "common/gl/gl_version.h"
 
 #include <memory>
 #include <string>
+#include <vector>
 
 struct GLFWwindow;
 
@@ -19,17 +22,29 @@ struct PanelState {
     std::string heading;     // "lab01 (solution)"
     std::string gl;          // renderer and version
     std::string status;      // last shader error or reload message
+    std::string view;        // what the picture shows, where not the lab's own render ("reference", "difference x4")
+    std::vector<InspectStage> stages;  // the lab's pipeline, for visual debugging (none: no inspector)
+    std::string inspected;             // the stage image shown in place of the picture; empty: the picture
+};
+
+// Where the panel goes: a column of the window, in window coordinates (GLFW's screen units).
+struct PanelPlacement {
+    float x = 0, width = 0, height = 0;
 };
 
 class WindowPanel {
 public:
     virtual ~WindowPanel() = default;
-    // Draws the panel over the frame; returns true when the user changed a parameter in it.
-    virtual bool draw(PanelState& state) = 0;
+    // The column the panel docks in beside the picture, in window coordinates; 0: it takes no room (the title).
+    virtual int width() const { return 0; }
+    // Draws the panel; returns true when the user changed a parameter in it.
+    virtual bool draw(PanelState& state, const PanelPlacement& placement) = 0;
     virtual bool wants_mouse() const { return false; }
     virtual bool wants_keyboard() const { return false; }
 };
 
 std::unique_ptr<WindowPanel> make_window_panel(GLFWwindow* window, GlVersion version);
+// The panel's column at a content scale of 1, before a window exists to measure: the window opens this much wider.
+int default_panel_width();
 
 }  // namespace gsv

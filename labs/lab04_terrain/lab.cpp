@@ -25,22 +25,22 @@ public:
     void declare(gsv::Params& p) override {
         p.add_choice("terrain", "jacksboro", {"jacksboro", "topobathy", "franke", "sin_cos", "flat"},
                      "real elevation models (data/terrain), or procedural ones whose exact normals are known");
-        p.add_int("grid", 256, 2, 2048, "samples per side of a procedural terrain");
+        p.add_int("grid", 256, 2, 2048, "samples per side of a procedural terrain").applies_when("terrain", {"franke", "sin_cos", "flat"});
         p.add_choice("geometry", "bump", {"bump", "mesh"}, "one bump-mapped quad, or an N x N grid displaced by the heights")
             .at_compile_time();
-        p.add_int("mesh_n", 64, 2, 1024, "N, vertices per side of the displaced grid (geometry=mesh)");
+        p.add_int("mesh_n", 64, 2, 1024, "N, vertices per side of the displaced grid (geometry=mesh)").applies_when("geometry", {"mesh"});
         p.add_float("delta", 1, 1e-5, 16, "finite-difference step, in samples (below about 1e-3 float32 cancels)")
             .with_step(0.5)
             .accuracy_knob({"16", "8", "4", "2", "1"});
         p.add_float("exaggeration", 3, 0, 100, "vertical exaggeration").with_step(0.5);
         p.add_effect("mipmaps", false, "mipmapped heights: zoomed out, far samples average instead of alias");
-        p.add_int("mip_level", -1, -1, 10, "with mipmaps: -1 lets the hardware pick the level, k reads level k");
+        p.add_int("mip_level", -1, -1, 10, "with mipmaps: -1 lets the hardware pick the level, k reads level k").applies_when("mipmaps", {"on"});
         p.add_bool("heights8", false, "heights rounded to 256 levels, as an 8-bit texture would store them");
         p.add_choice("coloring", "levels", {"levels", "plain"}, "sea, green, brown and snow by height, or one colour")
             .at_compile_time();
-        p.add_float("tree_line", 0.35, 0, 1, "where green turns brown, as a fraction of the land's height range");
-        p.add_float("snow_line", 0.8, 0, 1, "where brown turns to snow");
-        p.add_float("blend", 0.05, 0, 0.5, "half the width of each colour transition").with_step(0.01);
+        p.add_float("tree_line", 0.35, 0, 1, "where green turns brown, as a fraction of the land's height range").applies_when("coloring", {"levels"});
+        p.add_float("snow_line", 0.8, 0, 1, "where brown turns to snow").applies_when("coloring", {"levels"});
+        p.add_float("blend", 0.05, 0, 0.5, "half the width of each colour transition").with_step(0.01).applies_when("coloring", {"levels"});
         p.add_vec3("light_direction", {-1.0f, 1.2f, -0.6f}, -10, 10, "towards the light (x east, y up, z south)");
         p.add_float("pan_east", 0, -1, 1, "the point looked at, east of the centre, in model units").with_step(0.05);
         p.add_float("pan_south", 0, -1, 1, "the point looked at, south of the centre").with_step(0.05);

@@ -34,8 +34,8 @@ public:
         p.add_bool("probe", false, "an opaque sphere embedded in the volume: rays stop at it (network built in code)");
         p.add_choice("volume", "marschner_lobb", {"marschner_lobb", "anatomical", "constant", "file"},
                      "the test signal (exact values known), the MRI head, a constant (zero gradient), or volume_file");
-        p.add_file("volume_file", "", "a NIfTI-1 volume (.nii), with volume=file");
-        p.add_int("ml_size", 41, 8, 256, "voxels per side of the Marschner-Lobb volume");
+        p.add_file("volume_file", "", "a NIfTI-1 volume (.nii), with volume=file").applies_when("volume", {"file"});
+        p.add_int("ml_size", 41, 8, 256, "voxels per side of the Marschner-Lobb volume").applies_when("volume", {"marschner_lobb"});
         p.add_choice("compositing", "dvr", {"dvr", "mip", "iso", "fhp"},
                      "direct volume rendering, maximum intensity, isosurface, first hit").series();
         p.add_choice("gradient", "central", {"none", "forward", "central", "precomputed"}, "how normals are estimated");
@@ -49,15 +49,15 @@ public:
             .accuracy_knob({"0.25", "0.5", "1", "2", "4"});
         p.add_bool("opacity_correction", true, "alpha' = 1 - (1 - alpha)^(step / voxel): the image keeps its opacity as the step changes");
         p.add_float("early_ray_threshold", 0.95, 0, 1, "DVR stops a ray once it is this opaque (1: never)").with_step(0.01);
-        p.add_float("iso_value", 0.5, 0, 1, "the isosurface's value").with_step(0.01);
+        p.add_float("iso_value", 0.5, 0, 1, "the isosurface's value").with_step(0.01).applies_when("compositing", {"iso"});
         p.add_float("ambient", 0.25, 0, 1, "Phong k_a");
         p.add_float("diffuse", 0.7, 0, 1, "Phong k_d");
         p.add_float("specular", 0.3, 0, 1, "Phong k_s");
         p.add_float("shininess", 24, 1, 256, "Phong exponent").with_step(4);
         p.add_vec3("clip_normal", {0.0f, 0.0f, 0.0f}, -1, 1, "a clipping plane's normal in texture space (0,0,0: none)");
         p.add_float("clip_offset", 0, -1, 1, "keeps dot(n, t - centre) <= offset |n|").with_step(0.05);
-        p.add_vec3("probe_position", {0.3f, -0.2f, 0.4f}, -1.5, 1.5, "the probe's centre (model space, the box's largest side 2)");
-        p.add_float("probe_radius", 0.25, 0.02, 1, "the probe's radius (model units)").with_step(0.02);
+        p.add_vec3("probe_position", {0.3f, -0.2f, 0.4f}, -1.5, 1.5, "the probe's centre (model space, the box's largest side 2)").applies_when("probe", {"on"});
+        p.add_float("probe_radius", 0.25, 0.02, 1, "the probe's radius (model units)").with_step(0.02).applies_when("probe", {"on"});
         p.add_vec3("background", {0.08f, 0.09f, 0.12f}, 0, 1, "the canvas behind everything");
         p.add_bool("compare_shaders", false, "sweep: also time the uber-shader and the hand-written DVR");
         gsv::add_orbit_camera(p, 30, 25, 3.6f, 0.1f);  // down to 0.1: inside the volume
@@ -125,6 +125,12 @@ public:
     std::vector<std::filesystem::path> write_debug_images(gsv::LabKit&, const std::filesystem::path& folder) override {
         if (!network_) return {};
         return lab06::write_port_images(*network_, folder);
+    }
+    std::vector<gsv::InspectStage> inspect_stages() const override {
+        return network_ ? lab06::inspect_stages(*network_) : std::vector<gsv::InspectStage>{};
+    }
+    std::optional<gsv::Image> inspect_image(gsv::LabKit&, const std::string& name) override {
+        return network_ ? lab06::inspect_image(*network_, name) : std::nullopt;
     }
 
 private:

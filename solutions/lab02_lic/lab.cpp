@@ -29,7 +29,8 @@ public:
         p.add_choice("field", "rotation", {"rotation", "saddle", "source", "double_gyre", "vortices", "swirl", "file"},
                      "the flow: analytic fields, a swirl confined to a disc for the photograph, or field_file");
         p.add_file("field_file", "flows/vortex_street.flow",
-                   "a .flow file (format in data/README.md) for field=file; of a sequence, the frame at `time`");
+                   "a .flow file (format in data/README.md) for field=file; of a sequence, the frame at `time`")
+            .applies_when("field", {"file"});
         p.add_choice("input", "noise", {"noise", "photo"}, "what LIC smears: white noise, or a photograph");
         p.add_int("length", 25, 0, 200, "steps each way along the streamline")
             .accuracy_knob({"1", "2", "5", "10", "25", "50", "100"});
@@ -39,8 +40,9 @@ public:
         p.add_effect("normalized", false, "unit steps along the flow, whatever its speed");
         p.add_float("speed", 1.0, 0, 4, "the field's largest speed, in texels per step").with_step(0.1);
         p.add_int("seed", 1, 0, 1000000, "the white noise and the vortices");
-        p.add_float("time", 0, 0, 10, "the double gyre's time; the frame of a .flow sequence").with_step(0.5).animated();
-        p.add_float("swirl_radius", 0.28, 0.05, 0.7, "radius of the swirl around the photograph's face").with_step(0.02);
+        p.add_float("time", 0, 0, 10, "the double gyre's time; the frame of a .flow sequence").with_step(0.5).animated()
+            .applies_when("field", {"double_gyre", "file"});
+        p.add_float("swirl_radius", 0.28, 0.05, 0.7, "radius of the swirl around the photograph's face").with_step(0.02).applies_when("field", {"swirl"});
     }
 
     void setup(gsv::LabKit& kit) override {

@@ -27,7 +27,7 @@ public:
     void declare(gsv::Params& p) override {
         p.add_choice("field", "double_gyre", {"double_gyre", "vortex_street", "file"},
                      "the time-varying flow: analytic, or the sequence in field_file");
-        p.add_file("field_file", "flows/vortex_street.flow", "a .flow sequence (data/README.md) for field=file");
+        p.add_file("field_file", "flows/vortex_street.flow", "a .flow sequence (data/README.md) for field=file").applies_when("field", {"file"});
         p.add_int("slices", 16, 1, 4096, "T: time slices stored over one period (a file's frames are resampled to T)")
             .at_compile_time()
             .accuracy_knob({"1", "2", "4", "8", "16", "32", "64"});

@@ -39,7 +39,7 @@ public:
         p.add_choice("source", "analytic", {"analytic", "texture"},
                      "the field's formula in the shader, or its samples in a 3D texture (not for gravity)")
             .at_compile_time();
-        p.add_int("grid", 32, 2, 256, "samples per side of the velocity texture (source=texture)");
+        p.add_int("grid", 32, 2, 256, "samples per side of the velocity texture (source=texture)").applies_when("source", {"texture"});
         p.add_choice("integrator", "euler", {"euler", "midpoint", "rk4"}, "the step, compiled in").at_compile_time().series();
         p.add_float("time_step", 0.05, 1e-4, 0.5, "h, the simulated time per step")
             .with_step(0.01)
@@ -48,9 +48,9 @@ public:
         p.add_int("particles", 1048576, 1, 16777216, "how many particles");
         p.add_int("local_size", 128, 1, 1024, "invocations per work group").at_compile_time();
         p.add_int("seed", 1, 0, 1000000, "where the particles start");
-        p.add_float("gravity", 2, 0, 20, "the fountain's downward acceleration (field=gravity)").with_step(0.5);
+        p.add_float("gravity", 2, 0, 20, "the fountain's downward acceleration (field=gravity)").with_step(0.5).applies_when("field", {"gravity"});
         p.add_effect("color_by_speed", true, "colour each particle by its speed; off, the shader writes no colours");
-        p.add_float("speed_scale", 1.5, 0.01, 100, "the speed drawn red").with_step(0.1);
+        p.add_float("speed_scale", 1.5, 0.01, 100, "the speed drawn red").with_step(0.1).applies_when("color_by_speed", {"on"});
         p.add_float("point_size", 1, 1, 16, "points' size in pixels").with_step(1);
         gsv::add_orbit_camera(p, 30, 20, 5.0f);
     }

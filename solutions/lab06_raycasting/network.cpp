@@ -14,6 +14,8 @@
 namespace lab06 {
 namespace {
 
+enum class PortView { Color, Alpha, Depth };
+
 // A perceptually ordered ramp (dark blue, teal, green, yellow) for one scalar in [0, 1].
 std::array<std::uint8_t, 4> pseudo_color(float x) {
     static const float ramp[5][3] = {{0.27f, 0.00f, 0.33f}, {0.23f, 0.32f, 0.55f}, {0.13f, 0.57f, 0.55f},
@@ -37,19 +39,16 @@ gsv::Image scalar_image(int width, int height, const std::vector<float>& values,
     return image;
 }
 
-void write_image_port(const ImageData& target, const std::filesystem::path& file, std::vector<std::filesystem::path>& written) {
+// Alpha as it is; depth, which crowds near 1 under a perspective projection, stretched over what the image covers.
+gsv::Image port_view(const ImageData& target, PortView view) {
     const gsv::ImageF color = target.read_rgba32f();
-    gsv::write_png(file, gsv::to_rgba8(color));
-    written.push_back(file);
+    if (view == PortView::Color) return gsv::to_rgba8(color);
     const std::size_t n = static_cast<std::size_t>(target.width()) * target.height();
-    std::vector<float> alpha(n);
-    for (std::size_t i = 0; i < n; ++i) alpha[i] = color.rgba[4 * i + 3];
-    std::filesystem::path stem = file;
-    stem.replace_extension();
-    const auto alpha_file = std::filesystem::path(stem.string() + ".alpha.png");
-    gsv::write_png(alpha_file, scalar_image(target.width(), target.height(), alpha, 0.0f, 1.0f, std::vector<bool>(n, true)));
-    written.push_back(alpha_file);
-    // Depth crowds near 1 under a perspective projection: stretch what the image covers over the ramp.
+    if (view == PortView::Alpha) {
+        std::vector<float> alpha(n);
+        for (std::size_t i = 0; i < n; ++i) alpha[i] = color.rgba[4 * i + 3];
+        return scalar_image(target.width(), target.height(), alpha, 0.0f, 1.0f, std::vector<bool>(n, true));
+    }
     const std::vector<float> depth = target.read_depth();
     std::vector<bool> covered(n);
     float lo = 1.0f, hi = 0.0f;
@@ -60,9 +59,17 @@ void write_image_port(const ImageData& target, const std::filesystem::path& file
             hi = std::max(hi, depth[i]);
         }
     }
-    const auto depth_file = std::filesystem::path(stem.string() + ".depth.png");
-    gsv::write_png(depth_file, scalar_image(target.width(), target.height(), depth, lo, hi, covered));
-    written.push_back(depth_file);
+    return scalar_image(target.width(), target.height(), depth, lo, hi, covered);
+}
+
+void write_image_port(const ImageData& target, const std::filesystem::path& file, std::vector<std::filesystem::path>& written) {
+    std::filesystem::path stem = file;
+    stem.replace_extension();
+    for (const auto& [view, name] : {std::pair{PortView::Color, file.string()}, std::pair{PortView::Alpha, stem.string() + ".alpha.png"},
+                                     std::pair{PortView::Depth, stem.string() + ".depth.png"}}) {
+        gsv::write_png(name, port_view(target, view));
+        written.push_back(name);
+    }
 }
 
 }  // namespace
@@ -111,6 +118,29 @@ void set_view(gsv::Network& network, const FrameView* view) {
         if (!lab_processor) throw gsv::Error(p->describe() + " is not one of lab 06's processors");
         lab_processor->set_view(view);
     }
+}
+
+std::vector<gsv::InspectStage> inspect_stages(const gsv::Network& network) {
+    std::vector<gsv::InspectStage> stages;
+    for (const auto& processor : network.processors()) {
+        gsv::InspectStage stage{processor->name(), processor->error(), {}};
+        if (processor->state() == gsv::RunState::Pending) stage.error = "not run yet";
+        for (const auto& port : processor->outputs())
+            if (port.type == gsv::PortType::Image)
+                for (const char* view : {"", " alpha", " depth"}) stage.images.push_back(processor->name() + "." + port.name + view);
+        stages.push_back(std::move(stage));
+    }
+    return stages;
+}
+
+std::optional<gsv::Image> inspect_image(const gsv::Network& network, const std::string& name) {
+    const auto dot = name.find('.'), space = name.find(' ');
+    const gsv::Processor* processor = network.find(name.substr(0, dot));
+    const gsv::Port* port = processor && dot != std::string::npos ? processor->find_output(name.substr(dot + 1, space - dot - 1)) : nullptr;
+    const auto target = port ? port->data.as<ImageData>() : nullptr;
+    if (!target || processor->state() != gsv::RunState::Ran) return std::nullopt;
+    const std::string view = space == std::string::npos ? "" : name.substr(space + 1);
+    return port_view(*target, view == "alpha" ? PortView::Alpha : view == "depth" ? PortView::Depth : PortView::Color);
 }
 
 std::vector<std::filesystem::path> write_port_images(const gsv::Network& network, const std::filesystem::path& folder) {

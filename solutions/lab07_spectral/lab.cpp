@@ -25,7 +25,7 @@ public:
         p.add_choice("mesh", "annulus", {"annulus", "grid"}, "curved elements around a ring, or square elements tiling [-1,1]^2");
         p.add_int("columns", 32, 1, 4096, "elements around the ring (annulus) or across (grid)");
         p.add_int("rows", 4, 1, 4096, "elements across the ring (annulus) or up (grid)");
-        p.add_float("inner_radius", 0.35, 0, 0.95, "the annulus's inner radius (the outer is 1)").with_step(0.05);
+        p.add_float("inner_radius", 0.35, 0, 0.95, "the annulus's inner radius (the outer is 1)").with_step(0.05).applies_when("mesh", {"annulus"});
         p.add_choice("field", "waves", {"waves", "runge", "polynomial"},
                      "travelling waves; Runge's function; a polynomial of degree 3 per variable");
         p.add_int("degree", 4, 1, 16, "p: the polynomial degree per axis, p + 1 nodes per axis (the seed's order p - 1)")
@@ -37,8 +37,8 @@ public:
         p.add_int("subdivisions", 6, 1, 64, "quads per element side, to follow curved elements (the field is per fragment)");
         p.add_float("time", 0, 0, 6.2832, "the field's time: play it in the window").with_step(0.05).animated();
         p.add_bool("auto_range", true, "colour range from the smallest to the largest node value");
-        p.add_float("range_min", -1, -100, 100, "with auto_range off: the value drawn blue").with_step(0.05);
-        p.add_float("range_max", 1, -100, 100, "with auto_range off: the value drawn red").with_step(0.05);
+        p.add_float("range_min", -1, -100, 100, "with auto_range off: the value drawn blue").with_step(0.05).applies_when("auto_range", {"off"});
+        p.add_float("range_max", 1, -100, 100, "with auto_range off: the value drawn red").with_step(0.05).applies_when("auto_range", {"off"});
         p.add_effect("element_edges", true, "a thin dark line along every element's edges");
         p.add_float("zoom", 1, 0.5, 500, "magnification (1: the whole mesh)").with_step(0.25);
         p.add_float("centre_x", 0, -1.2, 1.2, "the point looked at").with_step(0.02);
