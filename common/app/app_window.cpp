@@ -182,13 +182,14 @@ int run_window(Session& s) {
     std::printf("%s", kControls);
     std::fflush(stdout);
 
-    PanelState panel_state{s.params, input.selected, 0, 0, s.title(), s.context->describe(), ""};
+    PanelState panel_state{s.params, input.selected, 0, 0, s.title(), s.context->describe(), "", std::nullopt};
     FrameClock clock;
     const double start = now_seconds();
     double last_reload_check = start;
     double last_frame = start;
     int frame_index = 0;
     int screenshot_count = 0;
+    bool legend_stale = true;  // what the colours stand for: asked again after a change, not every frame
     Params last_good = s.params;
     while (!glfwWindowShouldClose(window)) {
         glfwPollEvents();
@@ -200,6 +201,7 @@ int run_window(Session& s) {
         last_frame = now;
         if (input.reload || now - last_reload_check > 0.25) {
             last_reload_check = now;
+            legend_stale = true;  // a saved colour function shows in the legend too
             std::optional<std::string> error = input.reload ? s.kit->shaders().rebuild_all(s.params.defines())
                                                             : s.kit->shaders().reload_changed(s.params.defines());
             if (error) {
@@ -221,6 +223,7 @@ int run_window(Session& s) {
         };
         if (input.params_changed) {
             input.params_changed = false;
+            legend_stale = true;
             try {
                 if (auto error = s.sync_params()) {
                     panel_state.status = *error;
@@ -265,6 +268,15 @@ int run_window(Session& s) {
             std::fflush(stdout);
             ++screenshot_count;
             input.screenshot = false;
+        }
+        if (legend_stale) {
+            legend_stale = false;
+            try {
+                panel_state.legend = s.lab->legend(*s.kit);
+            } catch (const Error& e) {
+                panel_state.legend.reset();
+                panel_state.status = e.what();
+            }
         }
         if (panel->draw(panel_state)) input.params_changed = true;
         s.context->swap_buffers();

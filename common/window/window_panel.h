@@ -3,8 +3,10 @@
 // Dear ImGui where the build found it (sliders), the window title otherwise (keys still work).
 #include "common/app/params.h"
 #include "common/gl/gl_version.h"
+#include "common/image/legend.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 
 struct GLFWwindow;
@@ -19,6 +21,7 @@ struct PanelState {
     std::string heading;     // "lab01 (solution)"
     std::string gl;          // renderer and version
     std::string status;      // last shader error or reload message
+    std::optional<Legend> legend;  // what the colours stand for, where they are data (Lab::legend)
 };
 
 class WindowPanel {

@@ -1,5 +1,6 @@
 // The ImGui panel: a slider per parameter (glman's "a uniform with a range becomes a slider").
 #include "common/window/window_panel.h"
+#include "common/window/legend_imgui.h"
 
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
@@ -106,6 +107,10 @@ public:
             if (ImGui::IsItemActivated()) state.selected = index;
             ImGui::PopID();
             ++index;
+        }
+        if (state.legend) {
+            ImGui::Separator();
+            draw_legend_imgui(*state.legend);
         }
         if (!state.status.empty()) {
             ImGui::Separator();
