@@ -204,6 +204,9 @@ and vcpkg equivalents; then `cmake --preset default && cmake --build --preset de
   not seen.
 - `build/bin/lab01` opens your lab in a window (shaders reload when saved; H lists the keys); `build/bin/lab01 list`
   shows its parameters and named cases; `build/bin/lab01 render --case phong --out phong.png` renders one headless.
+- `build/bin/lab01 compare --case phong` writes `lab01-compare-phong.png`: your render, the case's golden image and
+  their difference, amplified, side by side, and prints the RMSE and the largest difference. In labs 04 to 07,
+  `render --legend` adds a colour bar with the values the colours stand for, sampled from your own shaders.
 
 ## Self-check
 

@@ -343,7 +343,7 @@ TEST_CASE("animate: bad command lines and a lab without an animated parameter gi
         {{"animate", "--fps", "fast"}, "option --fps needs a number, got 'fast'"},
         {{"animate", "--bogus"}, "unknown option '--bogus'"},
         {{"animate"}, "pulse has no animated parameter to step", false},
-        {{"animat"}, "expected window, render, sweep, animate or list"},
+        {{"animat"}, "expected window, render, sweep, animate, compare or list"},
     };
     test::TempDir dir;
     for (const auto& b : bad) {

@@ -186,6 +186,7 @@ int run_lab(std::unique_ptr<Lab> lab, const char* lab_dir, const char* variant, 
         case RunMode::Render: return run_render(session);
         case RunMode::Sweep: return run_sweep(session);
         case RunMode::Animate: return run_animate(session);
+        case RunMode::Compare: return run_compare(session);
         case RunMode::List: break;
         }
         return kExitOk;

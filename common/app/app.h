@@ -9,6 +9,7 @@
 #include "common/app/params.h"
 #include "common/context/context.h"
 #include "common/image/image.h"
+#include "common/image/legend.h"
 #include "common/io/data_array.h"
 #include "common/scene/transforms.h"
 #include "common/shader/shader_library.h"
@@ -76,6 +77,11 @@ public:
     virtual std::string sweep_error_column() const { return {}; }
     // What render mode writes beside the image for the grader to compare with the reference's; most labs none.
     virtual std::vector<DataArray> readback(LabKit&) { return {}; }
+    // Where colour is data (a height, a speed, an intensity's colour and opacity): what the colours of the frame last
+    // drawn stand for, sampled from the same shaders (common/app/legend_probe.h) or the same C++ tables that drew
+    // it, so the legend cannot drift from the picture. `render --legend` draws it beside the image and the
+    // window's panel live. None: this lab's colours, with these settings, stand for no value (shading, LIC).
+    virtual std::optional<Legend> legend(LabKit&) { return std::nullopt; }
     // Visual debugging: the intermediate images of the last frame (lab 06: every port of its network), written
     // into `folder` (created); returns the files. Called by `render --debug-images` and by window screenshots.
     virtual std::vector<std::filesystem::path> write_debug_images(LabKit&, const std::filesystem::path&) { return {}; }

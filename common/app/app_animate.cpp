@@ -68,6 +68,8 @@ int run_animate(Session& s) {
         inf_values += shot.stats.inf_count;
         char name[32];
         std::snprintf(name, sizeof name, "frame_%04d.png", i);
+        // Each frame's own legend: a range that follows the data (lab 07's auto_range) changes with the frame.
+        if (s.options.legend) shot.image = with_lab_legend(s, shot.image);
         write_png(dir / name, shot.image);
         frames.push_back(std::move(shot.image));
     }

@@ -97,7 +97,8 @@ int run_render(Session& s) {
     if (png.empty()) png = s.info.id + (s.options.case_name.empty() ? "" : "-" + s.options.case_name) + ".png";
     std::string json_path = s.options.json;
     if (json_path.empty()) json_path = std::filesystem::path(png).replace_extension(".json").string();
-    write_png(png, image);
+    // The legend after the timed frames and before anything else draws: it describes the frame read back.
+    write_png(png, s.options.legend ? with_lab_legend(s, image) : image);
     // After the last timed frame, so what is handed in is what the image shows. Only when asked: a million
     // particles are 32 MiB that a student's render does not need.
     const std::vector<DataArray> arrays = s.options.arrays ? s.lab->readback(*s.kit) : std::vector<DataArray>{};
@@ -120,6 +121,7 @@ int run_render(Session& s) {
     report["nan_pixels"] = static_cast<double>(stats.nan_count);
     report["inf_pixels"] = static_cast<double>(stats.inf_count);
     report["blank"] = is_blank(image);
+    if (s.options.legend) report["legend"] = true;  // the PNG is wider than width: the legend's panel is beside it
     if (!arrays.empty()) report["arrays"] = listed;
     std::ofstream out(json_path);
     if (!out || !(out << report.dump(2) << "\n")) throw Error("cannot write '" + json_path + "'");

@@ -63,6 +63,10 @@ struct Readback {
 };
 Readback read_back(const Framebuffer& float_target);
 
+// The image with the lab's legend beside it (--legend). Throws gsv::Error when the lab's colours, with these
+// settings, stand for no value.
+Image with_lab_legend(Session& session, const Image& image);
+
 int run_window(Session& session);
 int run_render(Session& session);
 int run_sweep(Session& session);
@@ -71,5 +75,8 @@ void check_sweep_command(const Session& session);
 // Throws the one-line usage error (exit 2) for an animate command this lab cannot run, before any GL.
 void check_animate_command(const Session& session);
 int run_animate(Session& session);
+// Renders this binary's image and the reference's (common/app/reference_image.h) and writes the two with their
+// difference as one PNG.
+int run_compare(Session& session);
 
 }  // namespace gsv

@@ -1,6 +1,7 @@
 // Window mode: the lab live, every parameter on keys (and sliders with ImGui), frame time on screen,
 // hot reload of shader files, screenshots, and the command line that reproduces what is on screen.
 #include "common/app/app_session.h"
+#include "common/app/window_reference.h"
 #include "common/core/error.h"
 #include "common/core/number_text.h"
 #include "common/gl/framebuffer.h"
@@ -14,9 +15,11 @@
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <thread>
 
 namespace gsv {
 namespace {
@@ -25,7 +28,8 @@ const char* kControls =
     "keys: Tab/Down next parameter, Shift+Tab/Up previous, Left/Right change it (Shift: x10),\n"
     "      C next case, D defaults, R reload shaders, S screenshot, P print the command line, H help, Esc quit,\n"
     "      Space play/pause the animated parameter (labs that have one), U hide/show the panel,\n"
-    "      I show the next stage image (visual debugging: lab 06's ports)\n"
+    "      I show the next stage image (visual debugging: lab 06's ports),\n"
+    "      V yours / the reference / split / the difference (the reference: the kit's solution, or the golden image)\n"
     "mouse: drag to orbit, scroll to zoom (3D labs)\n";
 
 struct WindowInput {
@@ -39,6 +43,7 @@ struct WindowInput {
     bool screenshot = false;
     bool reload = false;
     bool panel_shown = true;
+    PictureView view = PictureView::Yours;
     bool dragging = false;
     double last_x = 0, last_y = 0;
 };
@@ -84,6 +89,16 @@ std::string command_line(const Session& s) {
     return line;
 }
 
+const char* view_name(PictureView view) {
+    switch (view) {
+    case PictureView::Yours: return "yours";
+    case PictureView::Reference: return "the reference";
+    case PictureView::Split: return "yours | the reference";
+    case PictureView::Difference: return "the difference";
+    }
+    return "";
+}
+
 // The picture, then every stage image in turn, then the picture again.
 void inspect_next(PanelState& state) {
     std::vector<std::string> images{""};
@@ -123,6 +138,10 @@ void on_key(GLFWwindow* window, int key, int, int action, int mods) {
     }
     case GLFW_KEY_U: in->panel_shown = !in->panel_shown; break;
     case GLFW_KEY_I: inspect_next(*in->panel_state); break;
+    case GLFW_KEY_V:
+        in->view = next_view(in->view);
+        std::printf("view: %s\n", view_name(in->view));
+        break;
     case GLFW_KEY_C:
         try {
             const std::vector<RenderCase>& cases = s.named_cases();
@@ -132,6 +151,9 @@ void on_key(GLFWwindow* window, int key, int, int action, int mods) {
             // A case is its settings over the defaults, not over the case before it.
             params = s.defaults;
             s.apply_case(next.name);
+            // What the window shows is now this case: the reference (a solution's render, or this case's golden) too.
+            s.options.case_name = next.name;
+            s.options.assignments.clear();
             in->params_changed = true;
             std::printf("case %s: %s\n", next.name.c_str(), next.description.c_str());
         } catch (const Error& e) {
@@ -204,6 +226,26 @@ void show_inspected(Session& s, PanelState& state, ImageView& view, const Frameb
     view.draw(*image, picture.width(), picture.height());
 }
 
+// The reference's view of the picture: the solution renders these settings in a child process while the window
+// goes on drawing yours; a screenshot waits for it, so that it shows what it says.
+void show_beside_reference(Session& s, PictureView view, PanelState& state, LiveReference& live, ImageView& image_view,
+                           const Framebuffer& picture, bool screenshot) {
+    const Image* reference = live.get(s, picture.width(), picture.height());
+    for (int waited = 0; !reference && screenshot && live.pending() && waited < 1200; ++waited) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        reference = live.get(s, picture.width(), picture.height());
+    }
+    if (!reference) {
+        state.view = std::string(view_name(view)) + ": " + live.status();
+        return;
+    }
+    const ComposedView composed = compose_view(view, picture.read_rgba8(), *reference, live.status());
+    if (state.view != composed.caption) std::printf("view: %s\n", composed.caption.c_str());
+    state.view = composed.caption;
+    picture.bind();
+    image_view.draw(composed.image, picture.width(), picture.height());
+}
+
 void write_screenshot(const std::string& path, const Image& image) {
     write_png(path, image);
     std::printf("wrote %s\n", path.c_str());
@@ -234,15 +276,17 @@ int run_window(Session& s) {
     std::printf("%s", kControls);
     std::fflush(stdout);
 
-    PanelState panel_state{s.params, input.selected, 0, 0, s.title(), s.context->describe(), "", "", {}, ""};
+    PanelState panel_state{s.params, input.selected, 0, 0, s.title(), s.context->describe(), "", "", {}, "", std::nullopt};
     input.panel_state = &panel_state;
     ImageView image_view;
+    LiveReference live_reference;
     FrameClock clock;
     const double start = now_seconds();
     double last_reload_check = start;
     double last_frame = start;
     int frame_index = 0;
     int screenshot_count = 0;
+    bool legend_stale = true;  // what the colours stand for: asked again after a change, not every frame
     Params last_good = s.params;
     Framebuffer picture;  // the lab draws here, as headless, then the picture is copied beside the panel
     while (!glfwWindowShouldClose(window)) {
@@ -256,6 +300,7 @@ int run_window(Session& s) {
         last_frame = now;
         if (input.reload || now - last_reload_check > 0.25) {
             last_reload_check = now;
+            legend_stale = true;  // a saved colour function shows in the legend too
             std::optional<std::string> error = input.reload ? s.kit->shaders().rebuild_all(s.params.defines())
                                                             : s.kit->shaders().reload_changed(s.params.defines());
             if (error) {
@@ -277,6 +322,7 @@ int run_window(Session& s) {
         };
         if (input.params_changed) {
             input.params_changed = false;
+            legend_stale = true;
             try {
                 if (auto error = s.sync_params()) {
                     panel_state.status = *error;
@@ -313,6 +359,10 @@ int run_window(Session& s) {
         ++frame_index;
         panel_state.stages = s.lab->inspect_stages();
         if (!panel_state.inspected.empty()) show_inspected(s, panel_state, image_view, picture);
+        else if (input.view != PictureView::Yours)
+            show_beside_reference(s, input.view, panel_state, live_reference, image_view, picture,
+                                  input.screenshot || frame_index == s.options.screenshot_after);
+        else panel_state.view.clear();
 
         // A screenshot is the picture as headless draws it, and beside it the window as the room sees it.
         std::string window_shot;
@@ -326,6 +376,15 @@ int run_window(Session& s) {
             window_shot = stem + "-window.png";
             ++screenshot_count;
             input.screenshot = false;
+        }
+        if (legend_stale) {  // before the window's own framebuffer is bound: the legend draws its probe elsewhere
+            legend_stale = false;
+            try {
+                panel_state.legend = s.lab->legend(*s.kit);
+            } catch (const Error& e) {
+                panel_state.legend.reset();
+                panel_state.status = e.what();
+            }
         }
         Framebuffer::bind_default(framebuffer_w, framebuffer_h);
         glClearColor(0.06f, 0.06f, 0.07f, 1.0f);

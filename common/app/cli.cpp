@@ -37,8 +37,9 @@ CliOptions parse_cli(int argc, const char* const* argv) {
         else if (mode == "render") o.mode = RunMode::Render;
         else if (mode == "sweep") o.mode = RunMode::Sweep;
         else if (mode == "animate") o.mode = RunMode::Animate;
+        else if (mode == "compare") o.mode = RunMode::Compare;
         else if (mode == "list") o.mode = RunMode::List;
-        else throw Error("unknown mode '" + mode + "' (expected window, render, sweep, animate or list; see --help)");
+        else throw Error("unknown mode '" + mode + "' (expected window, render, sweep, animate, compare or list; see --help)");
     }
     auto value = [&](const std::string& option) -> std::string {
         if (i + 1 >= argc) throw Error("option " + option + " needs a value");
@@ -69,10 +70,12 @@ CliOptions parse_cli(int argc, const char* const* argv) {
             if (!std::regex_match(text, m, pattern)) throw Error("option --size needs WIDTHxHEIGHT, got '" + text + "'");
             o.width = parse_count("--size", m[1], 1, 8192);
             o.height = parse_count("--size", m[2], 1, 8192);
+            o.size_given = true;
         } else if (arg == "--out" || arg == "-o") o.out = next();
         else if (arg == "--json") o.json = next();
         else if (arg == "--arrays") o.arrays = true;
         else if (arg == "--debug-images") o.debug_images = true;
+        else if (arg == "--legend") o.legend = true;
         else if (arg == "--out-dir") o.out_dir = next();
         else if (arg == "--count") o.count = parse_count(arg, next(), 1, 9999);
         else if (arg == "--fps") {
@@ -103,23 +106,32 @@ CliOptions parse_cli(int argc, const char* const* argv) {
         else throw Error("unknown option '" + arg + "' (see --help)");
     }
     parse_scripted_keys(o.presses);  // a bad key is a bad command line, refused before any window opens
+    if (o.legend && o.mode != RunMode::Render && o.mode != RunMode::Animate)
+        throw Error("--legend is for render and animate (a window's panel shows the legend by itself)");
     return o;
 }
 
 std::string cli_usage(const std::string& program) {
-    return "usage: " + program + " [window|render|sweep|animate|list] [options]\n"
+    return "usage: " + program + " [window|render|sweep|animate|compare|list] [options]\n"
            "  window (default)    interactive: every parameter on keys or sliders, frame time on screen\n"
            "  render              headless: one case to PNG plus a JSON of timings and GL info\n"
            "  sweep               headless: vary the accuracy knob; CSV, table and plot of error against time\n"
            "  animate             headless: step the animated parameter; a PNG per frame plus a looping APNG\n"
+           "  compare             headless: your render beside the reference's and their difference, amplified,\n"
+           "                      in one PNG; prints RMSE and the largest difference. The reference is\n"
+           "                      <lab>_solution beside this binary, else the case's golden image (--case needed)\n"
            "  list                the lab's parameters and cases\n"
            "options:\n"
            "  --case NAME         start from a named case (see list)\n"
            "  --set NAME=VALUE    set a parameter (repeatable); out-of-range values are refused, and so is a\n"
            "                      parameter that has no effect under the others (the error names what enables it)\n"
-           "  --size WxH          the picture's size (default 512x512); in a window the panel's column is added\n"
-           "                      beside it, and resizing the window resizes the picture\n"
-           "  --out FILE          render: the PNG (default <lab>.png); window: screenshot file\n"
+           "  --size WxH          the picture's size for every mode (default 512x512; compare against a golden image:\n"
+           "                      the golden's); in a window the panel's column is added beside it, and resizing\n"
+           "                      the window resizes the picture\n"
+           "  --out FILE          render: the PNG (default <lab>.png); compare: the PNG (default\n"
+           "                      <lab>-compare-<case>.png); window: screenshot file\n"
+           "  --legend            render, animate: a colour bar beside the image where colour is data (labs 04-07):\n"
+           "                      the values, units and named colours the shaders use; off, images are unchanged\n"
            "  --json FILE         render: the JSON report (default: the PNG's name with .json)\n"
            "  --out-dir DIR       sweep: where the CSV and plot go (default sweep-<lab>);\n"
            "                      animate: where frame_0000.png... and animation.png go (default animate-<lab>)\n"

@@ -8,7 +8,7 @@
 
 namespace gsv {
 
-enum class RunMode { Window, Render, Sweep, Animate, List };
+enum class RunMode { Window, Render, Sweep, Animate, Compare, List };
 
 struct CliOptions {
     RunMode mode = RunMode::Window;
@@ -18,10 +18,12 @@ struct CliOptions {
     std::string case_name;
     std::vector<std::string> assignments;  // --set name=value, in order
     int width = 512, height = 512;
-    std::string out;                     // render: PNG path; window: screenshot path
+    bool size_given = false;             // --size was on the command line (compare: a golden image has its own)
+    std::string out;                     // render, compare: PNG path; window: screenshot path
     std::string json;                    // render: JSON path (default: the PNG's with .json)
     bool arrays = false;                 // render: also the numbers the lab hands the grader (--arrays)
     bool debug_images = false;           // render: also the lab's intermediate images (--debug-images)
+    bool legend = false;                 // render, animate: a colour bar beside the image (--legend)
     std::string out_dir;                 // sweep: folder for CSV and plot; animate: for frames and APNG
     std::string knob;                    // sweep: another parameter than the lab's accuracy knob...
     std::vector<std::string> values;     // ...through these values (--values a,b,c), least accurate first

@@ -9,8 +9,13 @@ namespace gsv {
 
 void ImageView::draw(const Image& image, int width, int height) {
     if (image.width <= 0 || image.height <= 0) return;
-    if (source_.width() != image.width || source_.height() != image.height)
+    // Making the source binds it: the target is the binding from before.
+    GLint draw_binding = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw_binding);
+    if (source_.width() != image.width || source_.height() != image.height) {
         source_ = Framebuffer(image.width, image.height, ColorFormat::RGBA8, false);
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(draw_binding));
+    }
     glBindTexture(GL_TEXTURE_2D, source_.color().id());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
@@ -23,8 +28,6 @@ void ImageView::draw(const Image& image, int width, int height) {
     glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     glDisable(GL_SCISSOR_TEST);
-    GLint draw_binding = 0;
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw_binding);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, source_.id());
     // The image's row 0 is its top, GL's the bottom: the blit turns it over.
     glBlitFramebuffer(0, 0, image.width, image.height, x, y + h, x + w, y, GL_COLOR_BUFFER_BIT,

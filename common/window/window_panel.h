@@ -5,8 +5,10 @@
 #include "common/app/inspect_stage.h"
 #include "common/app/params.h"
 #include "common/gl/gl_version.h"
+#include "common/image/legend.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +27,7 @@ struct PanelState {
     std::string view;        // what the picture shows, where not the lab's own render ("reference", "difference x4")
     std::vector<InspectStage> stages;  // the lab's pipeline, for visual debugging (none: no inspector)
     std::string inspected;             // the stage image shown in place of the picture; empty: the picture
+    std::optional<Legend> legend;      // what the colours stand for, where they are data (Lab::legend)
 };
 
 // Where the panel goes: a column of the window, in window coordinates (GLFW's screen units).

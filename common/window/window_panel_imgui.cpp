@@ -1,7 +1,9 @@
 // The ImGui panel: a slider per parameter (glman's "a uniform with a range becomes a slider"), docked in its own
 // column beside the picture so that nothing covers what the room is looking at, in a scalable font at whole pixel
 // sizes so that digits stay legible on a projector.
-#include "common/window/ui_font.h"
+#include "common/core/error.h"
+#include "common/image/ui_font.h"
+#include "common/window/legend_imgui.h"
 #include "common/window/window_panel.h"
 
 #include <GLFW/glfw3.h>
@@ -67,6 +69,11 @@ public:
             ImGui::TextWrapped("showing: %s", (state.inspected.empty() ? state.view : state.inspected).c_str());
             ImGui::PopStyleColor();
         }
+        // The legend before the parameters: what the colours mean stays in view however long the list.
+        if (state.legend) {
+            ImGui::Separator();
+            draw_legend_imgui(*state.legend);
+        }
         ImGui::Separator();
         const bool changed = draw_parameters(state);
         draw_inspector(state);
@@ -104,15 +111,19 @@ private:
         ui_scale_ = density > 1.01f ? 1.0f : std::max(1.0f, content_x);
         const float raster = density > 1.01f ? density : 1.0f;
         const float pixels = std::round(kFontPixels * ui_scale_ * raster);
-        if (const auto font = find_ui_font()) {
-            if (io.Fonts->AddFontFromFileTTF(font->string().c_str(), pixels)) {
+        std::string why;
+        try {
+            const std::filesystem::path font = find_ui_font();
+            if (io.Fonts->AddFontFromFileTTF(font.string().c_str(), pixels)) {
                 io.FontGlobalScale = 1.0f / raster;
                 return;
             }
+            why = font.string() + " would not load";
+        } catch (const Error& e) {
+            why = e.what();
         }
         // ImGui's own bitmap font, at a whole multiple of its 13 px: crisp, if small.
-        std::fprintf(stderr, "panel: no scalable font found (tried DejaVu Sans and the system fonts; GSV_UI_FONT "
-                             "names another); using ImGui's bitmap font\n");
+        std::fprintf(stderr, "panel: %s; using ImGui's bitmap font\n", why.c_str());
         ImFontConfig config;
         config.SizePixels = 13.0f * std::max(1.0f, std::round(ui_scale_ * raster));
         io.Fonts->AddFontDefault(&config);

@@ -5,6 +5,8 @@
 // heights, to see what the trick saves and where it shows.
 #include "common/app/app.h"
 #include "common/app/change_tracker.h"
+#include "common/app/legend_probe.h"
+#include "common/core/number_text.h"
 #include "common/gl/gl.h"
 #include "common/gl/gpu_mesh.h"
 #include "common/gl/texture.h"
@@ -13,6 +15,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -87,6 +91,33 @@ public:
                                       [&](const gsv::ShaderProgram& program) { set_terrain_uniforms(program); });
     }
 
+    // The colours by height as color.glsl draws them, over the terrain's heights.
+    std::optional<gsv::Legend> legend(gsv::LabKit& kit) override {
+        const auto& p = kit.params();
+        if (p.get_choice("coloring") == "plain") return std::nullopt;
+        update(kit);
+        const gsv::HeightField& f = terrain_->field;
+        const auto set_uniforms = [&](const gsv::ShaderProgram& program) { set_terrain_uniforms(program); };
+        gsv::Legend legend;
+        legend.title = "height";
+        legend.unit = "m";
+        legend.min = f.min_height();
+        legend.max = f.max_height();
+        legend.note = "Unlit colours: the terrain shades them by its light.";
+        if (!(legend.max > legend.min)) {  // a flat terrain: one height, one colour
+            legend.specials.push_back({"every point: " + gsv::format_number(legend.min, 4) + " m", legend_probe_.colors(kit, {legend.min}, set_uniforms)[0]});
+            return legend;
+        }
+        legend.ramp = legend_probe_.ramp(kit, legend.min, legend.max, 256, set_uniforms);
+        legend.ticks = gsv::nice_ticks(legend.min, legend.max);
+        // Where color.glsl centres its blends: fractions of the land's heights, sea level and up.
+        const double land = std::max(legend.min, 0.0);
+        legend.marks.push_back({land + p.get_float("tree_line") * (legend.max - land), "tree line"});
+        legend.marks.push_back({land + p.get_float("snow_line") * (legend.max - land), "snow line"});
+        if (legend.min < 0) legend.marks.push_back({0.0, "sea level"});
+        return legend;
+    }
+
 private:
     void update(gsv::LabKit& kit) {
         const auto& p = kit.params();
@@ -114,6 +145,7 @@ private:
     gsv::Tracked<gsv::GpuMesh> grid_;
     gsv::Tracked<lab04::Terrain> terrain_;
     gsv::Tracked<gsv::Texture> heights_;
+    gsv::LegendProbe legend_probe_{"legend_probe.frag"};
 };
 
 }  // namespace

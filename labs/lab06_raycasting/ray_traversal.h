@@ -28,10 +28,11 @@ public:
     const gsv::ShaderLibrary::Entry* last_program() const { return last_; }
     // The target of the last process(), kept when a later one fails.
     const std::shared_ptr<ImageData>& image() const { return image_; }
+    // The transfer function's table as the classification module reads it (the legend samples it there too).
+    const gsv::Texture& transfer_function();
 
 private:
     const gsv::ShaderLibrary::Entry& program_for(const std::string& shader, const gsv::RaycastConfig& config);
-    const gsv::Texture& transfer_function();
 
     const gsv::ShaderLibrary::Entry* specialised_ = nullptr;
     gsv::RaycastConfig specialised_config_;

@@ -6,6 +6,7 @@
 // are, and in float on every core to say whether the GPU is worth it.
 #include "common/app/app.h"
 #include "common/app/change_tracker.h"
+#include "common/app/legend_probe.h"
 #include "common/core/error.h"
 #include "common/gl/compute.h"
 #include "common/gl/gl.h"
@@ -18,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -110,6 +112,19 @@ public:
         return metrics;
     }
 
+    // The speed colours as speed_color.glsl gives them, and what a particle faster than the scale gets.
+    std::optional<gsv::Legend> legend(gsv::LabKit& kit) override {
+        if (!kit.params().get_bool("color_by_speed")) return std::nullopt;
+        gsv::Legend legend;
+        legend.title = "speed";
+        legend.max = kit.params().get_float("speed_scale");
+        legend.ramp = legend_probe_.ramp(kit, 0, legend.max, 256);
+        legend.ticks = gsv::nice_ticks(0, legend.max);
+        legend.specials.push_back({"faster than speed_scale", legend_probe_.colors(kit, {2 * legend.max})[0]});
+        legend.note = "Domain units per unit of simulated time.";
+        return legend;
+    }
+
     std::vector<gsv::DataArray> readback(gsv::LabKit&) override {
         return {{"positions", 4, flatten(lab05::read_vec4s(buffers_.positions, buffers_.capacity))},
                 {"velocities", 4, flatten(lab05::read_vec4s(buffers_.velocities, buffers_.capacity))}};
@@ -171,6 +186,7 @@ private:
     gsv::ChangeTracker particles_, state_;
     gsv::Tracked<gsv::Texture> velocity_texture_;
     long done_ = 0;  // steps the buffers have taken since the start
+    gsv::LegendProbe legend_probe_{"legend_probe.frag"};
 };
 
 }  // namespace

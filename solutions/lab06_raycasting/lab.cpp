@@ -7,6 +7,7 @@
 // gradient, classification, shading and compositing.
 #include "common/app/app.h"
 #include "common/app/change_tracker.h"
+#include "common/app/legend_probe.h"
 #include "common/core/error.h"
 #include "common/gl/gl.h"
 #include "image_processors.h"
@@ -18,6 +19,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -122,6 +124,38 @@ public:
         return metrics;
     }
 
+    // The classification the ray caster ran with (its properties: a network file's win over the parameters), sampled
+    // from its own GLSL module and table: colour and opacity over the intensity.
+    std::optional<gsv::Legend> legend(gsv::LabKit& kit) override {
+        auto* raycaster = dynamic_cast<lab06::RayTraversal*>(network_ ? network_->find("raycaster") : nullptr);
+        if (!raycaster) return std::nullopt;
+        using Config = gsv::RaycastConfig;
+        const Config config = gsv::effective_config(raycaster->config());
+        if (config.compositing == Config::Compositing::FirstHit) return std::nullopt;  // its colours are positions
+        const bool table = config.classification == Config::Classification::TransferFunction;
+        gsv::Legend legend;
+        legend.title = table ? "intensity, transfer function " + raycaster->property("transfer_function")
+                             : "intensity, raw classification";
+        legend.opacity = true;
+        legend.ramp = (table ? tf_probe_ : raw_probe_).ramp(kit, 0, 1, 256, [&](const gsv::ShaderProgram& program) {
+            if (table) program.bind("uTransferFunction", raycaster->transfer_function());
+        });
+        legend.ticks = gsv::nice_ticks(0, 1);
+        switch (config.compositing) {
+        case Config::Compositing::Dvr:
+            legend.note = "Opacity per voxel-long step; each sample is blended front to back.";
+            break;
+        case Config::Compositing::Mip:
+            legend.note = "MIP: each pixel shows the largest intensity on its ray, its colour times its opacity.";
+            break;
+        default:
+            legend.marks.push_back({std::stod(raycaster->property("iso_value")), "iso value"});
+            legend.note = "Isosurface: the colour at the iso value, shaded, opaque.";
+            break;
+        }
+        return legend;
+    }
+
     std::vector<std::filesystem::path> write_debug_images(gsv::LabKit&, const std::filesystem::path& folder) override {
         if (!network_) return {};
         return lab06::write_port_images(*network_, folder);
@@ -193,6 +227,7 @@ private:
     std::set<std::string> file_set_;
     lab06::FrameView view_;
     std::string last_failure_;
+    gsv::LegendProbe tf_probe_{"legend_tf.frag"}, raw_probe_{"legend_raw.frag"};
 };
 
 }  // namespace

@@ -5,6 +5,7 @@
 // and no texture per element: the basis (nodes and barycentric weights) is 2 (p + 1) uniform floats, the
 // values one buffer. Beside it, the same elements drawn from their corner values only.
 #include "common/app/app.h"
+#include "common/app/legend_probe.h"
 #include "common/gl/gl.h"
 #include "element_data.h"
 #include "element_measure.h"
@@ -12,6 +13,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -66,6 +68,36 @@ public:
         data_.patches.draw();
     }
 
+    // The field's colours as color_map.glsl gives them over the range drawn, and its colours outside that range.
+    std::optional<gsv::Legend> legend(gsv::LabKit& kit) override {
+        const gsv::Params& p = kit.params();
+        lab07::update_element_data(data_, p, kit.profile());
+        const bool automatic = p.get_bool("auto_range");
+        const float low = automatic ? data_.min_value : p.get_float("range_min");
+        const float high = automatic ? data_.max_value : p.get_float("range_max");
+        const auto set_range = [&](const gsv::ShaderProgram& program) {
+            program.set("uRangeMin", low);
+            program.set("uRangeMax", high);
+        };
+        gsv::Legend legend;
+        legend.title = "value of " + p.get_choice("field");
+        legend.min = low;
+        legend.max = high;
+        legend.note = automatic ? "Range: the smallest to the largest node value (auto_range)." : "Range: range_min to range_max.";
+        if (p.get_bool("element_edges")) legend.note += " Dark lines: element edges.";
+        if (!(high > low)) {
+            legend.specials.push_back({"empty range (max <= min)", legend_probe_.colors(kit, {low}, set_range)[0]});
+            return legend;
+        }
+        legend.ramp = legend_probe_.ramp(kit, low, high, 256, set_range);
+        legend.ticks = gsv::nice_ticks(low, high);
+        const double span = high - low;
+        const std::vector<gsv::LegendColor> outside = legend_probe_.colors(kit, {low - span, high + span}, set_range);
+        legend.specials.push_back({"below the range", outside[0]});
+        legend.specials.push_back({"above the range", outside[1]});
+        return legend;
+    }
+
     std::vector<std::string> sweep_reference() const override { return {"degree=16", "node_set=gll"}; }
     std::string sweep_error_column() const override { return "err_max"; }
     std::string sweep_reference_name() const override {
@@ -91,6 +123,7 @@ private:
 
     lab07::MeasurePrograms programs_;
     lab07::ElementData data_;
+    gsv::LegendProbe legend_probe_{"legend_probe.frag"};
 };
 
 }  // namespace
