@@ -2,6 +2,7 @@
 # kit's exported gsv::common and so must find the same libraries.
 find_package(glfw3 3.3 REQUIRED)
 find_package(glm REQUIRED)
+find_package(ZLIB REQUIRED)  # gzipped volumes (.nii.gz)
 find_package(OpenGL REQUIRED COMPONENTS OpenGL OPTIONAL_COMPONENTS EGL)
 find_path(STB_INCLUDE_DIR stb_image.h PATH_SUFFIXES stb REQUIRED)
 

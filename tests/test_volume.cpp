@@ -12,6 +12,8 @@
 #include "support/volume/volume.h"
 #include "test_support.h"
 
+#include <zlib.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -151,6 +153,21 @@ std::string load_error(const fs::path& path) {
     CHECK(contains(message, "'" + path.string() + "'"));
     CHECK_FALSE(contains(message, "\n"));
     return message;
+}
+
+// gzip's own format through zlib, as `gzip` writes it.
+std::string gzipped(const std::string& bytes) {
+    z_stream stream{};
+    REQUIRE(deflateInit2(&stream, Z_BEST_COMPRESSION, Z_DEFLATED, 15 + 16, 8, Z_DEFAULT_STRATEGY) == Z_OK);
+    std::string out(deflateBound(&stream, static_cast<uLong>(bytes.size())) + 64, '\0');
+    stream.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(bytes.data()));
+    stream.avail_in = static_cast<uInt>(bytes.size());
+    stream.next_out = reinterpret_cast<Bytef*>(out.data());
+    stream.avail_out = static_cast<uInt>(out.size());
+    REQUIRE(deflate(&stream, Z_FINISH) == Z_STREAM_END);
+    out.resize(stream.total_out);
+    deflateEnd(&stream);
+    return out;
 }
 
 fs::path anatomical_path() { return fs::path(GSV_SOURCE_ROOT) / "data/volumes/anatomical.nii"; }
@@ -306,6 +323,19 @@ TEST_CASE("nifti: the real big-endian anatomical.nii reads as 33x41x25 int16 vox
     CHECK(volume.at(17, 23, 0) == 30393.0f);
 }
 
+TEST_CASE("nifti: the real MRI gzipped (.nii.gz) reads as the same voxels as the .nii", "[volume]") {
+    TempDir dir;
+    const fs::path gz = dir.write("anatomical.nii.gz", gzipped(gsv::test::read_text(anatomical_path())));
+    CHECK(fs::file_size(gz) < fs::file_size(anatomical_path()));
+    const NiftiHeader header = gsv::read_nifti_header(gz);
+    CHECK(header.nx == 33);
+    CHECK(header.big_endian);
+    const gsv::Volume plain = gsv::load_nifti(anatomical_path()), unzipped = gsv::load_nifti(gz);
+    REQUIRE(unzipped.values.size() == plain.values.size());
+    CHECK(unzipped.values == plain.values);
+    CHECK(unzipped.spacing == plain.spacing);
+}
+
 TEST_CASE("nifti: the real volume saved as little-endian float32 reads back identically", "[volume]") {
     TempDir dir;
     const Volume volume = gsv::load_nifti(anatomical_path());
@@ -443,10 +473,13 @@ TEST_CASE("nifti: each broken file is refused with one line naming the file and 
         CHECK(contains(load_error(dir.write("short.nii", nifti_bytes(good).substr(0, 100))),
                        "is 100 bytes, too short for the 348-byte NIfTI-1 header"));
     }
-    SECTION("gzip-compressed, a .nii.gz") {
+    SECTION("gzip data that is corrupt or cut short") {
         const std::string gz = std::string("\x1f\x8b\x08\x00", 4) + std::string(400, 'x');
-        CHECK(contains(load_error(dir.write("brain.nii.gz", gz)), "gzip-compressed"));
-        CHECK(contains(load_error(dir.write("tiny.nii.gz", std::string("\x1f\x8b", 2))), "gzip-compressed"));
+        CHECK(contains(load_error(dir.write("brain.nii.gz", gz)), "is gzip-compressed but its data is corrupt or cut short"));
+        CHECK(contains(load_error(dir.write("tiny.nii.gz", std::string("\x1f\x8b", 2))), "corrupt or cut short"));
+        const std::string whole = gzipped(gsv::test::read_text(anatomical_path()));
+        CHECK(contains(load_error(dir.write("cut.nii.gz", whole.substr(0, whole.size() / 2))), "corrupt or cut short"));
+        CHECK(contains(load_error(dir.write("twice.nii.gz", gzipped(whole))), "gzip-compressed twice"));
     }
     SECTION("not NIfTI-1: sizeof_hdr") {
         NiftiSpec spec = good;

@@ -36,7 +36,7 @@ public:
         p.add_bool("probe", false, "an opaque sphere embedded in the volume: rays stop at it (network built in code)");
         p.add_choice("volume", "marschner_lobb", {"marschner_lobb", "anatomical", "constant", "file"},
                      "the test signal (exact values known), the MRI head, a constant (zero gradient), or volume_file");
-        p.add_file("volume_file", "", "a NIfTI-1 volume (.nii), with volume=file").applies_when("volume", {"file"});
+        p.add_file("volume_file", "", "a NIfTI-1 volume (.nii or .nii.gz), with volume=file").applies_when("volume", {"file"});
         p.add_int("ml_size", 41, 8, 256, "voxels per side of the Marschner-Lobb volume").applies_when("volume", {"marschner_lobb"});
         p.add_choice("compositing", "dvr", {"dvr", "mip", "iso", "fhp"},
                      "direct volume rendering, maximum intensity, isosurface, first hit").series();

@@ -1,14 +1,17 @@
-// Reading NIfTI-1 files (support/volume/nifti_file.h): read_nifti_header and load_nifti.
+// Reading NIfTI-1 files, .nii and .nii.gz (support/volume/nifti_file.h): read_nifti_header and load_nifti.
 #include "support/volume/nifti_file.h"
 
 #include "common/core/error.h"
 #include "support/volume/nifti_format.h"
+
+#include <zlib.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <fstream>
 #include <limits>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <system_error>
@@ -41,26 +44,66 @@ std::string voxel_name(std::uint64_t index, int nx, int ny) {
 }
 
 // The first bytes of the file (up to the header and extension flag), and its size, opened the way every
-// check below needs.
+// check below needs: a .nii as it is, a .nii.gz decompressed (most public MRI data is gzipped).
 struct Opened {
-    std::ifstream in;
-    std::uint64_t size = 0;
+    std::unique_ptr<std::istream> in;
+    std::uint64_t size = 0;  // of the NIfTI bytes: decompressed, for a .nii.gz
+    bool gzipped = false;
     std::vector<unsigned char> head;
 };
+
+// A volume the kit can draw is far below this; a gzip bomb is not.
+constexpr std::uint64_t kMaxInflatedBytes = std::uint64_t(2) << 30;
+
+std::string inflate_file(const std::filesystem::path& path) {
+    gzFile gz = gzopen(path.string().c_str(), "rb");
+    if (!gz) fail(path, "cannot open it to decompress");
+    std::string out;
+    std::vector<char> buffer(std::size_t(1) << 20);
+    for (;;) {
+        const int n = gzread(gz, buffer.data(), static_cast<unsigned>(buffer.size()));
+        if (n > 0) out.append(buffer.data(), static_cast<std::size_t>(n));
+        if (out.size() > kMaxInflatedBytes) {
+            gzclose(gz);
+            fail(path, "decompresses to more than " + std::to_string(kMaxInflatedBytes >> 30) + " GiB: not a volume this kit draws");
+        }
+        if (n > 0) continue;
+        int code = Z_OK;
+        const char* message = gzerror(gz, &code);
+        const bool ended = gzeof(gz) != 0;
+        gzclose(gz);
+        if (n < 0 || (code != Z_OK && code != Z_STREAM_END) || !ended)
+            fail(path, std::string("is gzip-compressed but its data is corrupt or cut short (zlib: ") +
+                           (message && *message ? message : "unexpected end of file") + ")");
+        return out;
+    }
+}
 
 void open_file(const std::filesystem::path& path, Opened& file) {
     std::error_code error;
     // A directory opens as a stream on Linux and would then read as an empty file.
     if (std::filesystem::is_directory(path, error)) fail(path, "is a directory, not a file");
-    file.in.open(path, std::ios::binary);
-    if (!file.in)
+    auto plain = std::make_unique<std::ifstream>(path, std::ios::binary);
+    if (!*plain)
         throw Error("cannot read NIfTI file " + quoted(path) + ": " +
                     (std::filesystem::exists(path, error) ? "cannot open file" : "no such file"));
-    file.size = std::filesystem::file_size(path, error);
-    if (error) fail(path, "cannot tell its size (" + error.message() + ")");
+    unsigned char magic[2] = {0, 0};
+    plain->read(reinterpret_cast<char*>(magic), 2);
+    file.gzipped = plain->gcount() == 2 && magic[0] == 0x1f && magic[1] == 0x8b;
+    if (file.gzipped) {
+        std::string inflated = inflate_file(path);
+        file.size = inflated.size();
+        file.in = std::make_unique<std::istringstream>(std::move(inflated), std::ios::binary);
+    } else {
+        file.size = std::filesystem::file_size(path, error);
+        if (error) fail(path, "cannot tell its size (" + error.message() + ")");
+        plain->clear();
+        plain->seekg(0);
+        file.in = std::move(plain);
+    }
     file.head.resize(static_cast<std::size_t>(std::min<std::uint64_t>(file.size, kMinVoxOffset)));
-    file.in.read(reinterpret_cast<char*>(file.head.data()), static_cast<std::streamsize>(file.head.size()));
-    if (static_cast<std::size_t>(file.in.gcount()) != file.head.size()) fail(path, "read error");
+    file.in->read(reinterpret_cast<char*>(file.head.data()), static_cast<std::streamsize>(file.head.size()));
+    if (static_cast<std::size_t>(file.in->gcount()) != file.head.size()) fail(path, "read error");
 }
 
 // Decides the byte order from sizeof_hdr, and refuses what is not a single-file NIfTI-1, saying what it
@@ -68,9 +111,10 @@ void open_file(const std::filesystem::path& path, Opened& file) {
 bool check_identity(const std::filesystem::path& path, const Opened& file) {
     const std::vector<unsigned char>& h = file.head;
     if (h.size() >= 2 && h[0] == 0x1f && h[1] == 0x8b)
-        fail(path, "is gzip-compressed (a .nii.gz?), which this kit does not read: gunzip it to a .nii first");
+        fail(path, "is gzip-compressed twice: gunzip it once to a .nii.gz");
     if (h.size() < kHeaderBytes)
-        fail(path, "is " + std::to_string(file.size) + " bytes, too short for the 348-byte NIfTI-1 header");
+        fail(path, "is " + std::to_string(file.size) + " bytes" + (file.gzipped ? " decompressed" : "") +
+                       ", too short for the 348-byte NIfTI-1 header");
     const std::uint64_t little = load_uint(h.data() + kSizeofHdr, 4, false), big = load_uint(h.data() + kSizeofHdr, 4, true);
     if (little == 540 || big == 540) fail(path, "is NIfTI-2 (sizeof_hdr 540), which this kit does not read");
     if (little != kHeaderBytes && big != kHeaderBytes) {
@@ -175,7 +219,8 @@ NiftiHeader read_header(const std::filesystem::path& path, Opened& file) {
     const std::uint64_t found = file.size > header.vox_offset ? file.size - header.vox_offset : 0;
     if (found != expected)
         fail(path, "expected " + std::to_string(expected) + " bytes of voxels after offset " +
-                       std::to_string(header.vox_offset) + ", found " + std::to_string(found) + " (" +
+                       std::to_string(header.vox_offset) + ", found " + std::to_string(found) +
+                       (file.gzipped ? " decompressed" : "") + " (" +
                        std::to_string(header.nx) + "x" + std::to_string(header.ny) + "x" + std::to_string(header.nz) +
                        " " + type.name + ")");
     return header;
@@ -206,13 +251,13 @@ Volume load_nifti(const std::filesystem::path& path) {
     volume.values.resize(count);
 
     const bool identity = !header.scaled || (header.scl_slope == 1 && header.scl_inter == 0);
-    file.in.seekg(static_cast<std::streamoff>(header.vox_offset));
+    file.in->seekg(static_cast<std::streamoff>(header.vox_offset));
     std::vector<unsigned char> chunk(std::min<std::size_t>(kChunkBytes, count * std::size_t(type.bytes)));
     const std::size_t per_chunk = chunk.size() / std::size_t(type.bytes);
     for (std::size_t done = 0; done < count;) {
         const std::size_t n = std::min(count - done, per_chunk);
-        file.in.read(reinterpret_cast<char*>(chunk.data()), static_cast<std::streamsize>(n * std::size_t(type.bytes)));
-        if (static_cast<std::size_t>(file.in.gcount()) != n * std::size_t(type.bytes))
+        file.in->read(reinterpret_cast<char*>(chunk.data()), static_cast<std::streamsize>(n * std::size_t(type.bytes)));
+        if (static_cast<std::size_t>(file.in->gcount()) != n * std::size_t(type.bytes))
             fail(path, "read error after " + std::to_string(done) + " voxels (did the file change while it was read?)");
         for (std::size_t i = 0; i < n; ++i) {
             const double stored = decode_voxel(chunk.data() + i * std::size_t(type.bytes), type, header.big_endian);

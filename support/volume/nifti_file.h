@@ -4,9 +4,10 @@
 // which is already the order glTexImage3D takes. Header and voxels are in the byte order of whoever wrote
 // them, which the header does not state: a reader finds it by reading sizeof_hdr, 348, both ways.
 //
-// Read: single-file .nii (magic "n+1"), either byte order, datatypes uint8, int8, int16, uint16, int32,
-// float32 and float64, one 3D volume (dim[0] = 3, or 4 with dim[4] = 1). Not read: .nii.gz (gunzip it),
-// .hdr/.img pairs (magic "ni1"), NIfTI-2, complex and RGB voxels, time series. The orientation (qform,
+// Read: single-file .nii (magic "n+1") and the same gzipped (.nii.gz, told by its gzip magic, not its name;
+// decompressed through zlib, at most 2 GiB), either byte order, datatypes uint8, int8, int16, uint16, int32,
+// float32 and float64, one 3D volume (dim[0] = 3, or 4 with dim[4] = 1). Not read: .hdr/.img pairs (magic "ni1"),
+// NIfTI-2, complex and RGB voxels, time series. The orientation (qform,
 // sform) is ignored: the volume is shown in its own voxel axes, with its spacing.
 #include "support/volume/volume.h"
 
@@ -39,7 +40,8 @@ const char* nifti_datatype_name(int code);
 
 // Reads and checks the header alone, and that the file holds exactly the voxels it promises. Throws
 // gsv::Error with one line naming the file for: a missing or unreadable file, one too short for the
-// header, one that is not NIfTI-1 (saying so when it looks like a .nii.gz, a .hdr/.img pair or NIfTI-2),
+// header, corrupt or cut-short gzip data, one that is not NIfTI-1 (saying so when it looks like a .hdr/.img pair or
+// NIfTI-2),
 // a dim, datatype (naming its code), bitpix, pixdim[1..3] (not finite and positive), vox_offset or
 // scl_inter it cannot use, and a voxel block of another size ("expected N bytes of voxels after offset O,
 // found M"). Nothing is allocated from the header's sizes before the file's size has confirmed them.
