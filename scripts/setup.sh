@@ -5,7 +5,7 @@ set -euo pipefail
 
 debian_packages=(
   cmake ninja-build g++ pkg-config
-  libglfw3-dev libglm-dev catch2 libstb-dev fonts-dejavu-core zlib1g-dev
+  libglfw3-dev libglm-dev catch2 libstb-dev fonts-dejavu-core zlib1g-dev libtinyobjloader-dev
   libegl-dev libgl-dev libgl1-mesa-dri libegl-mesa0 libosmesa6-dev
   libimgui-dev
   python3-glad glslang-tools python-matplotlib-data python3-nibabel

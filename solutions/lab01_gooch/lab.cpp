@@ -4,6 +4,7 @@
 // The lesson is in the shaders (shade.vert, shade.frag, phong.glsl, gooch.glsl); this file declares
 // the lab's parameters and draws one mesh.
 #include "common/app/app.h"
+#include "common/core/error.h"
 #include "common/app/change_tracker.h"
 #include "common/gl/framebuffer.h"
 #include "common/gl/gl.h"
@@ -25,7 +26,10 @@ public:
     gsv::LabInfo info() const override { return {"lab01", "GLSL basics and Gooch shading"}; }
 
     void declare(gsv::Params& p) override {
-        p.add_choice("model", "sphere", {"sphere", "torus", "teapot"}, "the mesh: two procedural ones, one loaded from data/meshes");
+        p.add_choice("model", "sphere", {"sphere", "torus", "teapot", "file"},
+                     "the mesh: two procedural ones, the teapot from data/meshes, or any OBJ file (mesh_file)");
+        p.add_file("mesh_file", "", "an OBJ file: triangles or polygons, with or without normals (model=file)")
+            .applies_when("model", {"file"});
         p.add_choice("shading", "gooch", {"phong", "gooch"}, "the lighting model").at_compile_time();
         p.add_choice("shading_rate", "fragment", {"vertex", "fragment"},
                      "light each vertex and blend colours (Gouraud), or light each fragment").at_compile_time().series();
@@ -63,6 +67,7 @@ public:
             const auto& p = kit.params();
             const std::string model = p.get_choice("model");
             if (model == "teapot") return gsv::GpuMesh(teapot_, kit.profile());
+            if (model == "file") return gsv::GpuMesh(load_mesh_file(kit), kit.profile());
             const int n = p.get_int("mesh_resolution");
             if (model == "sphere") return gsv::GpuMesh(gsv::make_uv_sphere(n, std::max(2, n / 2)), kit.profile());
             return gsv::GpuMesh(gsv::make_torus(n, std::max(3, n / 2), 0.7f, 0.3f), kit.profile());
@@ -71,6 +76,15 @@ public:
 
     void render(gsv::LabKit& kit, const gsv::Frame& frame) override {
         draw(kit, frame, *shade_, kBackground);
+    }
+
+    // Any OBJ, scaled into the unit sphere the camera frames; the reader names the file and line of a fault.
+    static gsv::MeshData load_mesh_file(gsv::LabKit& kit) {
+        const std::string& typed = kit.params().get_file("mesh_file");
+        if (typed.empty()) throw gsv::Error("model=file needs mesh_file=PATH, an OBJ file");
+        gsv::MeshData mesh = gsv::load_obj(kit.assets().user_file(typed));
+        gsv::normalize_to_unit_sphere(mesh);
+        return mesh;
     }
 
     // Where the exact image does not apply (another model, a cut, silhouettes, an unequal scale), the sweep falls
