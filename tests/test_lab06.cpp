@@ -226,8 +226,8 @@ TEST_CASE("lab06: the default camera frames the whole volume from any side, and 
 }
 
 TEST_CASE("lab06: the MRI brain shows its tissues, the ventricles blue and the white matter cream, by DVR and MIP", "[lab06]") {
-    // Before the scan was windowed its tissue filled [0.17, 0.45] of the normalised range: a dim brown blur, with no
-    // pixel blue or cream and a mean of 41 (DVR) and 28 (MIP) over the pixels the volume covers.
+    // Before the scan was windowed its tissue filled [0.17, 0.45] of the normalised range: a dim brown blur (the
+    // head and mip-head goldens then had no pixel blue or cream, and a mean of 41 and 28 over the volume's pixels).
     test::TempDir dir;
     struct Shares {
         double blue = 0, cream = 0, mean = 0;

@@ -268,7 +268,7 @@ TEST_CASE("volume: a percentile window leaves the outliers out of the range norm
     Volume volume;
     volume.nx = 1000, volume.ny = 1, volume.nz = 1;
     for (int i = 0; i < 1000; ++i) volume.values.push_back(static_cast<float>(i));
-    volume.values[999] = 1e6f;  // one outlier, like an MRI's bright vessel
+    volume.values[999] = 1e6f;  // one outlier, like an MRI's brightest voxel
     volume.set_percentile_window(0.01, 0.99);
     CHECK(volume.min == 10.0f);
     CHECK(volume.max == 990.0f);

@@ -12,7 +12,7 @@ namespace {
 gsv::Volume load_volume(const std::string& kind, const std::string& file, int ml_size, const gsv::Assets& assets) {
     if (kind == "marschner_lobb") return gsv::make_marschner_lobb_volume(ml_size);
     if (kind == "anatomical") {
-        // The scan's own range runs up to a few bright voxels (vessels) at 2.3 times the white matter: normalised
+        // The scan's own range runs up to a few dozen bright voxels at up to 2.3 times the white matter: normalised
         // over it, all the tissue would fall in [0.17, 0.45]. Windowed like a viewer opens it, from the 0.1th to
         // the 99.5th percentile, cerebrospinal fluid, grey and white matter spread over [0, 1] (about 0.1-0.35,
         // 0.45-0.65 and 0.75-0.95), where the tissue transfer function tells them apart.

@@ -50,7 +50,7 @@ struct Volume {
     void update_range();
 
     // Sets min and max to the values below which low_share and high_share of the voxels lie (nearest rank), the
-    // window a viewer opens a scan with: a few outliers (an MRI's bright vessels) then saturate rather than squeeze
+    // window a viewer opens a scan with: a few outliers (an MRI's brightest voxels) then saturate rather than squeeze
     // all the tissue into a sliver of [0, 1] when normalized(). Throws gsv::Error unless 0 <= low_share <
     // high_share <= 1, or for no values.
     void set_percentile_window(double low_share, double high_share);
