@@ -199,3 +199,69 @@ TEST_CASE("lab06: the sweep measures hits against the exact isosurface, and samp
     CHECK(value(fine, "specialised_ms") > 0.0);
     CHECK(value(fine, "uber_ms") > 0.0);
 }
+
+TEST_CASE("lab06: the default camera frames the whole volume from any side, and fills a good part of the image", "[lab06]") {
+    // A constant volume fills its whole box: through the grey transfer function every ray that meets the box shows.
+    test::TempDir dir;
+    const std::vector<std::vector<std::string>> views = {
+        {}, {"camera_yaw=45", "camera_pitch=35.26"}, {"camera_yaw=90", "camera_pitch=0"}, {"camera_yaw=-135", "camera_pitch=-35"}};
+    for (std::size_t v = 0; v < views.size(); ++v) {
+        std::vector<std::string> settings = views[v];
+        settings.push_back("volume=constant");
+        settings.push_back("transfer_function=grey");
+        const auto run = test::render(kLab, settings, dir.path(), "view" + std::to_string(v));
+        INFO(run.process.output);
+        REQUIRE(run.exit_code() == 0);
+        const Image image = read_png(run.png);
+        int border = 0, volume = 0;
+        for (int y = 0; y < image.height; ++y)
+            for (int x = 0; x < image.width; ++x) {
+                const std::uint8_t* p = image.at(x, y);
+                const bool background = std::abs(p[0] - 20) <= 1 && std::abs(p[1] - 23) <= 1 && std::abs(p[2] - 31) <= 1;
+                volume += !background;
+                if (x == 0 || y == 0 || x == image.width - 1 || y == image.height - 1) border += !background;
+            }
+        INFO("view " << v << ": " << border << " volume pixels on the image's edge, " << volume << " in all");
+        CHECK(border == 0);
+        CHECK(volume > image.width * image.height / 5);
+    }
+}
+
+TEST_CASE("lab06: the MRI brain shows its tissues, the ventricles blue and the white matter cream, by DVR and MIP", "[lab06]") {
+    // Before the scan was windowed its tissue filled [0.17, 0.45] of the normalised range: a dim brown blur (the
+    // head and mip-head goldens then had no pixel blue or cream, and a mean of 41 and 28 over the volume's pixels).
+    test::TempDir dir;
+    struct Shares {
+        double blue = 0, cream = 0, mean = 0;
+    };
+    const auto shares = [&](const std::string& name, const std::vector<std::string>& settings) {
+        const auto run = test::render(kLab, settings, dir.path(), name);
+        INFO(run.process.output);
+        REQUIRE(run.exit_code() == 0);
+        const Image image = read_png(run.png);
+        Shares s;
+        int volume = 0;
+        for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
+            const int r = image.rgba[i], g = image.rgba[i + 1], b = image.rgba[i + 2];
+            if (std::abs(r - 20) <= 1 && std::abs(g - 23) <= 1 && std::abs(b - 31) <= 1) continue;
+            ++volume;
+            s.blue += b > r + 40;
+            s.cream += r > 120 && r >= b;
+            s.mean += 0.2126 * r + 0.7152 * g + 0.0722 * b;
+        }
+        REQUIRE(volume > 0);
+        s.blue /= volume, s.cream /= volume, s.mean /= volume;
+        return s;
+    };
+    const std::vector<std::string> brain = {"volume=anatomical", "transfer_function=tissue", "camera_distance=4.2"};
+    std::vector<std::string> dvr = brain, mip = brain;
+    dvr.insert(dvr.end(), {"camera_yaw=60", "camera_pitch=10"});
+    mip.insert(mip.end(), {"compositing=mip", "camera_yaw=90", "camera_pitch=0"});
+    const Shares d = shares("dvr", dvr), m = shares("mip", mip);
+    INFO("DVR: " << d.blue << " blue, " << d.cream << " cream, mean " << d.mean << "; MIP: " << m.cream << " cream, mean " << m.mean);
+    CHECK(d.blue > 0.1);
+    CHECK(d.cream > 0.1);
+    CHECK(d.mean > 70);
+    CHECK(m.cream > 0.1);
+    CHECK(m.mean > 60);
+}

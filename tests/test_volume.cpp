@@ -281,6 +281,41 @@ TEST_CASE("volume: normalized maps min to 0 and max to 1, a constant volume to 0
     CHECK(contains(gsv_error_message([&] { volume.normalized(); }), "not finite min <= max"));
 }
 
+TEST_CASE("volume: a percentile window leaves the outliers out of the range normalized maps onto [0, 1]", "[volume]") {
+    Volume volume;
+    volume.nx = 1000, volume.ny = 1, volume.nz = 1;
+    for (int i = 0; i < 1000; ++i) volume.values.push_back(static_cast<float>(i));
+    volume.values[999] = 1e6f;  // one outlier, like an MRI's brightest voxel
+    volume.set_percentile_window(0.01, 0.99);
+    CHECK(volume.min == 10.0f);
+    CHECK(volume.max == 990.0f);
+    const Volume unit = volume.normalized();
+    CHECK(unit.values[500] == Approx(490.0 / 980.0));
+    CHECK(unit.values[999] == 1.0f);  // saturated
+    CHECK(unit.values[0] == 0.0f);
+    volume.set_percentile_window(0.0, 1.0);
+    CHECK(volume.min == 0.0f);
+    CHECK(volume.max == 1e6f);
+    CHECK(contains(gsv_error_message([&] { volume.set_percentile_window(0.5, 0.5); }), "0 <= low < high <= 1"));
+    CHECK(contains(gsv_error_message([&] { Volume().set_percentile_window(0.0, 1.0); }), "has no values"));
+}
+
+TEST_CASE("volume: exchanging y and z moves voxel (i, j, k) to (i, k, j) and the spacing with it", "[volume]") {
+    Volume volume;
+    volume.nx = 2, volume.ny = 3, volume.nz = 4;
+    volume.spacing = {1.0, 2.0, 3.0};
+    for (int v = 0; v < 24; ++v) volume.values.push_back(static_cast<float>(v));
+    const Volume swapped = volume.with_y_and_z_exchanged();
+    CHECK(swapped.nx == 2);
+    CHECK(swapped.ny == 4);
+    CHECK(swapped.nz == 3);
+    CHECK(swapped.spacing == glm::dvec3(1.0, 3.0, 2.0));
+    for (int k = 0; k < 4; ++k)
+        for (int j = 0; j < 3; ++j)
+            for (int i = 0; i < 2; ++i) CHECK(swapped.at(i, k, j) == volume.at(i, j, k));
+    CHECK(swapped.with_y_and_z_exchanged().values == volume.values);
+}
+
 // ---------------------------------------------------------------------------------------------------------
 // NIfTI-1
 

@@ -31,10 +31,10 @@ export GSV_ROOT="$out/kit"
 # Frames: 3 the picture with its panel (own.png), 5 hide, 7 the picture alone (screenshot-1), 8 show again,
 # 10 the last screenshot (screenshot-2); with --inspect, three port images at 12, 14 and 16.
 # The lab quits by itself after a wall time long enough for its frames on a loaded 2-core machine.
-presses=(--press S@3 --press U@5 --press S@7 --press U@8 --quit-after 10s)
+presses=(--press S@3 --press U@5 --press S@7 --press U@8 --quit-after 25s)
 last=2
 if [ $inspect -eq 1 ]; then
-  presses+=(--press I@11 --press S@12 --press I@13 --press S@14 --press I@15 --press S@16 --quit-after 20s)
+  presses+=(--press I@11 --press S@12 --press I@13 --press S@14 --press I@15 --press S@16 --quit-after 35s)
   last=5
 fi
 xvfb-run -a -s "-screen 0 1600x900x24" bash -c '

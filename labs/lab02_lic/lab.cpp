@@ -11,12 +11,15 @@
 #include "common/image/image.h"
 #include "common/scene/mesh_data.h"
 #include "support/flow/flow_field.h"
+#include "support/flow/lic_contrast_pass.h"
 #include "support/flow/lic_reference.h"
+#include "support/flow/moving_frame.h"
 #include "support/flow/noise.h"
 
 #include <algorithm>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -43,6 +46,12 @@ public:
         p.add_float("time", 0, 0, 10, "the double gyre's time; the frame of a .flow sequence").with_step(0.5).animated()
             .applies_when("field", {"double_gyre", "file"});
         p.add_float("swirl_radius", 0.28, 0.05, 0.7, "radius of the swirl around the photograph's face").with_step(0.02).applies_when("field", {"swirl"});
+        p.add_float("observer_velocity", 0, -1, 1,
+                    "the observer's velocity along +x, a fraction of `speed`, subtracted from the field: a frame that "
+                    "moves with the vortex street's vortices shows them").with_step(0.01);
+        p.add_choice("contrast", "off", gsv::lic_contrast_names(),
+                     "a tone curve after the LIC: a stretch of the 0.5-99.5 percentiles to black and white, or histogram "
+                     "equalisation");
     }
 
     void setup(gsv::LabKit& kit) override {
@@ -56,11 +65,13 @@ public:
         // on every frame while `time` plays a field from a file (which is read once).
         flow_.update(kit.params(), [&] { return make_flow_texture(kit, frame); }, frame.width, frame.height);
         input_.update(kit.params(), [&] { return make_input_texture(kit, frame); }, frame.width, frame.height);
-        glDisable(GL_DEPTH_TEST);
-        const gsv::ShaderProgram& program = kit.use(*lic_);
-        program.bind("uInput", *input_);
-        program.bind("uFlow", *flow_);
-        quad_.draw();
+        contrast_.draw(kit, frame, gsv::lic_contrast_from_name(kit.params().get_choice("contrast")), quad_, [&] {
+            glDisable(GL_DEPTH_TEST);
+            const gsv::ShaderProgram& program = kit.use(*lic_);
+            program.bind("uInput", *input_);
+            program.bind("uFlow", *flow_);
+            quad_.draw();
+        });
     }
 
     // Where the field has a formula and the input is the noise, each image of the sweep is measured against LIC of
@@ -68,6 +79,7 @@ public:
     // LIC, Euler's and midpoint's errors came out the same.
     std::optional<gsv::Image> sweep_exact_image(gsv::LabKit& kit, const gsv::Frame& frame) override {
         const auto& p = kit.params();
+        gsv::check_sweepable(gsv::lic_contrast_from_name(p.get_choice("contrast")));
         exact_applies_ = p.get_choice("field") != "file" && p.get_choice("input") == "noise";
         if (!exact_applies_) return std::nullopt;
         exact_.update(p, [&] {
@@ -83,19 +95,26 @@ public:
                "filter, so the error measures the length as well as the accuracy";
     }
     std::vector<std::string> sweep_reference() const override { return {"step=midpoint", "length=200"}; }
+    // Called at every point of any sweep, the lab's knob or another.
+    gsv::SweepMetrics sweep_metrics(gsv::LabKit& kit, const gsv::Frame&) override {
+        gsv::check_sweepable(gsv::lic_contrast_from_name(kit.params().get_choice("contrast")));
+        return {};
+    }
 
 private:
-    // One flow texel per pixel: a step of one texel is a step of one pixel.
+    // One flow texel per pixel: a step of one texel is a step of one pixel. The field is scaled to `speed` in the
+    // lab's frame, then seen from the observer's.
     gsv::Texture make_flow_texture(gsv::LabKit& kit, const gsv::Frame& frame) {
         const auto& p = kit.params();
         const std::string field = p.get_choice("field");
         const double speed = p.get_float("speed");
-        const gsv::FlowField flow =
+        const gsv::FlowField lab_frame =
             field == "file"    ? field_from_file(kit, speed)
             : field == "swirl" ? gsv::make_photo_swirl(frame.width, frame.height, speed, kSwirlCentre.x, kSwirlCentre.y,
                                                        p.get_float("swirl_radius"))
                                : gsv::make_flow(gsv::flow_kind_from_name(field), frame.width, frame.height, speed,
                                                 p.get_float("time"), static_cast<std::uint64_t>(p.get_int("seed")));
+        const gsv::FlowField flow = gsv::seen_from_moving_frame(lab_frame, observer_velocity(p));
         return gsv::Texture::create_2d(flow.width, flow.height, gsv::TexelFormat::RG32F, flow.velocity.data());
     }
 
@@ -117,15 +136,21 @@ private:
         return gsv::white_noise(frame.width, frame.height, static_cast<std::uint64_t>(p.get_int("seed")));
     }
 
+    // The observer's velocity in texels per step.
+    static double observer_velocity(const gsv::Params& p) {
+        return static_cast<double>(p.get_float("observer_velocity")) * p.get_float("speed");
+    }
+
     // The field make_flow_texture samples, everywhere: for the sweep's exact streamlines.
     static gsv::VelocityAt exact_field(const gsv::Params& p, const gsv::Frame& frame) {
         const std::string field = p.get_choice("field");
         const double speed = p.get_float("speed");
-        if (field == "swirl")
-            return gsv::analytic_photo_swirl(frame.width, frame.height, speed, kSwirlCentre.x, kSwirlCentre.y,
-                                             p.get_float("swirl_radius"));
-        return gsv::analytic_flow(gsv::flow_kind_from_name(field), frame.width, frame.height, speed, p.get_float("time"),
-                                  static_cast<std::uint64_t>(p.get_int("seed")));
+        gsv::VelocityAt lab_frame =
+            field == "swirl" ? gsv::analytic_photo_swirl(frame.width, frame.height, speed, kSwirlCentre.x, kSwirlCentre.y,
+                                                         p.get_float("swirl_radius"))
+                             : gsv::analytic_flow(gsv::flow_kind_from_name(field), frame.width, frame.height, speed,
+                                                  p.get_float("time"), static_cast<std::uint64_t>(p.get_int("seed")));
+        return gsv::seen_from_moving_frame(std::move(lab_frame), observer_velocity(p));
     }
 
     // A file's field keeps its own grid (the shader steps in flow texels) and is rescaled like the
@@ -152,6 +177,7 @@ private:
     gsv::Tracked<gsv::Texture> input_, flow_;
     gsv::Tracked<gsv::FlowSequence> file_;
     gsv::Tracked<gsv::ExactLic> exact_;
+    gsv::LicContrastPass contrast_;
     bool exact_applies_ = false;
 };
 

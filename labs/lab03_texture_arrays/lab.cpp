@@ -11,6 +11,7 @@
 #include "common/gl/texture.h"
 #include "common/scene/mesh_data.h"
 #include "support/flow/flow_field.h"
+#include "support/flow/lic_contrast_pass.h"
 #include "support/flow/noise.h"
 #include "time_flow.h"
 
@@ -44,6 +45,12 @@ public:
         p.add_int("grid", 256, 16, 1024, "flow texels across (the domain is twice as wide as high)");
         p.add_float("speed", 1.0, 0, 4, "largest speed, in flow texels per step").with_step(0.1);
         p.add_int("seed", 1, 0, 1000000, "the white noise");
+        p.add_float("observer_velocity", 0, -1, 1,
+                    "the observer's velocity along +x, a fraction of `speed`, subtracted from the flow: a frame that "
+                    "moves with the vortex street's vortices shows them").with_step(0.01);
+        p.add_choice("contrast", "off", gsv::lic_contrast_names(),
+                     "a tone curve after the LIC: a stretch of the 0.5-99.5 percentiles to black and white, or histogram "
+                     "equalisation");
     }
 
     void setup(gsv::LabKit& kit) override {
@@ -61,12 +68,14 @@ public:
         flow_.update(p, [&] { return lab03::make_time_flow(kit); });
         uploaded_.run_if_changed(p, [&] { upload(p); }, flow_.version());
         noise_.update(p, [&] { return make_noise(p, frame); }, frame.width, frame.height);
-        glDisable(GL_DEPTH_TEST);
-        const gsv::ShaderProgram& program = kit.use(*lic_);
-        program.bind("uNoise", *noise_);
-        bind_flow(program);
-        program.set("uFlowTexel", glm::vec2(1.0f / float(flow_->width), 1.0f / float(flow_->height)));
-        quad_.draw();
+        contrast_.draw(kit, frame, gsv::lic_contrast_from_name(p.get_choice("contrast")), quad_, [&] {
+            glDisable(GL_DEPTH_TEST);
+            const gsv::ShaderProgram& program = kit.use(*lic_);
+            program.bind("uNoise", *noise_);
+            bind_flow(program);
+            program.set("uFlowTexel", glm::vec2(1.0f / float(flow_->width), 1.0f / float(flow_->height)));
+            quad_.draw();
+        });
     }
 
     // Storage changes what an image costs, not what it shows: the reference is always the array's.
@@ -75,6 +84,7 @@ public:
     std::string sweep_reference_name() const override { return "the flow blended linearly between 256 slices per period"; }
 
     gsv::SweepMetrics sweep_metrics(gsv::LabKit& kit, const gsv::Frame&) override {
+        gsv::check_sweepable(gsv::lic_contrast_from_name(kit.params().get_choice("contrast")));
         return lab03::measure_sampling(kit, *probe_, quad_, *flow_, [&](const gsv::ShaderProgram& p) { bind_flow(p); });
     }
 
@@ -131,6 +141,7 @@ private:
     gsv::Tracked<gsv::Texture> noise_;
     gsv::Texture array_, volume_;
     std::vector<gsv::Texture> separate_;
+    gsv::LicContrastPass contrast_;
 };
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include "common/core/error.h"
 #include "common/gl/framebuffer.h"
 #include "common/gl/gl.h"
+#include "support/flow/moving_frame.h"
 #include "support/flow/time_slices.h"
 
 #include <algorithm>
@@ -35,9 +36,9 @@ glm::dvec2 mixed(const gsv::FlowSequence& sequence, const gsv::SliceMix& m, int 
     return a + m.weight * (b - a);
 }
 
-// The flow at each of `times`: an analytic flow sampled there (one scale for any set of times), or a
-// file's frames, spread over the period like slices, blended linearly in time.
-gsv::FlowSequence flow_at_times(gsv::LabKit& kit, const std::vector<double>& times) {
+// The flow at each of `times` in the lab's frame: an analytic flow sampled there (one scale for any set of times),
+// or a file's frames, spread over the period like slices, blended linearly in time.
+gsv::FlowSequence lab_frame_flow_at_times(gsv::LabKit& kit, const std::vector<double>& times) {
     const auto& p = kit.params();
     const std::string field = p.get_choice("field");
     const double speed = p.get_float("speed");
@@ -65,6 +66,13 @@ gsv::FlowSequence flow_at_times(gsv::LabKit& kit, const std::vector<double>& tim
         out.frames.push_back(std::move(frame));
     }
     return out;
+}
+
+// The same seen by the observer, who moves at observer_velocity times `speed` flow texels per step.
+gsv::FlowSequence flow_at_times(gsv::LabKit& kit, const std::vector<double>& times) {
+    const auto& p = kit.params();
+    return gsv::seen_from_moving_frame(lab_frame_flow_at_times(kit, times),
+                                       static_cast<double>(p.get_float("observer_velocity")) * p.get_float("speed"));
 }
 
 std::vector<double> slice_times(int slices) {

@@ -18,6 +18,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <set>
@@ -62,7 +63,7 @@ public:
         p.add_float("probe_radius", 0.25, 0.02, 1, "the probe's radius (model units)").with_step(0.02).applies_when("probe", {"on"});
         p.add_vec3("background", {0.08f, 0.09f, 0.12f}, 0, 1, "the canvas behind everything");
         p.add_bool("compare_shaders", false, "sweep: also time the uber-shader and the hand-written DVR");
-        gsv::add_orbit_camera(p, 30, 25, 3.6f, 0.1f);  // down to 0.1: inside the volume
+        gsv::add_orbit_camera(p, 30, 25, framing_distance(), 0.1f);  // down to 0.1: inside the volume
     }
 
     void setup(gsv::LabKit&) override { registry_ = lab06::make_registry(); }
@@ -208,6 +209,14 @@ private:
             !std::filesystem::exists(typed, ec))
             return assets.lab_dir() / typed;
         return assets.user_file(typed);
+    }
+
+    // Where the camera sees any volume whole, from any side: every box's largest side is 2 (VolumeBox), so the cube's
+    // bounding sphere, of radius sqrt 3, holds them all, and from this distance that sphere just fills the field of
+    // view's height.
+    static float framing_distance() {
+        const double half_fov = glm::radians(static_cast<double>(gsv::OrbitCamera{}.fov_degrees)) / 2.0;
+        return static_cast<float>(std::sqrt(3.0) / std::sin(half_fov));
     }
 
     static float near_distance(const glm::mat4& projection) {

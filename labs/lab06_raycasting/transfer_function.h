@@ -7,7 +7,7 @@
 namespace lab06 {
 
 // grey: opacity and brightness rise with intensity. bands: three thin shells of the Marschner-Lobb signal
-// around 0.5 (blue, yellow, red). tissue: the MRI head, skin faint and orange, brain brighter and denser.
+// around 0.5 (blue, yellow, red). tissue: the windowed MRI brain, the ventricles' fluid blue, white matter cream.
 inline const std::vector<std::string> kTransferFunctions = {"grey", "bands", "tissue"};
 
 inline constexpr int kTransferFunctionEntries = 256;

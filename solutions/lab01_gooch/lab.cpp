@@ -145,7 +145,20 @@ private:
             return;
         }
         glEnable(GL_DEPTH_TEST);
+        // Front faces first, then back faces pushed back by a polygon offset. Along a silhouette a front and a back
+        // triangle share an edge, and near it both cover a pixel at the same depth but for rounding: drawn in one pass,
+        // a back face could win that tie, and its normal, flipped to face the eye (shade.frag), points to the other
+        // side of the rim (on the default sphere, one warm pixel on the cool side). Offset, back faces still show
+        // wherever nothing is in front of them (a cut-open model, the teapot from below), and never win a tie.
+        glEnable(GL_CULL_FACE);
+        glCullFace(GL_BACK);
         mesh_->draw();
+        glCullFace(GL_FRONT);
+        glEnable(GL_POLYGON_OFFSET_FILL);
+        glPolygonOffset(1.0f, 1.0f);
+        mesh_->draw();
+        glDisable(GL_POLYGON_OFFSET_FILL);
+        glDisable(GL_CULL_FACE);
     }
 
     // A pass drawn into a float target whose background has alpha 0, so covered pixels can be told apart.

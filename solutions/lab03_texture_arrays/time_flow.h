@@ -13,7 +13,7 @@ namespace lab03 {
 // T slices over one period, T = the `slices` parameter, slice k at time k * 10 / T: the analytic flows
 // sampled there, or a file's F frames (spread over the period the same way) blended linearly in time.
 // Velocities in flow texels per step; the scale does not depend on T, so slices of any T agree where
-// their times coincide.
+// their times coincide. Seen by the observer: observer_velocity times `speed` taken off every x velocity.
 gsv::FlowSequence make_time_flow(gsv::LabKit& kit);
 
 // One line and gsv::UnsupportedError when this context cannot hold the slices in the chosen storage:

@@ -130,6 +130,10 @@ VelocityAt analytic_photo_swirl(int width, int height, double max_texels_per_ste
 // (to rounding) at every point. Velocity in domain units; throws gsv::Error for a non-finite phase.
 glm::dvec2 vortex_street_velocity(glm::dvec2 p, double phase);
 
+// The speed at which the street's vortices drift downstream, U - u_s, in the domain units of
+// vortex_street_velocity: the velocity of the frame in which they stand still.
+double vortex_street_drift();
+
 // `frames` frames of the vortex street, frame k at phase k / frames: one period, so the sequence loops
 // seamlessly (the frame after the last would be frame 0 again). All frames share one scale factor that
 // makes the largest speed over the whole sequence max_texels_per_step. Throws gsv::Error for sizes or

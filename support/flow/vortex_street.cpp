@@ -80,6 +80,8 @@ glm::dvec2 vortex_street_velocity(glm::dvec2 p, double phase) {
     return velocity;
 }
 
+double vortex_street_drift() { return kStream - kSelfSpeed; }
+
 FlowSequence make_vortex_street(int width, int height, int frames, double max_texels_per_step) {
     return flow_detail::scaled_together("make_vortex_street", width, height, frames, max_texels_per_step, [&](int k) {
         const double phase = static_cast<double>(k) / frames;

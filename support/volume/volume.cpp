@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <vector>
 
 namespace gsv {
 namespace {
@@ -73,6 +74,31 @@ void Volume::update_range() {
     const auto [lowest, highest] = std::minmax_element(values.begin(), values.end());
     min = *lowest;
     max = *highest;
+}
+
+void Volume::set_percentile_window(double low_share, double high_share) {
+    if (!(0.0 <= low_share && low_share < high_share && high_share <= 1.0))
+        throw Error("Volume::set_percentile_window: shares " + std::to_string(low_share) + " and " +
+                    std::to_string(high_share) + " must satisfy 0 <= low < high <= 1");
+    if (values.empty()) throw Error("Volume::set_percentile_window: " + volume_label(*this) + " has no values");
+    std::vector<float> sorted = values;
+    std::sort(sorted.begin(), sorted.end());
+    const auto rank = [&](double share) {
+        return sorted[std::min(sorted.size() - 1, static_cast<std::size_t>(share * static_cast<double>(sorted.size())))];
+    };
+    min = rank(low_share);
+    max = rank(high_share);
+}
+
+Volume Volume::with_y_and_z_exchanged() const {
+    check_shape(*this, "Volume::with_y_and_z_exchanged");
+    Volume result = *this;
+    std::swap(result.ny, result.nz);
+    std::swap(result.spacing.y, result.spacing.z);
+    for (int k = 0; k < nz; ++k)
+        for (int j = 0; j < ny; ++j)
+            for (int i = 0; i < nx; ++i) result.values[result.index(i, k, j)] = values[index(i, j, k)];
+    return result;
 }
 
 Volume Volume::normalized() const {

@@ -49,11 +49,22 @@ struct Volume {
     // Sets min and max to the smallest and largest value (0 and 0 for no values). The values must be finite.
     void update_range();
 
+    // Sets min and max to the values below which low_share and high_share of the voxels lie (nearest rank), the
+    // window a viewer opens a scan with: a few outliers (an MRI's brightest voxels) then saturate rather than squeeze
+    // all the tissue into a sliver of [0, 1] when normalized(). Throws gsv::Error unless 0 <= low_share <
+    // high_share <= 1, or for no values.
+    void set_percentile_window(double low_share, double high_share);
+
     // A copy with each value mapped by (v - min) / (max - min), computed in double, clamped to [0, 1] (a
     // narrowed window saturates as an 8-bit texture would); min becomes 0 and max 1. A constant volume
     // (max == min) maps to 0, not to 0/0 = NaN, and keeps min = max = 0. Throws gsv::Error for a min or
     // max that is not finite or max < min.
     Volume normalized() const;
+
+    // The same voxels with the y and z axes exchanged: voxel (i, j, k) becomes (i, k, j), and the spacing follows.
+    // A scan whose k runs from the feet up is then drawn upright in a y-up world. Exchanging two axes mirrors, so a
+    // scan drawn unmirrored before is mirrored after and the other way round (lab06's sources.cpp says which).
+    Volume with_y_and_z_exchanged() const;
 
     // What GL_LINEAR with GL_CLAMP_TO_EDGE returns at texture coordinate s in [0,1]^3, in double from the
     // float values: per axis x = s n - 1/2 clamped to [0, n - 1], i0 = floor(x), f = x - i0, then the

@@ -5,8 +5,8 @@
 //
 // Convention: model space is the box centred at the origin, scaled so that its largest side is 2 and the
 // others keep the physical proportions. So an anisotropic volume (MRI slices thicker than their pixels)
-// keeps its true shape, and every volume fits the orbit camera that frames the unit sphere in the other
-// labs. A texture coordinate t in [0,1]^3 is at model position (t - 1/2) * size(): texture (0,0,0) is the
+// keeps its true shape, and every volume lies in the sphere of radius sqrt 3 about the origin (a cube's
+// corners are on it), which lab 06's camera frames. A texture coordinate t in [0,1]^3 is at model position (t - 1/2) * size(): texture (0,0,0) is the
 // corner (-size/2), texture (1,1,1) the corner (+size/2).
 #include "support/geometry/plane.h"
 
