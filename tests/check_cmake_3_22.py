@@ -6,13 +6,19 @@ checks the kit's CMake code and presets against CMake's documented release notes
   2. every field of CMakePresets.json is one that presets version 3 defines (a list of what is allowed, so a
      field added later is caught whether or not it is listed below), and no macro of a later version;
   3. no command, keyword, generator expression or variable from the list below, each added after 3.22.
+  4. with --configure CMAKE SCRATCH: the running CMake reads the presets (cmake --list-presets) and configures the
+     kit into SCRATCH with developer warnings on; a "Policy CMP.... is not set" or any other warning fails. With
+     cmake_minimum_required(VERSION 3.22) every policy introduced after 3.22 is unset, so code that depends on a
+     later behaviour warns here.
 What it cannot prove: that 3.22 configures the kit. A later feature missing from the list in 3 passes, and so
 does a behaviour (not a name) that changed after 3.22. The newer CMake that runs the tests keeps every policy
 introduced after 3.22 at OLD because of cmake_minimum_required(VERSION 3.22), which covers most of the rest.
-Usage: check_cmake_3_22.py KIT_ROOT"""
+Usage: check_cmake_3_22.py KIT_ROOT [--configure CMAKE SCRATCH]"""
 import json
 import pathlib
 import re
+import shutil
+import subprocess
 import sys
 
 OLDEST = (3, 22)
@@ -129,11 +135,31 @@ def check_presets(path, problems):
             problems.append("%s: macro %s is from a presets version above 3" % (path, macro))
 
 
+def check_configure(root, cmake, scratch, problems):
+    listed = subprocess.run([cmake, "--list-presets"], cwd=root, capture_output=True, text=True)
+    if listed.returncode != 0:
+        problems.append("cmake --list-presets fails: " + (listed.stderr.strip().splitlines() or ["?"])[0])
+    shutil.rmtree(scratch, ignore_errors=True)
+    run = subprocess.run([cmake, "-S", str(root), "-B", str(scratch), "-Wdev", "-DGSV_BUILD_TESTS=ON"],
+                         capture_output=True, text=True)
+    text = run.stdout + run.stderr
+    if run.returncode != 0:
+        problems.append("configuring the kit fails:\n" + text[-2000:])
+    for m in re.finditer(r"^CMake (Warning|Deprecation Warning).*?(?=^\S|\Z)", run.stderr, re.M | re.S):
+        problems.append("configuring warns: " + " ".join(m.group(0).split())[:400])
+    shutil.rmtree(scratch, ignore_errors=True)
+
+
 def main():
-    if len(sys.argv) != 2:
+    args = sys.argv[1:]
+    configure = None
+    if len(args) == 4 and args[1] == "--configure":
+        configure = args[2:]
+        args = args[:1]
+    if len(args) != 1:
         print(__doc__, file=sys.stderr)
         return 2
-    root = pathlib.Path(sys.argv[1]).resolve()
+    root = pathlib.Path(args[0]).resolve()
     problems = []
     files = list(cmake_files(root))
     for path in files:
@@ -149,10 +175,12 @@ def main():
                 line = code.count("\n", 0, m.end() - 1) + 1
                 problems.append("%s:%d: %s needs CMake %s" % (path.relative_to(root), line, what, since))
     check_presets(root / "CMakePresets.json", problems)
+    if configure:
+        check_configure(root, configure[0], pathlib.Path(configure[1]), problems)
     for problem in problems:
         print("check_cmake_3_22: " + problem)
-    print("check_cmake_3_22: %d CMake files and CMakePresets.json checked against %d later features, %d problems"
-          % (len(files), len(LATER_FEATURES), len(problems)))
+    print("check_cmake_3_22: %d CMake files and CMakePresets.json checked against %d later features%s, %d problems"
+          % (len(files), len(LATER_FEATURES), ", configured with developer warnings" if configure else "", len(problems)))
     return 1 if problems else 0
 
 
