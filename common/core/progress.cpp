@@ -9,12 +9,27 @@
 #define gsv_isatty _isatty
 #define gsv_fileno _fileno
 #else
+#include <sys/ioctl.h>
 #include <unistd.h>
 #define gsv_isatty isatty
 #define gsv_fileno fileno
 #endif
 
 namespace gsv {
+namespace {
+
+// The terminal's width: a rewritten line must not wrap, or the carriage return goes back to its last row only.
+std::size_t terminal_columns(std::FILE* stream) {
+#ifndef _WIN32
+    winsize size{};
+    if (ioctl(gsv_fileno(stream), TIOCGWINSZ, &size) == 0 && size.ws_col > 0) return size.ws_col;
+#else
+    (void)stream;
+#endif
+    return 80;
+}
+
+}  // namespace
 
 std::string duration_text(double seconds) {
     const long s = std::lround(std::max(0.0, seconds));
@@ -44,8 +59,14 @@ double Progress::elapsed_seconds() const {
 
 void Progress::step(const std::string& what) {
     ++done_;
-    const std::string line = task_ + " " + progress_text(done_, total_, what, elapsed_seconds());
+    std::string line = task_ + " " + progress_text(done_, total_, what, elapsed_seconds());
     if (in_place_) {
+        // The estimate is at the end; the step's name in the middle gives way.
+        const std::size_t columns = terminal_columns(stream_) - 1;
+        if (line.size() > columns && columns > 40) {
+            const std::size_t keep_end = columns / 2;
+            line = line.substr(0, columns - keep_end - 3) + "..." + line.substr(line.size() - keep_end);
+        }
         // Carriage return, the line, then erase what a longer previous line left to its right.
         std::fprintf(stream_, "\r%s\033[K", line.c_str());
         line_open_ = true;
