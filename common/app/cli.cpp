@@ -73,11 +73,10 @@ CliOptions parse_cli(int argc, const char* const* argv) {
             // Compared as text first: a side of twenty digits is too large, not a number that overflows.
             auto side = [&](const std::string& digits) {
                 const std::string trimmed = digits.substr(std::min(digits.find_first_not_of('0'), digits.size()));
-                if (trimmed.empty()) throw Error("option --size " + text + " has a side of 0 pixels: each side is at least 1");
-                if (trimmed.size() > 4 || std::stoi(trimmed) > kMaxImageSide)
+                if (trimmed.size() > 4 || (!trimmed.empty() && std::stoi(trimmed) > kMaxImageSide))
                     throw Error("option --size " + text + " is too large: each side is at most " +
                                 std::to_string(kMaxImageSide) + " pixels");
-                return std::stoi(trimmed);
+                return parse_count("--size", trimmed.empty() ? "0" : trimmed, 1, kMaxImageSide);
             };
             o.width = side(m[1]);
             o.height = side(m[2]);
