@@ -6,6 +6,7 @@
 #include "common/core/progress.h"
 #include "common/io/output_folder.h"
 #include "grader/batch.h"
+#include "grader/cases.h"
 #include "lab_runner.h"
 #include "test_support.h"
 
@@ -101,6 +102,20 @@ TEST_CASE("output folder: a missing one is made, and one that cannot be is a lin
     const std::string is_file = test::gsv_error_message([&] { prepare_output_folder(dir.path("a-file"), "--out"); });
     CHECK(contains(is_file, "it is a file, not a folder"));
     CHECK(contains(test::gsv_error_message([&] { prepare_output_file(blocked / "x.png", "--out"); }), blocked.string()));
+}
+
+TEST_CASE("cases: a case file's size too large names the limit, like the lab's --size", "[grader]") {
+    test::TempDir dir;
+    const std::string tolerance = R"("tolerance": {"live": {"max_channel_diff": 2, "max_differing_fraction": 0},
+        "golden": {"max_channel_diff": 2, "max_differing_fraction": 0}},
+        "cases": [{"name": "a", "todo": "L01-T1", "settings": []}])";
+    const auto large = dir.write("a.json", R"({"lab": "lab01", "size": "100000x100000", )" + tolerance + "}");
+    const std::string message = test::gsv_error_message([&] { load_lab_cases(large); });
+    CHECK(contains(message, "a.json: a size of 100000x100000 is too large: each side is at most " + std::to_string(kMaxImageSide)));
+    const auto fits = dir.write("b.json", R"({"lab": "lab01", "size": "8192x64", )" + tolerance + "}");
+    CHECK(load_lab_cases(fits).width == kMaxImageSide);
+    const auto zero = dir.write("c.json", R"({"lab": "lab01", "size": "0x64", )" + tolerance + "}");
+    CHECK(contains(test::gsv_error_message([&] { load_lab_cases(zero); }), "WIDTHxHEIGHT"));
 }
 
 TEST_CASE("class table: scores print as people write them", "[grader]") {
