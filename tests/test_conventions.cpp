@@ -102,6 +102,8 @@ TEST_CASE("output folder: a missing one is made, and one that cannot be is a lin
     const std::string is_file = test::gsv_error_message([&] { prepare_output_folder(dir.path("a-file"), "--out"); });
     CHECK(contains(is_file, "it is a file, not a folder"));
     CHECK(contains(test::gsv_error_message([&] { prepare_output_file(blocked / "x.png", "--out"); }), blocked.string()));
+    CHECK(contains(test::gsv_error_message([&] { prepare_output_file(dir.path("images"), "--out"); }),
+                   "--out: '" + dir.path("images").string() + "' is a folder"));
 }
 
 TEST_CASE("cases: a case file's size too large names the limit, like the lab's --size", "[grader]") {

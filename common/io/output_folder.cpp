@@ -29,6 +29,8 @@ void prepare_output_folder(const fs::path& folder, const std::string& option) {
 }
 
 void prepare_output_file(const fs::path& file, const std::string& option) {
+    std::error_code ec;
+    if (fs::is_directory(file, ec)) throw Error(option + ": '" + file.string() + "' is a folder; name the file to write");
     prepare_output_folder(file.parent_path(), option);
 }
 
