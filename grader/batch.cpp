@@ -3,6 +3,7 @@
 #include "common/core/error.h"
 #include "common/io/json.h"
 #include "grader/process.h"
+#include "grader/report_format.h"
 #include "grader/sandbox.h"
 
 #include <algorithm>
@@ -87,7 +88,8 @@ std::string class_table(const std::vector<BatchEntry>& entries) {
     std::snprintf(line, sizeof line, "%-24s %12s %8s  %s\n", "submission", "score", "seconds", "problem");
     out << line;
     for (const auto& e : entries) {
-        std::snprintf(line, sizeof line, "%-24s %5.1f / %-5.1f %7.1f  %s\n", e.name.c_str(), e.score, e.max_score, e.seconds,
+        const std::string score = e.graded ? format_points(e.score) + " / " + format_points(e.max_score) : "-";
+        std::snprintf(line, sizeof line, "%-24s %12s %8.1f  %s\n", e.name.c_str(), score.c_str(), e.seconds,
                       e.graded ? "" : e.problem.substr(0, 80).c_str());
         out << line;
     }

@@ -1,6 +1,7 @@
 // gsv-bench-grader: how long grading every public case of every lab takes (student and live reference,
 // no timing checks), and where that time goes. A benchmark, not a test: it prints, it never fails on speed.
 #include "common/core/error.h"
+#include "common/core/version.h"
 #include "grader/grade.h"
 
 #include <chrono>
@@ -16,8 +17,19 @@ int main(int argc, char** argv) {
     options.out_dir = fs::temp_directory_path() / "gsv-bench-grader";
     options.hidden = false;
     options.timing = false;
+    const std::string usage = "usage: gsv-bench-grader [--help|--version]\n"
+                              "  grades every public case of the kit's own labs against their solutions (no hidden cases,\n"
+                              "  no timing checks) and prints where the time goes; a benchmark that never fails on speed\n";
+    if (argc == 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h")) {
+        std::printf("%s", usage.c_str());
+        return 0;
+    }
+    if (argc == 2 && std::string(argv[1]) == "--version") {
+        std::printf("%s\n", gsv::version_line("gsv-bench-grader").c_str());
+        return 0;
+    }
     if (argc > 1) {
-        std::fprintf(stderr, "usage: gsv-bench-grader (grades the kit's own labs against their solutions)\n");
+        std::fprintf(stderr, "gsv-bench-grader: unknown argument '%s' (see --help)\n", argv[1]);
         return 2;
     }
     try {

@@ -1,6 +1,7 @@
 #include "grader/cases.h"
 
 #include "common/app/case_file.h"
+#include "common/app/cli.h"
 #include "common/app/kit_layout.h"
 #include "common/core/error.h"
 #include "common/io/json.h"
@@ -48,9 +49,16 @@ void check_case_arrays(const LabCases& lab, const GradeCase& c, const std::strin
 }
 
 void parse_size(const std::string& size, const std::string& file, int& width, int& height) {
-    static const std::regex size_pattern(R"(^([0-9]{1,4})x([0-9]{1,4})$)");
+    static const std::regex size_pattern(R"(^0*([0-9]{1,9})x0*([0-9]{1,9})$)");
+    static const std::regex digits_pattern(R"(^[0-9]+x[0-9]+$)");
     std::smatch m;
-    if (!std::regex_match(size, m, size_pattern) || std::stoi(m[1]) < 1 || std::stoi(m[2]) < 1)
+    // The lab refuses a side over kMaxImageSide: say so here, where the case file can be fixed.
+    const bool matched = std::regex_match(size, m, size_pattern);
+    if ((matched && (std::stol(m[1]) > kMaxImageSide || std::stol(m[2]) > kMaxImageSide)) ||
+        (!matched && std::regex_match(size, digits_pattern)))
+        throw Error(file + ": a size of " + size + " is too large: each side is at most " + std::to_string(kMaxImageSide) +
+                    " pixels");
+    if (!matched || std::stoi(m[1]) < 1 || std::stoi(m[2]) < 1)
         throw Error(file + ": a size must be WIDTHxHEIGHT, got '" + size + "'");
     width = std::stoi(m[1]);
     height = std::stoi(m[2]);

@@ -2,7 +2,10 @@
 // reports; or grades a folder of submissions with N workers.
 #include "common/app/assets.h"
 #include "common/core/error.h"
+#include "common/core/progress.h"
+#include "common/core/version.h"
 #include "common/io/json.h"
+#include "common/io/output_folder.h"
 #include "grader/batch.h"
 #include "grader/draw.h"
 #include "grader/grade.h"
@@ -10,7 +13,9 @@
 #include "grader/report_format.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <cstdlib>
 #include <regex>
@@ -24,7 +29,7 @@ const char* kUsage =
     "                 [--labs lab01,lab02] [--cases gyre,wrap] [--todo L02-T3] [--seed N] [--self-check] [--no-timing]\n"
     "                 [--public-only]"
     " [--timeout S] [--fail-under F] [--update-goldens] [--allow-readable-kit] [--no-namespaces]\n"
-    "                 [--no-sandbox] [--quiet]\n"
+    "                 [--no-sandbox] [--quiet] [--help] [--version]\n"
     "  --kit DIR         the kit (cases, goldens, hidden cases, solutions); default: the one this was built from\n"
     "  --bin DIR         the kit's built labs and <lab>_solution; default: this build's bin/\n"
     "  --submission DIR  a copy of the kit whose labs/ hold a student's work: built against this kit, then graded\n"
@@ -59,9 +64,13 @@ void print_progress(const gsv::GradeProgress& p) {
                  r.seconds);
 }
 
+std::chrono::steady_clock::time_point batch_start;
+
+// One line per submission, whether or not stderr is a terminal: each names a student's result.
 void print_batch_progress(const gsv::BatchEntry& e, int done, int total) {
-    std::fprintf(stderr, "[%2d/%2d] %-24s %s\n", done, total, e.name.c_str(),
-                 e.graded ? (std::to_string(e.score) + " / " + std::to_string(e.max_score)).c_str() : e.problem.c_str());
+    const std::string result = e.graded ? gsv::format_points(e.score) + " / " + gsv::format_points(e.max_score) : e.problem;
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - batch_start).count();
+    std::fprintf(stderr, "%s\n", gsv::progress_text(done, total, e.name + ": " + gsv::one_line(result, 200), elapsed).c_str());
 }
 
 void write_failure_results(const std::filesystem::path& out_dir, const std::string& why) {
@@ -149,9 +158,14 @@ int main(int argc, char** argv) {
             else if (a == "-h" || a == "--help") {
                 std::printf("%s", kUsage);
                 return 0;
+            } else if (a == "--version") {
+                std::printf("%s\n", gsv::version_line("gsv-grade").c_str());
+                return 0;
             } else throw gsv::Error("unknown option '" + a + "' (see --help)");
         }
         if (const char* seed = std::getenv(gsv::kSeedVariable); seed && !options.seed) options.seed = parse_seed(seed);
+        // Before any build or lab runs: a class's grading that cannot write its reports says so first.
+        gsv::prepare_output_folder(options.out_dir, "--out");
         if (!batch.empty()) {
             if (!options.submission.empty()) throw gsv::Error("--batch and --submission exclude each other");
             gsv::BatchOptions b;
@@ -163,6 +177,7 @@ int main(int argc, char** argv) {
             b.pass_through = pass_through;
             std::fprintf(stderr, "grading the submissions in %s with %d workers, seed %llu\n", batch.c_str(), workers,
                          static_cast<unsigned long long>(b.seed));
+            batch_start = std::chrono::steady_clock::now();
             const auto entries = gsv::grade_batch(b, print_batch_progress);
             std::printf("%s", gsv::class_table(entries).c_str());
             const auto csv = options.out_dir / "class.csv";
@@ -204,6 +219,10 @@ int main(int argc, char** argv) {
         // A submission that could not be graded at all still gets a results.json saying why (Gradescope
         // shows it to the student); an internal error leaves one for the instructor too.
         if (!options.submission.empty() && batch.empty()) write_failure_results(options.out_dir, e.what());
+        return 2;
+    } catch (const std::filesystem::filesystem_error& e) {
+        // A folder or file the grader could not read or write: the user's to fix, named in the message.
+        std::fprintf(stderr, "gsv-grade: %s\n", e.what());
         return 2;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "gsv-grade: internal error: %s\n", e.what());

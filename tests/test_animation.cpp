@@ -75,7 +75,7 @@ std::size_t chunk_offset(const std::vector<std::uint8_t>& bytes, const std::stri
 
 }  // namespace
 
-TEST_CASE("apng: three frames round-trip with valid chunk order and sequence numbers and CRCs and every pixel") {
+TEST_CASE("apng: three frames round-trip with valid chunk order and sequence numbers and CRCs and every pixel", "[unit]") {
     test::TempDir dir;
     const auto frames = three_frames();
     const fs::path file = dir.path("out/anim.png");  // the folder is created
@@ -113,7 +113,7 @@ TEST_CASE("apng: three frames round-trip with valid chunk order and sequence num
     }
 }
 
-TEST_CASE("apng: one frame is a valid animation and a later write replaces the file whole") {
+TEST_CASE("apng: one frame is a valid animation and a later write replaces the file whole", "[unit]") {
     test::TempDir dir;
     const fs::path file = dir.path("one.png");
     write_apng(file, three_frames(), 1, 20);
@@ -126,7 +126,7 @@ TEST_CASE("apng: one frame is a valid animation and a later write replaces the f
     CHECK(same_pixels(read_png(file), three_frames(4, 4)[2]));
 }
 
-TEST_CASE("apng: no frames or frames of different sizes or a bad delay are refused naming the frame") {
+TEST_CASE("apng: no frames or frames of different sizes or a bad delay are refused naming the frame", "[unit]") {
     test::TempDir dir;
     const fs::path file = dir.path("bad.png");
     const std::string none = test::gsv_error_message([&] { write_apng(file, {}, 1, 20); });
@@ -144,7 +144,7 @@ TEST_CASE("apng: no frames or frames of different sizes or a bad delay are refus
     CHECK_FALSE(fs::exists(file));  // refused before anything was written
 }
 
-TEST_CASE("apng: a path that cannot be written is a one-line error and leaves no partial file") {
+TEST_CASE("apng: a path that cannot be written is a one-line error and leaves no partial file", "[unit]") {
     test::TempDir dir;
     const fs::path blocker = dir.write("blocker", "a file where a folder should be");
     const fs::path file = blocker / "anim.png";
@@ -153,7 +153,7 @@ TEST_CASE("apng: a path that cannot be written is a one-line error and leaves no
     CHECK(message.find('\n') == std::string::npos);
 }
 
-TEST_CASE("apng: the reader refuses a wrong CRC or a truncated file or a gap in the sequence or a plain PNG") {
+TEST_CASE("apng: the reader refuses a wrong CRC or a truncated file or a gap in the sequence or a plain PNG", "[unit]") {
     test::TempDir dir;
     const fs::path good = dir.path("good.png");
     write_apng(good, three_frames(), 1, 20);
@@ -184,7 +184,7 @@ TEST_CASE("apng: the reader refuses a wrong CRC or a truncated file or a gap in 
     CHECK(contains(test::gsv_error_message([&] { read_apng_info(dir.path("missing.png")); }), "cannot read"));
 }
 
-TEST_CASE("apng: the PNG CRC-32 and frame delays from a frame rate") {
+TEST_CASE("apng: the PNG CRC-32 and frame delays from a frame rate", "[unit]") {
     const char* check = "123456789";  // the CRC-32 check value every implementation must give
     CHECK(png::crc32(reinterpret_cast<const std::uint8_t*>(check), 9) == 0xCBF43926u);
     auto delay = [](double fps) {
@@ -275,7 +275,7 @@ int green(const Image& image) { return image.at(0, 0)[1]; }
 
 }  // namespace
 
-TEST_CASE("animate: steps the animated parameter from min to max into a PNG per frame and the APNG", "[gl]") {
+TEST_CASE("animate: steps the animated parameter from min to max into a PNG per frame and the APNG", "[lab]") {
     test::TempDir dir;
     const fs::path out = dir.path("anim");
     REQUIRE(run_pulse({"animate", "--case", "green", "--size", "16x8", "--count", "4", "--out-dir", out.string()}) ==
@@ -299,7 +299,7 @@ TEST_CASE("animate: steps the animated parameter from min to max into a PNG per 
     }
 }
 
-TEST_CASE("animate: --from and --to and --fps with the lab told of every step through params_changed", "[gl]") {
+TEST_CASE("animate: --from and --to and --fps with the lab told of every step through params_changed", "[lab]") {
     test::TempDir dir;
     const fs::path out = dir.path("anim");
     std::vector<double> phases;
@@ -315,7 +315,7 @@ TEST_CASE("animate: --from and --to and --fps with the lab told of every step th
     CHECK(green(read_png(out / "frame_0000.png")) == 128);
 }
 
-TEST_CASE("animate: NaN in any frame gives status 4 and every frame is still written", "[gl]") {
+TEST_CASE("animate: NaN in any frame gives status 4 and every frame is still written", "[lab]") {
     test::TempDir dir;
     const fs::path out = dir.path("anim");
     CHECK(run_pulse({"animate", "--set", "poison=on", "--size", "4x4", "--count", "4", "--out-dir", out.string()}) ==
@@ -327,7 +327,7 @@ TEST_CASE("animate: NaN in any frame gives status 4 and every frame is still wri
     CHECK(poisoned.at(0, 0)[2] == 255);
 }
 
-TEST_CASE("animate: bad command lines and a lab without an animated parameter give one line and status 2") {
+TEST_CASE("animate: bad command lines and a lab without an animated parameter give one line and status 2", "[lab]") {
     struct Bad {
         std::vector<std::string> args;
         std::string says;

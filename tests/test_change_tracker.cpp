@@ -22,7 +22,7 @@ Params three_params() {
 
 }  // namespace
 
-TEST_CASE("change tracking: a build reruns when a parameter it read changes, not when another does", "[app]") {
+TEST_CASE("change tracking: a build reruns when a parameter it read changes, not when another does", "[unit][app]") {
     Params p = three_params();
     Tracked<std::string> flow;
     int builds = 0;
@@ -52,7 +52,7 @@ TEST_CASE("change tracking: a build reruns when a parameter it read changes, not
     CHECK(flow.version() == 3);
 }
 
-TEST_CASE("change tracking: keys, invalidation, a failed build and a nested tracker", "[app]") {
+TEST_CASE("change tracking: keys, invalidation, a failed build and a nested tracker", "[unit][app]") {
     Params p = three_params();
     ChangeTracker outer, inner;
     int outer_builds = 0, inner_builds = 0;

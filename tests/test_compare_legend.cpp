@@ -49,7 +49,7 @@ bool is_magenta(const std::uint8_t* p) { return p[0] > 100 && p[0] == p[2] && p[
 
 }  // namespace
 
-TEST_CASE("compare: lab01's starter against its solution, rendered now, differs where the TODO paints its not-done colour", "[labs]") {
+TEST_CASE("compare: lab01's starter against its solution, rendered now, differs where the TODO paints its not-done colour", "[lab][labs]") {
     gsv::test::TempDir dir;
     const auto result = run(gsv::test::bin_dir() / "lab01", {"compare", "--case", "phong", "--size", "128x128", "--out",
                                                               dir.path("compare.png").string()}, dir.path());
@@ -90,7 +90,7 @@ TEST_CASE("compare: lab01's starter against its solution, rendered now, differs 
     CHECK(same_pixels(crop(written, layout.panels[1]), theirs));
 }
 
-TEST_CASE("compare: the solution against itself, a copy named as the student's beside it, differs nowhere", "[labs]") {
+TEST_CASE("compare: the solution against itself, a copy named as the student's beside it, differs nowhere", "[lab][labs]") {
     gsv::test::TempDir dir;
     const fs::path lab = copy_binary("lab01_solution", dir.path("bin"), "lab01");
     copy_binary("lab01_solution", dir.path("bin"), "lab01_solution");
@@ -112,7 +112,7 @@ TEST_CASE("compare: the solution against itself, a copy named as the student's b
     CHECK(difference.at(0, 0)[0] == 0);
 }
 
-TEST_CASE("compare: with no solution beside it (a student's kit) the case's golden image is the reference, at its size", "[labs]") {
+TEST_CASE("compare: with no solution beside it (a student's kit) the case's golden image is the reference, at its size", "[lab][labs]") {
     gsv::test::TempDir dir;
     const fs::path lab = copy_binary("lab01", dir.path("bin"), "lab01");
     const auto result = run(lab, {"compare", "--case", "phong", "--out", dir.path("golden.png").string()}, dir.path());
@@ -128,7 +128,7 @@ TEST_CASE("compare: with no solution beside it (a student's kit) the case's gold
     CHECK(same_pixels(gsv::read_png(dir.path("golden.png")), expected));
 }
 
-TEST_CASE("compare: no reference, a demo without a golden image, changed settings, another size, an unknown case: one line each", "[labs]") {
+TEST_CASE("compare: no reference, a demo without a golden image, changed settings, another size, an unknown case: one line each", "[lab][labs]") {
     gsv::test::TempDir dir;
     const fs::path alone = copy_binary("lab01", dir.path("bin"), "lab01");
     struct Bad {
@@ -155,7 +155,7 @@ TEST_CASE("compare: no reference, a demo without a golden image, changed setting
     CHECK_FALSE(fs::exists(dir.path("lab01-compare.png")));
 }
 
-TEST_CASE("render --legend: lab 07's picture unchanged, and every colour it draws is in the legend beside it", "[labs]") {
+TEST_CASE("render --legend: lab 07's picture unchanged, and every colour it draws is in the legend beside it", "[lab][labs]") {
     gsv::test::TempDir dir;
     const std::vector<std::string> settings{"element_edges=off", "auto_range=off", "range_min=-0.3", "range_max=0.3"};
     // Tall, so the bar has a row for every few levels of its colours.
@@ -193,7 +193,7 @@ TEST_CASE("render --legend: lab 07's picture unchanged, and every colour it draw
     CHECK(missing == 0);
 }
 
-TEST_CASE("render --legend: labs 04, 06 and 07 draw one, animate too, and a lab or setting whose colours are not data refuses", "[labs]") {
+TEST_CASE("render --legend: labs 04, 06 and 07 draw one, animate too, and a lab or setting whose colours are not data refuses", "[lab][labs]") {
     gsv::test::TempDir dir;
     for (const std::string lab : {"lab04_solution", "lab06_solution", "lab07_solution"}) {
         const auto run = gsv::test::render(lab, {}, dir.path(), lab, {"--legend"});
@@ -215,7 +215,7 @@ TEST_CASE("render --legend: labs 04, 06 and 07 draw one, animate too, and a lab 
     }
 }
 
-TEST_CASE("render --legend: lab 05's speed colours, and none with color_by_speed off", "[labs][gl43]") {
+TEST_CASE("render --legend: lab 05's speed colours, and none with color_by_speed off", "[lab][labs][gl43]") {
     gsv::test::TempDir dir;
     const auto run = gsv::test::render("lab05_solution", {"particles=4096"}, dir.path(), "speed", {"--legend"});
     INFO(run.process.output);

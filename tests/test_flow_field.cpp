@@ -63,7 +63,7 @@ std::string floats(int count, float value) {
 
 }  // namespace
 
-TEST_CASE("flow kinds have names and unknown names list the valid ones", "[flow]") {
+TEST_CASE("flow kinds have names and unknown names list the valid ones", "[unit][flow]") {
     for (FlowKind kind : {FlowKind::Rotation, FlowKind::Saddle, FlowKind::Source, FlowKind::DoubleGyre,
                           FlowKind::Vortices})
         CHECK(gsv::flow_kind_from_name(gsv::flow_kind_name(kind)) == kind);
@@ -72,7 +72,7 @@ TEST_CASE("flow kinds have names and unknown names list the valid ones", "[flow]
           "unknown flow 'gyre' (known: rotation, saddle, source, double_gyre, vortices)");
 }
 
-TEST_CASE("rotation is tangent to circles about the centre and scaled to the requested speed", "[flow]") {
+TEST_CASE("rotation is tangent to circles about the centre and scaled to the requested speed", "[unit][flow]") {
     for (auto [width, height] : {std::pair{64, 64}, std::pair{80, 48}}) {
         const FlowField field = gsv::make_flow(FlowKind::Rotation, width, height, 1.5);
         INFO(width << "x" << height);
@@ -89,7 +89,7 @@ TEST_CASE("rotation is tangent to circles about the centre and scaled to the req
     }
 }
 
-TEST_CASE("the centre texel of an odd-sized field is exactly still", "[flow]") {
+TEST_CASE("the centre texel of an odd-sized field is exactly still", "[unit][flow]") {
     for (FlowKind kind : {FlowKind::Rotation, FlowKind::Source, FlowKind::Saddle}) {
         const FlowField field = gsv::make_flow(kind, 65, 33, 1.0);
         CHECK(field.at(32, 16) == glm::vec2(0.0f));
@@ -97,7 +97,7 @@ TEST_CASE("the centre texel of an odd-sized field is exactly still", "[flow]") {
     }
 }
 
-TEST_CASE("source points straight outward and saddle in along y, out along x", "[flow]") {
+TEST_CASE("source points straight outward and saddle in along y, out along x", "[unit][flow]") {
     const int width = 40, height = 30;
     const FlowField source = gsv::make_flow(FlowKind::Source, width, height, 2.0);
     const FlowField saddle = gsv::make_flow(FlowKind::Saddle, width, height, 2.0);
@@ -118,7 +118,7 @@ TEST_CASE("source points straight outward and saddle in along y, out along x", "
     CHECK(std::abs(glm::length(source.at(width - 1, height - 1)) - 2.0f) <= 2e-6f);
 }
 
-TEST_CASE("double gyre at t = 0 is two mirrored cells with no flow across x = 1", "[flow]") {
+TEST_CASE("double gyre at t = 0 is two mirrored cells with no flow across x = 1", "[unit][flow]") {
     // At t = 0, f(x) = x, so u = -pi A sin(pi x) cos(pi y) and v = pi A cos(pi x) sin(pi y). With x -> 2 - x,
     // sin(pi x) changes sign and cos(pi x) does not: u is odd and v even about x = 1, and u = 0 on x = 1.
     const int width = 64, height = 32;
@@ -140,7 +140,7 @@ TEST_CASE("double gyre at t = 0 is two mirrored cells with no flow across x = 1"
     for (int y = 0; y < 32; ++y) REQUIRE(std::abs(odd.at(32, y).x) <= tolerance);  // the column at x = 1
 }
 
-TEST_CASE("double gyre velocities are carried from domain units into texels", "[flow]") {
+TEST_CASE("double gyre velocities are carried from domain units into texels", "[unit][flow]") {
     // At t = 0 the largest |u| and |v| in domain units are both pi A. A domain unit is width/2 texels
     // across and height texels up, so on a 200x50 grid |u| reaches twice |v| in texels.
     const FlowField field = gsv::make_flow(FlowKind::DoubleGyre, 200, 50, 1.0, 0.0);
@@ -152,7 +152,7 @@ TEST_CASE("double gyre velocities are carried from domain units into texels", "[
     CHECK(std::abs(max_u / max_v - 2.0f) < 0.02f);
 }
 
-TEST_CASE("double gyre is finite and scaled at every time, and moves with time", "[flow]") {
+TEST_CASE("double gyre is finite and scaled at every time, and moves with time", "[unit][flow]") {
     std::vector<FlowField> fields;
     for (double t : {0.0, 2.5, 5.0}) {
         fields.push_back(gsv::make_flow(FlowKind::DoubleGyre, 96, 48, 0.75, t));
@@ -166,7 +166,7 @@ TEST_CASE("double gyre is finite and scaled at every time, and moves with time",
         REQUIRE(std::abs(fields[0].velocity[i] - fields[2].velocity[i]) <= 1e-6f);
 }
 
-TEST_CASE("vortices are deterministic per seed and depend on it", "[flow]") {
+TEST_CASE("vortices are deterministic per seed and depend on it", "[unit][flow]") {
     const FlowField a = gsv::make_flow(FlowKind::Vortices, 64, 48, 1.0, 0.0, 7);
     CHECK(all_finite(a));
     CHECK(std::abs(a.max_speed() - 1.0f) <= 1e-6f);
@@ -190,7 +190,7 @@ TEST_CASE("vortices are deterministic per seed and depend on it", "[flow]") {
     CHECK(both_signs[1]);
 }
 
-TEST_CASE("a vortex centred exactly on a texel centre gives no NaN", "[flow]") {
+TEST_CASE("a vortex centred exactly on a texel centre gives no NaN", "[unit][flow]") {
     // Texel (40, 20) of a 64x64 grid has its centre at (17/64, -23/64), exact in binary.
     const gsv::Vortex on_texel{17.0 / 64.0, -23.0 / 64.0, 1, 0.2};
     REQUIRE(centred(40, 64) == on_texel.x);
@@ -211,7 +211,7 @@ TEST_CASE("a vortex centred exactly on a texel centre gives no NaN", "[flow]") {
     CHECK(glm::dot(got, expected) > 0.0);
 }
 
-TEST_CASE("a vortex's core tends to solid-body rotation without cancellation", "[flow]") {
+TEST_CASE("a vortex's core tends to solid-body rotation without cancellation", "[unit][flow]") {
     // Centred at the origin so that the offsets below are exact.
     const gsv::Vortex vortex{0.0, 0.0, -1, 0.25};
     const double c2 = 0.25 * 0.25;
@@ -231,12 +231,12 @@ TEST_CASE("a vortex's core tends to solid-body rotation without cancellation", "
     }
 }
 
-TEST_CASE("vortex cores must be positive", "[flow]") {
+TEST_CASE("vortex cores must be positive", "[unit][flow]") {
     CHECK(gsv_error_message([] { gsv::make_vortex_flow({gsv::Vortex{0, 0, 1, 0.0}}, 8, 8, 1.0); }) ==
           "make_vortex_flow: vortex 0 has core radius 0; it must be positive and finite");
 }
 
-TEST_CASE("photo swirl turns a disc and leaves everything beyond its radius still", "[flow]") {
+TEST_CASE("photo swirl turns a disc and leaves everything beyond its radius still", "[unit][flow]") {
     const int width = 80, height = 40;
     const double cx = 0.5, cy = 0.5, radius = 0.4;
     const FlowField field = gsv::make_photo_swirl(width, height, 2.0, cx, cy, radius);
@@ -264,7 +264,7 @@ TEST_CASE("photo swirl turns a disc and leaves everything beyond its radius stil
     CHECK(glm::length(field.at(width / 2 + 15, height / 2)) < 0.2f);
 }
 
-TEST_CASE("a field that is zero everywhere stays zero after scaling", "[flow]") {
+TEST_CASE("a field that is zero everywhere stays zero after scaling", "[unit][flow]") {
     // The only texel centre of a 1x1 grid is the origin, where these fields vanish.
     for (FlowKind kind : {FlowKind::Rotation, FlowKind::Saddle, FlowKind::Source}) {
         const FlowField field = gsv::make_flow(kind, 1, 1, 2.0);
@@ -279,7 +279,7 @@ TEST_CASE("a field that is zero everywhere stays zero after scaling", "[flow]") 
     CHECK(all_finite(still));
 }
 
-TEST_CASE("make_flow and FlowField::at refuse bad arguments with one clear line", "[flow]") {
+TEST_CASE("make_flow and FlowField::at refuse bad arguments with one clear line", "[unit][flow]") {
     CHECK(gsv_error_message([] { gsv::make_flow(FlowKind::Rotation, 0, 8, 1.0); }) ==
           "make_flow: width must be 1..8192, got 0");
     CHECK(gsv_error_message([] { gsv::make_flow(FlowKind::Rotation, 8, 9000, 1.0); }) ==
@@ -299,7 +299,7 @@ TEST_CASE("make_flow and FlowField::at refuse bad arguments with one clear line"
     CHECK(gsv_error_message([&] { field.at(0, -1); }) == "FlowField::at: texel (0, -1) is outside the 4x3 field");
 }
 
-TEST_CASE(".flow files are little-endian float32 after a one-line header", "[flow]") {
+TEST_CASE(".flow files are little-endian float32 after a one-line header", "[unit][flow]") {
     TempDir dir;
     FlowField field;
     field.width = 1;
@@ -311,7 +311,7 @@ TEST_CASE(".flow files are little-endian float32 after a one-line header", "[flo
           std::string("GSVFLOW 1 1 1\n\x00\x00\x80\x3f\x00\x00\x00\xc0", 22));
 }
 
-TEST_CASE(".flow files round-trip bit for bit", "[flow]") {
+TEST_CASE(".flow files round-trip bit for bit", "[unit][flow]") {
     TempDir dir;
     FlowField field = gsv::make_flow(FlowKind::Vortices, 37, 23, 1.25, 0.0, 3);
     // Values a text format or a careless conversion would lose.
@@ -327,7 +327,7 @@ TEST_CASE(".flow files round-trip bit for bit", "[flow]") {
     CHECK(std::memcmp(loaded.velocity.data(), field.velocity.data(), field.velocity.size() * sizeof(float)) == 0);
 }
 
-TEST_CASE("load_flow names the file and the fault in one line", "[flow]") {
+TEST_CASE("load_flow names the file and the fault in one line", "[unit][flow]") {
     TempDir dir;
     const auto message = [&](const std::string& name, const std::string& content) {
         const auto path = dir.write(name, content);
@@ -372,7 +372,7 @@ TEST_CASE("load_flow names the file and the fault in one line", "[flow]") {
     CHECK(!contains(message("one_line.flow", "GSVFLOW 1 2 2\n\n\n"), "\n"));
 }
 
-TEST_CASE("save_flow refuses fields load_flow would refuse", "[flow]") {
+TEST_CASE("save_flow refuses fields load_flow would refuse", "[unit][flow]") {
     TempDir dir;
     FlowField field;
     field.width = 2;
@@ -425,7 +425,7 @@ glm::dvec2 street_texel_velocity(int x, int y, int width, int height, double pha
 
 }  // namespace
 
-TEST_CASE("sequences are frames after a four-field header and round-trip bit for bit", "[flow]") {
+TEST_CASE("sequences are frames after a four-field header and round-trip bit for bit", "[unit][flow]") {
     TempDir dir;
     gsv::FlowSequence sequence = numbered_sequence(3, 2, 4);
     sequence.frames[2].velocity[5] = -0.0f;
@@ -457,7 +457,7 @@ TEST_CASE("sequences are frames after a four-field header and round-trip bit for
     CHECK(gsv::load_flow(dir.path("one.flow")).velocity == std::vector<float>{0.25f, 0.5f});
 }
 
-TEST_CASE("one-frame files read both ways, and load_flow refuses a sequence in one line", "[flow]") {
+TEST_CASE("one-frame files read both ways, and load_flow refuses a sequence in one line", "[unit][flow]") {
     TempDir dir;
     const auto single = dir.write("single.flow", "GSVFLOW 1 1 1\n" + le(1.0f) + le(2.0f));
     const auto four = dir.write("four.flow", "GSVFLOW 1 1 1 1\n" + le(1.0f) + le(2.0f));
@@ -473,7 +473,7 @@ TEST_CASE("one-frame files read both ways, and load_flow refuses a sequence in o
     CHECK(gsv::load_flow_sequence(three).frames.size() == 3);
 }
 
-TEST_CASE("load_flow_sequence names the frame and the fault in one line", "[flow]") {
+TEST_CASE("load_flow_sequence names the frame and the fault in one line", "[unit][flow]") {
     TempDir dir;
     const auto message = [&](const std::string& name, const std::string& content) {
         const auto path = dir.write(name, content);
@@ -509,7 +509,7 @@ TEST_CASE("load_flow_sequence names the frame and the fault in one line", "[flow
     CHECK(!contains(message("one_line.flow", header + "\n\n"), "\n"));
 }
 
-TEST_CASE("save_flow_sequence refuses sequences load_flow_sequence would refuse, before writing", "[flow]") {
+TEST_CASE("save_flow_sequence refuses sequences load_flow_sequence would refuse, before writing", "[unit][flow]") {
     TempDir dir;
     const auto refusal = [&](const gsv::FlowSequence& sequence) {
         const std::string message = gsv_error_message([&] { gsv::save_flow_sequence(dir.path("s.flow"), sequence); });
@@ -534,7 +534,7 @@ TEST_CASE("save_flow_sequence refuses sequences load_flow_sequence would refuse,
     CHECK(contains(refusal(huge), "3 frames of 8192x8192 texels need 1610612736 bytes of velocities"));
 }
 
-TEST_CASE("the vortex street repeats after one period and moves within it", "[flow]") {
+TEST_CASE("the vortex street repeats after one period and moves within it", "[unit][flow]") {
     double largest_difference = 0.0;
     for (double phase : {0.0, 0.3, 0.75})
         for (double x = 0.05; x < 2.0; x += 0.1)
@@ -562,7 +562,7 @@ TEST_CASE("the vortex street repeats after one period and moves within it", "[fl
                    "vortex_street_velocity: phase must be finite"));
 }
 
-TEST_CASE("the vortex street is a stream with two rows of opposite vortices about y = 1/2", "[flow]") {
+TEST_CASE("the vortex street is a stream with two rows of opposite vortices about y = 1/2", "[unit][flow]") {
     // Far above and below the street the stream dominates: everything moves right.
     for (double x = 0.0; x <= 2.0; x += 0.05) {
         CHECK(gsv::vortex_street_velocity({x, 0.02}, 0.0).x > 0.9);
@@ -588,7 +588,7 @@ TEST_CASE("the vortex street is a stream with two rows of opposite vortices abou
     CHECK(std::abs(circulation({1.125, 0.5})) < 0.01);
 }
 
-TEST_CASE("make_vortex_street scales every frame by one factor to the requested top speed", "[flow]") {
+TEST_CASE("make_vortex_street scales every frame by one factor to the requested top speed", "[unit][flow]") {
     const int width = 50, height = 30, frames = 5;
     const gsv::FlowSequence street = gsv::make_vortex_street(width, height, frames, 1.5);
     CHECK(street.width == width);
@@ -623,7 +623,7 @@ TEST_CASE("make_vortex_street scales every frame by one factor to the requested 
         }
 }
 
-TEST_CASE("make_double_gyre_sequence is one period of make_flow's double gyre under one scale", "[flow]") {
+TEST_CASE("make_double_gyre_sequence is one period of make_flow's double gyre under one scale", "[unit][flow]") {
     const int width = 64, height = 32, frames = 8;
     const gsv::FlowSequence gyre = gsv::make_double_gyre_sequence(width, height, frames, 2.0);
     REQUIRE(gyre.frames.size() == static_cast<std::size_t>(frames));
@@ -640,7 +640,7 @@ TEST_CASE("make_double_gyre_sequence is one period of make_flow's double gyre un
     }
 }
 
-TEST_CASE("sequence generators refuse bad arguments with one clear line", "[flow]") {
+TEST_CASE("sequence generators refuse bad arguments with one clear line", "[unit][flow]") {
     CHECK(gsv_error_message([] { gsv::make_vortex_street(16, 8, 0, 1.0); }) ==
           "make_vortex_street: frames must be 1..4096, got 0");
     CHECK(gsv_error_message([] { gsv::make_vortex_street(16, 8, 5000, 1.0); }) ==
@@ -658,7 +658,7 @@ TEST_CASE("sequence generators refuse bad arguments with one clear line", "[flow
     for (const FlowField& frame : still.frames) CHECK(all_zero(frame));
 }
 
-TEST_CASE("data/flows/vortex_street.flow is the generator's 128x64, 16-frame street", "[flow]") {
+TEST_CASE("data/flows/vortex_street.flow is the generator's 128x64, 16-frame street", "[unit][flow]") {
     // tests/check_flow_data.sh compares the file with gsv-flow's output byte for byte; this says what it holds.
     const gsv::FlowSequence committed = gsv::load_flow_sequence(committed_flow("vortex_street.flow"));
     CHECK(committed.width == 128);

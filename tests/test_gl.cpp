@@ -120,7 +120,7 @@ TEST_CASE("context: the run holds to the requested version and refuses what it l
     CHECK(ok);
 }
 
-TEST_CASE("context: bad backend, profile and version names are refused with the value named", "[gl]") {
+TEST_CASE("context: bad backend, profile and version names are refused with the value named", "[unit]") {
     CHECK_THROWS_WITH(parse_backend("vulkan"), Catch::Matchers::Contains("'vulkan'"));
     CHECK_THROWS_WITH(parse_profile("es"), Catch::Matchers::Contains("'es'"));
     CHECK_THROWS_WITH(parse_gl_version("5.0"), Catch::Matchers::Contains("out of range"));

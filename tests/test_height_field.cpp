@@ -75,7 +75,7 @@ double worst_angle(const HeightField& field, const ProceduralTerrain& terrain, i
 // ---------------------------------------------------------------------------------------------------------
 // The .height file
 
-TEST_CASE("height_field: save and load round-trip every bit, sizes and spacings", "[terrain]") {
+TEST_CASE("height_field: save and load round-trip every bit, sizes and spacings", "[unit][terrain]") {
     TempDir dir;
     const HeightField field = small_field();
     const fs::path path = dir.path("small.height");
@@ -97,7 +97,7 @@ TEST_CASE("height_field: save and load round-trip every bit, sizes and spacings"
     CHECK(gsv::test::read_text(dir.path("again.height")) == bytes);
 }
 
-TEST_CASE("height_field: at, min, max and sample positions, y counted from the south row", "[terrain]") {
+TEST_CASE("height_field: at, min, max and sample positions, y counted from the south row", "[unit][terrain]") {
     const HeightField field = small_field();
     CHECK(field.at(0, 0) == -1437.0f);
     CHECK(field.at(2, 1) == 8848.86f);
@@ -112,7 +112,7 @@ TEST_CASE("height_field: at, min, max and sample positions, y counted from the s
     CHECK(contains(gsv_error_message([&] { (void)gsv::sample_position(field, 0, -1); }), "outside"));
 }
 
-TEST_CASE("height_field: the loader refuses a bad file with one line naming the file and the fault", "[terrain]") {
+TEST_CASE("height_field: the loader refuses a bad file with one line naming the file and the fault", "[unit][terrain]") {
     TempDir dir;
     const std::string heights_2x2 = le_floats({1, 2, 3, 4});
     struct Case {
@@ -166,7 +166,7 @@ TEST_CASE("height_field: the loader refuses a bad file with one line naming the 
     CHECK(contains(gsv_error_message([&] { (void)gsv::load_height_field(dir.path()); }), "is a directory"));
 }
 
-TEST_CASE("height_field: save refuses what the loader would refuse, before creating the file", "[terrain]") {
+TEST_CASE("height_field: save refuses what the loader would refuse, before creating the file", "[unit][terrain]") {
     TempDir dir;
     const fs::path path = dir.path("refused.height");
     const auto refusal = [&](const HeightField& field) {
@@ -195,7 +195,7 @@ TEST_CASE("height_field: save refuses what the loader would refuse, before creat
 // ---------------------------------------------------------------------------------------------------------
 // The real elevation models in data/terrain (scripts/convert-dem.py; sources in data/README.md)
 
-TEST_CASE("height_field: data/terrain/jacksboro_fault.height loads, south row first, in metres", "[terrain]") {
+TEST_CASE("height_field: data/terrain/jacksboro_fault.height loads, south row first, in metres", "[unit][terrain]") {
     const fs::path path = source_root() / "data/terrain/jacksboro_fault.height";
     const HeightField field = gsv::load_height_field(path);
     WARN("jacksboro_fault: " << field.width << "x" << field.height << " samples, " << field.dx_m << " x "
@@ -223,7 +223,7 @@ TEST_CASE("height_field: data/terrain/jacksboro_fault.height loads, south row fi
 }
 
 TEST_CASE("height_field: data/terrain/topobathy.height loads, sea to the south-west, summits to the north-east",
-          "[terrain]") {
+          "[unit][terrain]") {
     const fs::path path = source_root() / "data/terrain/topobathy.height";
     const HeightField field = gsv::load_height_field(path);
     WARN("topobathy: " << field.width << "x" << field.height << " samples, " << field.dx_m << " x " << field.dy_m
@@ -261,7 +261,7 @@ TEST_CASE("height_field: data/terrain/topobathy.height loads, sea to the south-w
 // ---------------------------------------------------------------------------------------------------------
 // Procedural terrains and their exact gradients
 
-TEST_CASE("terrain: Franke and sin-cos gradients match central differences to 1e-8", "[terrain]") {
+TEST_CASE("terrain: Franke and sin-cos gradients match central differences to 1e-8", "[unit][terrain]") {
     struct Function {
         const char* name;
         double (*value)(double, double);
@@ -290,7 +290,7 @@ TEST_CASE("terrain: Franke and sin-cos gradients match central differences to 1e
     CHECK(gsv::sin_cos(0.125, 0.0) == Approx(1.0));
 }
 
-TEST_CASE("terrain: slopes in metres per metre follow the chain rule of extent and amplitude", "[terrain]") {
+TEST_CASE("terrain: slopes in metres per metre follow the chain rule of extent and amplitude", "[unit][terrain]") {
     for (TerrainKind kind : {TerrainKind::Franke, TerrainKind::SinCos}) {
         const ProceduralTerrain terrain{kind, 2500.0, 400.0};
         const double h = 1e-6 * terrain.extent_m;
@@ -312,7 +312,7 @@ TEST_CASE("terrain: slopes in metres per metre follow the chain rule of extent a
                    "extent 0.000000 m must be positive and finite"));
 }
 
-TEST_CASE("terrain: make_procedural samples cell centres over the square", "[terrain]") {
+TEST_CASE("terrain: make_procedural samples cell centres over the square", "[unit][terrain]") {
     const ProceduralTerrain terrain{TerrainKind::Franke, 1000.0, 250.0};
     const HeightField field = gsv::make_procedural(terrain, 40, 25);
     CHECK(field.dx_m == 25.0);
@@ -327,7 +327,7 @@ TEST_CASE("terrain: make_procedural samples cell centres over the square", "[ter
 // ---------------------------------------------------------------------------------------------------------
 // Finite-difference normals, the CPU reference of lab 04's shader
 
-TEST_CASE("terrain normals: flat ground gives exactly up, at every sample, step and exaggeration", "[terrain]") {
+TEST_CASE("terrain normals: flat ground gives exactly up, at every sample, step and exaggeration", "[unit][terrain]") {
     HeightField level = gsv::make_procedural({TerrainKind::Flat, 100.0, 50.0}, 7, 5);
     for (float h : level.heights) REQUIRE(h == 0.0f);
     HeightField plateau = level;
@@ -348,7 +348,7 @@ TEST_CASE("terrain normals: flat ground gives exactly up, at every sample, step 
 }
 
 TEST_CASE("terrain normals: the slope form is the normalised cross product of the tangents, oriented up",
-          "[terrain]") {
+          "[unit][terrain]") {
     const HeightField field = gsv::make_procedural({TerrainKind::SinCos, 900.0, 120.0}, 30, 20);
     for (int step : {1, 2})
         for (const glm::ivec2 s : {glm::ivec2(5, 7), glm::ivec2(17, 11), glm::ivec2(2, 2)})
@@ -364,7 +364,7 @@ TEST_CASE("terrain normals: the slope form is the normalised cross product of th
 }
 
 TEST_CASE("terrain normals: central differences inside converge at second order to the exact normals",
-          "[terrain]") {
+          "[unit][terrain]") {
     // A non-square grid over a square: dx_m != dy_m, so a swapped spacing would show.
     for (TerrainKind kind : {TerrainKind::Franke, TerrainKind::SinCos}) {
         const ProceduralTerrain terrain{kind, 1000.0, 200.0};
@@ -383,7 +383,7 @@ TEST_CASE("terrain normals: central differences inside converge at second order 
 }
 
 TEST_CASE("terrain normals: one-sided differences at the border converge at first order, clamped ones not",
-          "[terrain]") {
+          "[unit][terrain]") {
     for (TerrainKind kind : {TerrainKind::Franke, TerrainKind::SinCos}) {
         const ProceduralTerrain terrain{kind, 1000.0, 200.0};
         const HeightField field = gsv::make_procedural(terrain, 512, 384);
@@ -421,7 +421,7 @@ TEST_CASE("terrain normals: one-sided differences at the border converge at firs
     }
 }
 
-TEST_CASE("terrain normals: a huge exaggeration gives a finite unit normal that still points up", "[terrain]") {
+TEST_CASE("terrain normals: a huge exaggeration gives a finite unit normal that still points up", "[unit][terrain]") {
     const HeightField field = gsv::make_procedural({TerrainKind::Franke, 1000.0, 200.0}, 64, 48);
     for (double e : {1e6, 1e300})
         for (int y = 0; y < field.height; y += 7)
@@ -438,7 +438,7 @@ TEST_CASE("terrain normals: a huge exaggeration gives a finite unit normal that 
     CHECK(glm::length(exact) == Approx(1.0).margin(1e-12));
 }
 
-TEST_CASE("terrain normals: 8-bit heights make terraces whose normals are far off the float ones", "[terrain]") {
+TEST_CASE("terrain normals: 8-bit heights make terraces whose normals are far off the float ones", "[unit][terrain]") {
     const ProceduralTerrain terrain{TerrainKind::Franke, 1000.0, 200.0};
     const HeightField field = gsv::make_procedural(terrain, 256, 256);
     // What an 8-bit height texture (GL_R8) holds: 256 levels from the lowest height to the highest.
@@ -470,7 +470,7 @@ TEST_CASE("terrain normals: 8-bit heights make terraces whose normals are far of
     CHECK(exact_float[2] < 0.01);
 }
 
-TEST_CASE("terrain normals: bad arguments are refused with one line", "[terrain]") {
+TEST_CASE("terrain normals: bad arguments are refused with one line", "[unit][terrain]") {
     const HeightField field = gsv::make_procedural({TerrainKind::SinCos, 100.0, 10.0}, 8, 4);
     CHECK(gsv_error_message([&] { (void)gsv::finite_difference_normal(field, 8, 0, 1.0, 1); }) ==
           "finite_difference_normal: sample (8, 0) is outside the 8x4 grid");

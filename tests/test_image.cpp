@@ -87,7 +87,7 @@ gsv::Image gray_image(GrayFormula formula, long* pixel_sum = nullptr) {
 // ---------------------------------------------------------------------------------------------
 // Image, PNG files, float conversion
 
-TEST_CASE("image: a new image is transparent black and at() addresses rows from the top") {
+TEST_CASE("image: a new image is transparent black and at() addresses rows from the top", "[unit]") {
     gsv::Image image(3, 2);
     CHECK(image.rgba.size() == 3 * 2 * 4);
     CHECK(!image.empty());
@@ -98,7 +98,7 @@ TEST_CASE("image: a new image is transparent black and at() addresses rows from 
     CHECK_THROWS_AS(gsv::Image(-1, 4), gsv::Error);
 }
 
-TEST_CASE("image: PNG round trip keeps every RGBA byte and creates parent directories") {
+TEST_CASE("image: PNG round trip keeps every RGBA byte and creates parent directories", "[unit]") {
     gsv::test::TempDir dir;
     const fs::path file = dir.path() / "nested" / "deeper" / "gradient.png";
     const gsv::Image original = gradient(37, 23);
@@ -110,7 +110,7 @@ TEST_CASE("image: PNG round trip keeps every RGBA byte and creates parent direct
     CHECK(loaded.rgba == original.rgba);
 }
 
-TEST_CASE("image: reading a missing PNG is a gsv::Error naming the path") {
+TEST_CASE("image: reading a missing PNG is a gsv::Error naming the path", "[unit]") {
     gsv::test::TempDir dir;
     const fs::path missing = dir.path() / "no_such_file.png";
     const std::string message = gsv::test::gsv_error_message([&] { gsv::read_png(missing); });
@@ -118,7 +118,7 @@ TEST_CASE("image: reading a missing PNG is a gsv::Error naming the path") {
     CHECK(!contains(message, "\n"));
 }
 
-TEST_CASE("image: reading a truncated or corrupt PNG is a gsv::Error naming the path") {
+TEST_CASE("image: reading a truncated or corrupt PNG is a gsv::Error naming the path", "[unit]") {
     gsv::test::TempDir dir;
     const fs::path truncated = dir.path() / "truncated.png";
     gsv::write_png(truncated, gradient(64, 64));
@@ -137,7 +137,7 @@ TEST_CASE("image: reading a truncated or corrupt PNG is a gsv::Error naming the 
     CHECK(contains(message, "cannot read PNG '" + empty.string() + "': "));
 }
 
-TEST_CASE("image: writing where a directory cannot be made is a gsv::Error naming the path") {
+TEST_CASE("image: writing where a directory cannot be made is a gsv::Error naming the path", "[unit]") {
     gsv::test::TempDir dir;
     const fs::path blocker = dir.path() / "a_file";
     std::ofstream(blocker) << "x";
@@ -149,7 +149,7 @@ TEST_CASE("image: writing where a directory cannot be made is a gsv::Error namin
                    "e.png"));
 }
 
-TEST_CASE("image: to_rgba8 clamps, rounds and shows NaN as magenta") {
+TEST_CASE("image: to_rgba8 clamps, rounds and shows NaN as magenta", "[unit]") {
     gsv::ImageF image(4, 1);
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const float inf = std::numeric_limits<float>::infinity();
@@ -175,7 +175,7 @@ TEST_CASE("image: to_rgba8 clamps, rounds and shows NaN as magenta") {
 // ---------------------------------------------------------------------------------------------
 // Comparison
 
-TEST_CASE("image: identical images compare equal") {
+TEST_CASE("image: identical images compare equal", "[unit]") {
     const gsv::Image a = gradient(20, 15);
     const gsv::ImageDiff diff = gsv::compare_images(a, a, {});
     CHECK(!diff.size_mismatch);
@@ -190,7 +190,7 @@ TEST_CASE("image: identical images compare equal") {
     CHECK(diff.summary() == "max diff 0, 0 of 300 px differ (0.00%), PSNR inf dB, SSIM 1.000");
 }
 
-TEST_CASE("image: one changed pixel is counted, boxed and measured") {
+TEST_CASE("image: one changed pixel is counted, boxed and measured", "[unit]") {
     const gsv::Image expected = filled(10, 10, 100, 100, 100, 255);
     gsv::Image actual = expected;
     actual.at(3, 4)[0] = 130;  // R off by 30
@@ -217,7 +217,7 @@ TEST_CASE("image: one changed pixel is counted, boxed and measured") {
     CHECK(gsv::compare_images(actual, expected, {30, 0.0}).differing_pixels == 0);
 }
 
-TEST_CASE("image: an alpha-only difference counts as a differing pixel but not in RMSE") {
+TEST_CASE("image: an alpha-only difference counts as a differing pixel but not in RMSE", "[unit]") {
     const gsv::Image expected = filled(4, 4, 10, 20, 30, 255);
     gsv::Image actual = expected;
     actual.at(0, 0)[3] = 0;
@@ -228,14 +228,14 @@ TEST_CASE("image: an alpha-only difference counts as a differing pixel but not i
     CHECK(!diff.within({254, 0.0}));
 }
 
-TEST_CASE("image: a size mismatch fails whatever the tolerance") {
+TEST_CASE("image: a size mismatch fails whatever the tolerance", "[unit]") {
     const gsv::ImageDiff diff = gsv::compare_images(gradient(8, 6), gradient(6, 8), {255, 1.0});
     CHECK(diff.size_mismatch);
     CHECK(!diff.within({255, 1.0}));
     CHECK(diff.summary() == "size mismatch: actual 8x6, expected 6x8");
 }
 
-TEST_CASE("image: exactly the pixel budget passes and one more fails") {
+TEST_CASE("image: exactly the pixel budget passes and one more fails", "[unit]") {
     const gsv::Image expected = filled(10, 10, 0, 0, 0, 255);
     const auto with_changed_pixels = [&](int count) {
         gsv::Image actual = expected;
@@ -257,7 +257,7 @@ TEST_CASE("image: exactly the pixel budget passes and one more fails") {
     CHECK(over_budget.diff_y1 == 2);
 }
 
-TEST_CASE("image: the difference map shows every pixel over the tolerance brightly, however small the excess") {
+TEST_CASE("image: the difference map shows every pixel over the tolerance brightly, however small the excess", "[unit]") {
     const gsv::Image expected = filled(5, 1, 90, 90, 90, 255);
     gsv::Image actual = expected;
     actual.at(1, 0)[0] = 92;   // within a tolerance of 2: the expected image, dimmed
@@ -276,7 +276,7 @@ TEST_CASE("image: the difference map shows every pixel over the tolerance bright
     CHECK_THROWS_AS(gsv::difference_heatmap(gradient(2, 2), gradient(3, 2), 0), gsv::Error);
 }
 
-TEST_CASE("image: is_blank is true only when every pixel is the same") {
+TEST_CASE("image: is_blank is true only when every pixel is the same", "[unit]") {
     gsv::Image image = filled(6, 5, 12, 34, 56, 255);
     CHECK(gsv::is_blank(image));
     image.at(5, 4)[3] = 254;
@@ -284,7 +284,7 @@ TEST_CASE("image: is_blank is true only when every pixel is the same") {
     CHECK(gsv::is_blank(gsv::Image()));
 }
 
-TEST_CASE("image: float_stats counts NaN and Inf and ranges over finite values") {
+TEST_CASE("image: float_stats counts NaN and Inf and ranges over finite values", "[unit]") {
     gsv::ImageF image(2, 2);
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const float inf = std::numeric_limits<float>::infinity();
@@ -315,7 +315,7 @@ TEST_CASE("image: float_stats counts NaN and Inf and ranges over finite values")
 //                                         use_sample_covariance=False, data_range=255)
 // skimage filters with truncate=3.5 (an 11-tap window) and averages the SSIM map after cropping
 // 5 pixels from each side. The pixel sums check that the images here are the ones it was given.
-TEST_CASE("image: ssim_luma matches scikit-image on gray images") {
+TEST_CASE("image: ssim_luma matches scikit-image on gray images", "[unit]") {
     long sum = 0;
     const gsv::Image base = gray_image(ssim_base, &sum);
     CHECK(sum == 389376);
@@ -336,7 +336,7 @@ TEST_CASE("image: ssim_luma matches scikit-image on gray images") {
     CHECK(gsv::ssim_luma(noisy, base) == Approx(gsv::ssim_luma(base, noisy)).margin(1e-12));
 }
 
-TEST_CASE("image: ssim_luma of identical images is 1") {
+TEST_CASE("image: ssim_luma of identical images is 1", "[unit]") {
     const gsv::Image base = gray_image(ssim_base);
     CHECK(gsv::ssim_luma(base, base) == Approx(1.0).margin(1e-12));
     const gsv::Image color = gradient(40, 30);

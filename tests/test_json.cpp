@@ -21,7 +21,7 @@ std::string parse_error(const std::string& text) {
 
 }  // namespace
 
-TEST_CASE("json: parse, dump and parse again gives the same value") {
+TEST_CASE("json: parse, dump and parse again gives the same value", "[unit]") {
     const std::string text = R"({
   "name": "phong",
   "size": [256, 128],
@@ -49,7 +49,7 @@ TEST_CASE("json: parse, dump and parse again gives the same value") {
     CHECK(gsv::parse_json(pretty, "dump").dump() == pretty);
 }
 
-TEST_CASE("json: dump keeps key order and formats nested values") {
+TEST_CASE("json: dump keeps key order and formats nested values", "[unit]") {
     gsv::Json report;
     report["zeta"] = 1;
     report["alpha"] = "two";
@@ -74,7 +74,7 @@ TEST_CASE("json: dump keeps key order and formats nested values") {
     CHECK(report.dump(4).find("\n        3,") != std::string::npos);
 }
 
-TEST_CASE("json: numbers print as integers when integral and null when not finite") {
+TEST_CASE("json: numbers print as integers when integral and null when not finite", "[unit]") {
     CHECK(gsv::Json(3.0).dump() == "3");
     CHECK(gsv::Json(-42).dump() == "-42");
     CHECK(gsv::Json(-0.0).dump() == "0");
@@ -94,7 +94,7 @@ TEST_CASE("json: numbers print as integers when integral and null when not finit
     CHECK(gsv::parse_json("-0.5E+2", "n").as_number() == -50);
 }
 
-TEST_CASE("json: syntax errors name source, line and column") {
+TEST_CASE("json: syntax errors name source, line and column", "[unit]") {
     struct Case {
         const char* text;
         const char* message;
@@ -140,7 +140,7 @@ TEST_CASE("json: syntax errors name source, line and column") {
     CHECK(parse_error(deep) == "t.json:1:257: nesting deeper than 256");
 }
 
-TEST_CASE("json: string escapes decode and encode") {
+TEST_CASE("json: string escapes decode and encode", "[unit]") {
     const gsv::Json parsed =
         gsv::parse_json(R"("q\" b\\ s\/ \b\f\n\r\t \u0001\u001f end")", "s");
     CHECK(parsed.as_string() == "q\" b\\ s/ \b\f\n\r\t \x01\x1f end");
@@ -150,7 +150,7 @@ TEST_CASE("json: string escapes decode and encode") {
     CHECK(gsv::parse_json(R"("\u0000")", "s").as_string() == std::string(1, '\0'));
 }
 
-TEST_CASE("json: unicode escapes become UTF-8, surrogate pairs included") {
+TEST_CASE("json: unicode escapes become UTF-8, surrogate pairs included", "[unit]") {
     CHECK(gsv::parse_json(R"("\u0041")", "u").as_string() == "A");
     CHECK(gsv::parse_json(R"("\u00e9")", "u").as_string() == "\xC3\xA9");          // e acute
     CHECK(gsv::parse_json(R"("\u20AC")", "u").as_string() == "\xE2\x82\xAC");      // euro sign
@@ -162,7 +162,7 @@ TEST_CASE("json: unicode escapes become UTF-8, surrogate pairs included") {
     CHECK(raw.dump() == "\"caf\xC3\xA9 \xE2\x82\xAC\"");
 }
 
-TEST_CASE("json: required members report the key path and position") {
+TEST_CASE("json: required members report the key path and position", "[unit]") {
     const std::string text =
         "{\n"
         "  \"name\": \"lit\",\n"
@@ -199,7 +199,7 @@ TEST_CASE("json: required members report the key path and position") {
     CHECK(root.array_at("cases").at(1).int_at("size") == 3);
 }
 
-TEST_CASE("json: optional members fall back only when absent or null") {
+TEST_CASE("json: optional members fall back only when absent or null", "[unit]") {
     const gsv::Json root = gsv::parse_json(R"({"n": 4, "s": "x", "b": true, "z": null})", "o.json");
     CHECK(root.number_or("n", 1) == 4);
     CHECK(root.number_or("missing", 1.5) == 1.5);
@@ -211,7 +211,7 @@ TEST_CASE("json: optional members fall back only when absent or null") {
           "o.json:1:15: 's' must be a boolean, not a string");
 }
 
-TEST_CASE("json: values built in code report errors without a position") {
+TEST_CASE("json: values built in code report errors without a position", "[unit]") {
     gsv::Json built;
     built["size"] = "big";
     CHECK(built.source_name().empty());
@@ -222,7 +222,7 @@ TEST_CASE("json: values built in code report errors without a position") {
     CHECK(gsv::test::gsv_error_message([&] { text.push_back(1); }) == "the top-level value must be an array, not a string");
 }
 
-TEST_CASE("json: equality ignores object key order but not array order") {
+TEST_CASE("json: equality ignores object key order but not array order", "[unit]") {
     CHECK(gsv::parse_json(R"({"a": 1, "b": [1, 2]})", "x") ==
           gsv::parse_json(R"({"b": [1, 2], "a": 1})", "y"));
     CHECK(gsv::parse_json("[1, 2]", "x") != gsv::parse_json("[2, 1]", "x"));
@@ -230,7 +230,7 @@ TEST_CASE("json: equality ignores object key order but not array order") {
     CHECK(gsv::parse_json(R"({"a": 1})", "x") != gsv::parse_json(R"({"a": 1, "b": 2})", "x"));
 }
 
-TEST_CASE("json: read_json_file names a missing file and uses the path as source name") {
+TEST_CASE("json: read_json_file names a missing file and uses the path as source name", "[unit]") {
     std::random_device entropy;
     const fs::path dir = fs::temp_directory_path() / ("gsv_test_json_" + std::to_string(entropy()));
     fs::create_directories(dir);

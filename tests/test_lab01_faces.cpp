@@ -25,7 +25,7 @@ int green_pixels(const Image& image) {
 
 }  // namespace
 
-TEST_CASE("lab01: no back face wins a depth tie along a closed model's silhouette, and a cut still shows its back faces", "[lab01]") {
+TEST_CASE("lab01: no back face wins a depth tie along a closed model's silhouette, and a cut still shows its back faces", "[lab][lab01]") {
     namespace fs = std::filesystem;
     test::TempDir dir;
     const fs::path root = dir.path("kit");

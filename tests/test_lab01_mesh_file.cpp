@@ -9,7 +9,7 @@
 namespace fs = std::filesystem;
 using namespace gsv;
 
-TEST_CASE("lab01: model=file draws any OBJ, and a missing or broken one is named in one line", "[lab01]") {
+TEST_CASE("lab01: model=file draws any OBJ, and a missing or broken one is named in one line", "[lab][lab01]") {
     test::TempDir dir;
     // Two quads (one folded) with no normals: the reader computes them; the camera frames it like the sphere.
     const fs::path quads = dir.write("quads.obj", "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nv 0 -1 -1\nv 0 1 -1\n"

@@ -377,29 +377,29 @@ Comparison check_against_reference(const std::vector<std::string>& overrides) {
 
 }  // namespace
 
-TEST_CASE("lab01 reference: default Gooch sphere matches the CPU ray tracer") {
+TEST_CASE("lab01 reference: default Gooch sphere matches the CPU ray tracer", "[unit]") {
     check_against_reference({});
 }
 
-TEST_CASE("lab01 reference: Phong sphere matches the CPU ray tracer") {
+TEST_CASE("lab01 reference: Phong sphere matches the CPU ray tracer", "[unit]") {
     check_against_reference({"shading=phong"});
 }
 
-TEST_CASE("lab01 reference: non-uniform scale lights with inverse-transpose normals") {
+TEST_CASE("lab01 reference: non-uniform scale lights with inverse-transpose normals", "[unit]") {
     check_against_reference({"scale=1.3,0.6,1"});
 }
 
-TEST_CASE("lab01 reference: uniform scale renormalizes the shortened normals") {
+TEST_CASE("lab01 reference: uniform scale renormalizes the shortened normals", "[unit]") {
     // The normal matrix of a uniform scale by 1.5 shortens normals to 2/3: unrenormalized, diffuse
     // and specular both come out visibly darker.
     check_against_reference({"scale=1.5,1.5,1.5", "shading=phong"});
 }
 
-TEST_CASE("lab01 reference: cut-open sphere lights its back faces from their own side") {
+TEST_CASE("lab01 reference: cut-open sphere lights its back faces from their own side", "[unit]") {
     check_against_reference({"cut=0.25", "camera_yaw=70"});
 }
 
-TEST_CASE("lab01 reference: a light touching the surface or at the eye gives no NaN") {
+TEST_CASE("lab01 reference: a light touching the surface or at the eye gives no NaN", "[unit]") {
     SECTION("light on the surface point that faces the camera") {
         // The eye sits on +z (yaw 0, pitch 0), so the unit sphere's point (0,0,1) faces it.
         check_against_reference({"camera_yaw=0", "camera_pitch=0", "light_position=0,0,1"});
@@ -410,7 +410,7 @@ TEST_CASE("lab01 reference: a light touching the surface or at the eye gives no 
     }
 }
 
-TEST_CASE("lab01 reference: Gooch is warm towards the light and cool away from it") {
+TEST_CASE("lab01 reference: Gooch is warm towards the light and cool away from it", "[unit]") {
     const Render render = render_solution({});
     const LabParams params = read_params(render.report);
     REQUIRE(params.shading == "gooch");
@@ -437,7 +437,7 @@ TEST_CASE("lab01 reference: Gooch is warm towards the light and cool away from i
     CHECK(unlit_mean < lit_mean - 0.3 * 255.0);
 }
 
-TEST_CASE("lab01 reference: the comparison notices a light moved by half a unit") {
+TEST_CASE("lab01 reference: the comparison notices a light moved by half a unit", "[unit]") {
     // Not vacuous: the reference for a slightly different light must disagree with the rendered image.
     const Render render = render_solution({});
     LabParams params = read_params(render.report);

@@ -368,11 +368,11 @@ void copy_of_lab02(const fs::path& root) {
 
 // ---------------------------------------------------------------------------------------------
 
-TEST_CASE("lab02 reference: the rotation, Euler steps, matches the CPU LIC", "[lab02]") {
+TEST_CASE("lab02 reference: the rotation, Euler steps, matches the CPU LIC", "[lab][lab02]") {
     check_against_reference({"field=rotation", "length=25"});
 }
 
-TEST_CASE("lab02 reference: a source's streamlines leave the field, and samples outside are not counted", "[lab02]") {
+TEST_CASE("lab02 reference: a source's streamlines leave the field, and samples outside are not counted", "[lab][lab02]") {
     const Checked c = check_against_reference({"field=source", "length=40"});
     // The case is a border case: most streamlines end early, and those pixels agree as well as the rest.
     long left = 0;
@@ -388,16 +388,16 @@ TEST_CASE("lab02 reference: a source's streamlines leave the field, and samples 
     CHECK(corner.count > c.params.length);
 }
 
-TEST_CASE("lab02 reference: the saddle and the double gyre match the CPU LIC", "[lab02]") {
+TEST_CASE("lab02 reference: the saddle and the double gyre match the CPU LIC", "[lab][lab02]") {
     SECTION("saddle") { check_against_reference({"field=saddle"}); }
     SECTION("double gyre") { check_against_reference({"field=double_gyre", "time=2.5"}); }
 }
 
-TEST_CASE("lab02 reference: midpoint steps at length 80 match the CPU LIC", "[lab02]") {
+TEST_CASE("lab02 reference: midpoint steps at length 80 match the CPU LIC", "[lab][lab02]") {
     check_against_reference({"field=rotation", "step=midpoint", "length=80"});
 }
 
-TEST_CASE("lab02 reference: normalised steps through the source's zero give no NaN and match", "[lab02]") {
+TEST_CASE("lab02 reference: normalised steps through the source's zero give no NaN and match", "[lab][lab02]") {
     // At the centre the field vanishes: safe_normalize must stay put there instead of dividing by zero.
     // On an even grid the zero lies between four texels, and streamlines flowing into it (backwards)
     // hop around it; on an odd grid it is the middle texel itself, exactly 0, under a pixel centre.
@@ -428,7 +428,7 @@ TEST_CASE("lab02 reference: normalised steps through the source's zero give no N
     }
 }
 
-TEST_CASE("lab02 reference: a field of zeros leaves the noise itself, with no NaN", "[lab02]") {
+TEST_CASE("lab02 reference: a field of zeros leaves the noise itself, with no NaN", "[lab][lab02]") {
     // speed=0 scales every velocity to exactly 0: every step stays on the pixel's centre, so each of the
     // 2 length + 1 samples is the pixel's own noise texel and the average is that texel.
     for (const char* normalized : {"normalized=off", "normalized=on"}) {
@@ -442,7 +442,7 @@ TEST_CASE("lab02 reference: a field of zeros leaves the noise itself, with no Na
     }
 }
 
-TEST_CASE("lab02 reference: a tiny velocity neither divides by zero nor moves the samples", "[lab02]") {
+TEST_CASE("lab02 reference: a tiny velocity neither divides by zero nor moves the samples", "[lab][lab02]") {
     SECTION("Euler steps of a millionth of a texel") {
         // 25 steps each way move a sample by at most 2.5e-5 texels: every pixel is its own noise texel.
         const Checked c = check_against_reference({"field=rotation", "speed=0.000001"});
@@ -462,7 +462,7 @@ TEST_CASE("lab02 reference: a tiny velocity neither divides by zero nor moves th
 
 TEST_CASE("lab02 reference: the comparison rejects a backward loop that steps forward, samples past the border, "
           "Euler posing as midpoint, and normalisation ignored",
-          "[lab02]") {
+          "[lab][lab02]") {
     // Each broken copy differs from the solution by one line; rendered, it must fall outside the bound
     // that the solution meets.
     struct Broken {
@@ -500,7 +500,7 @@ TEST_CASE("lab02 reference: the comparison rejects a backward loop that steps fo
     }
 }
 
-TEST_CASE("lab02 reference: midpoint steps keep the rotation's circles closed, Euler spirals out", "[lab02]") {
+TEST_CASE("lab02 reference: midpoint steps keep the rotation's circles closed, Euler spirals out", "[lab][lab02]") {
     // One full turn on the lab's own rotation texture (96x96, speed 1), in double: bilinear filtering
     // reproduces the linear field (-y, x) exactly inside the texture, so what remains is the step's own
     // error. Euler's factor |1 + i w| = sqrt(1 + w^2) per step grows the radius by about pi w per turn

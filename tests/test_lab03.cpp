@@ -130,7 +130,7 @@ struct Probe {
 
 }  // namespace
 
-TEST_CASE("lab03: sampling slice k of the array returns exactly slice k, at every playhead that rounds to it", "[lab03]") {
+TEST_CASE("lab03: sampling slice k of the array returns exactly slice k, at every playhead that rounds to it", "[lab][lab03]") {
     Probe probe;
     for (const std::string wrap : {"repeat", "clamp"}) {
         for (int k = 0; k < probe.slices; ++k) {
@@ -150,7 +150,7 @@ TEST_CASE("lab03: sampling slice k of the array returns exactly slice k, at ever
     }
 }
 
-TEST_CASE("lab03: the time axis wraps on a periodic flow and holds on a clamped one", "[lab03]") {
+TEST_CASE("lab03: the time axis wraps on a periodic flow and holds on a clamped one", "[lab][lab03]") {
     Probe probe;
     const int last = probe.slices - 1;
     // s = T - 0.4: nearer slice 0 (one period on) than slice T - 1 when the axis wraps; the last slice otherwise.
@@ -170,7 +170,7 @@ TEST_CASE("lab03: the time axis wraps on a periodic flow and holds on a clamped 
     CHECK(probe.sample("array", "linear", "clamp", 9.99f)[0] == slice(last));
 }
 
-TEST_CASE("lab03: separate textures sample exactly what the array does, a 3D texture at slice centres nearly so", "[lab03]") {
+TEST_CASE("lab03: separate textures sample exactly what the array does, a 3D texture at slice centres nearly so", "[lab][lab03]") {
     Probe probe;
     double worst_volume = 0, worst_volume_linear = 0, worst_array_linear = 0;
     for (double time : {0.0, 1.3, 4.99, 7.2, 9.7}) {
@@ -191,7 +191,7 @@ TEST_CASE("lab03: separate textures sample exactly what the array does, a 3D tex
     CHECK(worst_volume_linear < 1e-2);
 }
 
-TEST_CASE("lab03: a 3D texture read between slice centres bleeds, at r = 0 REPEAT mixes in the last slice", "[lab03]") {
+TEST_CASE("lab03: a 3D texture read between slice centres bleeds, at r = 0 REPEAT mixes in the last slice", "[lab][lab03]") {
     // What the volume TODO guards against, measured with the kit's own 3D texture: the neighbour's share
     // at r = k / T is one half.
     auto context = test::headless_context();
@@ -224,7 +224,7 @@ TEST_CASE("lab03: a 3D texture read between slice centres bleeds, at r = 0 REPEA
     }
 }
 
-TEST_CASE("lab03: one slice is a steady flow, the end of a periodic axis is its start", "[lab03]") {
+TEST_CASE("lab03: one slice is a steady flow, the end of a periodic axis is its start", "[lab][lab03]") {
     test::TempDir dir;
     const auto a = test::render("lab03_solution", {"slices=1", "time=0"}, dir.path(), "one-at-0");
     const auto b = test::render("lab03_solution", {"slices=1", "time=6.3"}, dir.path(), "one-at-6");
@@ -245,7 +245,7 @@ TEST_CASE("lab03: one slice is a steady flow, the end of a periodic axis is its 
     CHECK(read_png(held.png).rgba == read_png(last.png).rgba);
 }
 
-TEST_CASE("lab03: more slices than a storage can hold stop with one line naming the GL limit, status 3", "[lab03]") {
+TEST_CASE("lab03: more slices than a storage can hold stop with one line naming the GL limit, status 3", "[lab][lab03]") {
     test::TempDir dir;
     struct Limit {
         std::vector<std::string> settings;
@@ -266,7 +266,7 @@ TEST_CASE("lab03: more slices than a storage can hold stop with one line naming 
     CHECK(huge.process.output.find("MiB of flow") != std::string::npos);
 }
 
-TEST_CASE("labs 02 and 03: a missing or corrupt field file gives one line naming the file, status 1", "[lab03][lab02]") {
+TEST_CASE("labs 02 and 03: a missing or corrupt field file gives one line naming the file, status 1", "[lab][lab03][lab02]") {
     test::TempDir dir;
     const fs::path corrupt = dir.write("corrupt.flow", "GSVFLOW 1 4 4 3\nnot enough bytes");
     const fs::path not_flow = dir.write("photo.flow", "\x89PNG\r\n");
@@ -280,7 +280,7 @@ TEST_CASE("labs 02 and 03: a missing or corrupt field file gives one line naming
         }
 }
 
-TEST_CASE("lab03: the starter renders a clear 'not done' image until the array lookup is written", "[lab03]") {
+TEST_CASE("lab03: the starter renders a clear 'not done' image until the array lookup is written", "[lab][lab03]") {
     test::TempDir dir;
     const auto run = test::render("lab03", {}, dir.path(), "starter");
     INFO(run.process.output);
@@ -289,7 +289,7 @@ TEST_CASE("lab03: the starter renders a clear 'not done' image until the array l
     CHECK(test::not_done_pixels(image) == image.width * image.height);
 }
 
-TEST_CASE("lab03: animate writes the period as PNG frames and one looping APNG, frame 0 the render at time 0", "[lab03]") {
+TEST_CASE("lab03: animate writes the period as PNG frames and one looping APNG, frame 0 the render at time 0", "[lab][lab03]") {
     test::TempDir dir;
     const fs::path out = dir.path("anim");
     const auto run = test::run_lab("lab03_solution", {"animate", "--size", "64x32", "--count", "4", "--out-dir", out.string()}, dir.path());
@@ -315,7 +315,7 @@ TEST_CASE("lab03: animate writes the period as PNG frames and one looping APNG, 
     CHECK(bad.process.output.find("--from = 11 is out of range [0, 10] of parameter 'time'") != std::string::npos);
 }
 
-TEST_CASE("lab03: the sweep measures sampling error, temporal error and memory for every slice count", "[lab03]") {
+TEST_CASE("lab03: the sweep measures sampling error, temporal error and memory for every slice count", "[lab][lab03]") {
     // Columns: blend, slices, median_ms, min_ms, rmse, max_diff, sample_err, temporal_rmse, flow_MiB.
     auto cell = [](const std::string& row, int k) {
         std::stringstream s(row);

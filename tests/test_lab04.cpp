@@ -45,7 +45,7 @@ double number(const std::map<std::string, std::string>& row, const std::string& 
 
 }  // namespace
 
-TEST_CASE("lab04: the shader's normals are the CPU's finite differences, borders included, on every terrain", "[lab04]") {
+TEST_CASE("lab04: the shader's normals are the CPU's finite differences, borders included, on every terrain", "[lab][lab04]") {
     for (const std::string terrain : {"franke", "sin_cos", "jacksboro", "topobathy"}) {
         test::TempDir dir;
         std::vector<std::string> settings{"terrain=" + terrain, "exaggeration=4"};
@@ -61,7 +61,7 @@ TEST_CASE("lab04: the shader's normals are the CPU's finite differences, borders
     }
 }
 
-TEST_CASE("lab04: against exact normals, central differences converge at second order", "[lab04]") {
+TEST_CASE("lab04: against exact normals, central differences converge at second order", "[lab][lab04]") {
     test::TempDir dir;
     const auto rows = sweep({"terrain=franke", "grid=256", "exaggeration=3"}, dir.path());
     REQUIRE(rows.size() == 5);
@@ -75,7 +75,7 @@ TEST_CASE("lab04: against exact normals, central differences converge at second 
     CHECK(number(rows.back(), "normal_err_mean_deg") < 0.02);
 }
 
-TEST_CASE("lab04: flat ground gives exactly up, and a huge exaggeration no NaN", "[lab04]") {
+TEST_CASE("lab04: flat ground gives exactly up, and a huge exaggeration no NaN", "[lab][lab04]") {
     test::TempDir dir;
     const auto flat = sweep({"terrain=flat", "grid=32"}, dir.path());
     for (const auto& row : flat) CHECK(number(row, "normal_err_max_deg") == 0.0);
@@ -84,7 +84,7 @@ TEST_CASE("lab04: flat ground gives exactly up, and a huge exaggeration no NaN",
     for (const auto& row : huge) CHECK(number(row, "gpu_vs_cpu_max_deg") < 1e-3);
 }
 
-TEST_CASE("lab04: 8-bit heights terrace, and their normals stray far more than float heights'", "[lab04]") {
+TEST_CASE("lab04: 8-bit heights terrace, and their normals stray far more than float heights'", "[lab][lab04]") {
     test::TempDir a, b;
     const auto floats = sweep({"terrain=franke", "grid=256", "exaggeration=3"}, a.path());
     const auto bytes = sweep({"terrain=franke", "grid=256", "exaggeration=3", "heights8=on"}, b.path());
@@ -94,7 +94,7 @@ TEST_CASE("lab04: 8-bit heights terrace, and their normals stray far more than f
     CHECK(byte_err > 20 * float_err);
 }
 
-TEST_CASE("lab04: a missing or corrupt elevation file gives one line naming it, status 1", "[lab04]") {
+TEST_CASE("lab04: a missing or corrupt elevation file gives one line naming it, status 1", "[lab][lab04]") {
     test::TempDir dir;
     const fs::path kit = dir.path("kit");
     fs::create_directories(kit / "solutions" / "lab04_terrain");
@@ -111,7 +111,7 @@ TEST_CASE("lab04: a missing or corrupt elevation file gives one line naming it, 
     }
 }
 
-TEST_CASE("lab04: the starter paints the terrain magenta until the height colours are written", "[lab04]") {
+TEST_CASE("lab04: the starter paints the terrain magenta until the height colours are written", "[lab][lab04]") {
     test::TempDir dir;
     const auto run = test::render("lab04", {}, dir.path(), "starter");
     INFO(run.process.output);
@@ -120,7 +120,7 @@ TEST_CASE("lab04: the starter paints the terrain magenta until the height colour
     CHECK(test::not_done_pixels(image) > image.width * image.height / 4);
 }
 
-TEST_CASE("sweep --knob sweeps any parameter through the values given, and refuses bad ones with status 2", "[lab04]") {
+TEST_CASE("sweep --knob sweeps any parameter through the values given, and refuses bad ones with status 2", "[lab][lab04]") {
     test::TempDir dir;
     const auto run = test::run_lab("lab04_solution", {"sweep", "--size", "64x48", "--frames", "1", "--warmup", "0",
                                                       "--set", "geometry=mesh", "--knob", "mesh_n", "--values", "2,16,64",
@@ -151,7 +151,7 @@ TEST_CASE("sweep --knob sweeps any parameter through the values given, and refus
     }
 }
 
-TEST_CASE("lab04: a step far below one sample loses the normal to float32 cancellation", "[lab04]") {
+TEST_CASE("lab04: a step far below one sample loses the normal to float32 cancellation", "[lab][lab04]") {
     test::TempDir dir;
     const auto run = test::run_lab("lab04_solution", {"sweep", "--size", "64x48", "--frames", "1", "--warmup", "0", "--set",
                                                       "terrain=franke", "--set", "grid=512", "--knob", "delta", "--values",
@@ -173,7 +173,7 @@ TEST_CASE("lab04: a step far below one sample loses the normal to float32 cancel
     CHECK(mean_error(1) > 100 * mean_error(3));
 }
 
-TEST_CASE("lab04: zoomed out, mipmapped heights come closer to a supersampled view than aliased ones", "[lab04]") {
+TEST_CASE("lab04: zoomed out, mipmapped heights come closer to a supersampled view than aliased ones", "[lab][lab04]") {
     test::TempDir dir;
     auto render = [&](const std::string& name, const std::string& size, std::vector<std::string> settings) {
         settings.insert(settings.end(), {"camera_distance=9", "camera_pitch=70", "coloring=plain", "exaggeration=6"});

@@ -133,7 +133,7 @@ bool finite(const glm::vec4& v) { return std::isfinite(v.x) && std::isfinite(v.y
 
 }  // namespace
 
-TEST_CASE("lab05: one turn of the rotation, Euler spirals out to 1.368, the midpoint rule 1.0008, RK4 keeps the circle", "[lab05][gl43]") {
+TEST_CASE("lab05: one turn of the rotation, Euler spirals out to 1.368, the midpoint rule 1.0008, RK4 keeps the circle", "[lab][lab05][gl43]") {
     Advector gpu;
     const double h = 0.1;
     const int steps = 63;  // 6.3: one turn of 2 pi, to the nearest step
@@ -158,7 +158,7 @@ TEST_CASE("lab05: one turn of the rotation, Euler spirals out to 1.368, the midp
     }
 }
 
-TEST_CASE("lab05: a particle on a stagnation point stays there exactly, at rest and blue, with every integrator", "[lab05][gl43]") {
+TEST_CASE("lab05: a particle on a stagnation point stays there exactly, at rest and blue, with every integrator", "[lab][lab05][gl43]") {
     Advector gpu;
     for (const char* field : {"rotation", "saddle"})
         for (const char* integrator : {"euler", "midpoint", "rk4"}) {
@@ -177,7 +177,7 @@ TEST_CASE("lab05: a particle on a stagnation point stays there exactly, at rest 
         }
 }
 
-TEST_CASE("lab05: a particle leaving the domain starts over where it began, one on the boundary stays", "[lab05][gl43]") {
+TEST_CASE("lab05: a particle leaving the domain starts over where it began, one on the boundary stays", "[lab][lab05][gl43]") {
     Advector gpu;
     Config c;
     c.field = "saddle";
@@ -204,7 +204,7 @@ TEST_CASE("lab05: a particle leaving the domain starts over where it began, one 
     CHECK(out.velocities[0] == falling.origins[0].velocity);
 }
 
-TEST_CASE("lab05: the fountain by the midpoint rule is the exact parabola, Euler's misses by G h t / 2", "[lab05][gl43]") {
+TEST_CASE("lab05: the fountain by the midpoint rule is the exact parabola, Euler's misses by G h t / 2", "[lab][lab05][gl43]") {
     Advector gpu;
     const ParticleSet launch = placed({{0.0f, -0.8f, 0.0f}}, ParticleScene::Gravity, {0.2f, 2.0f, -0.1f});
     const double G = 2, h = 0.05;
@@ -224,7 +224,7 @@ TEST_CASE("lab05: the fountain by the midpoint rule is the exact parabola, Euler
     CHECK(out.positions[0].y - exact_y == Approx(G * h * t / 2).margin(2e-6));
 }
 
-TEST_CASE("lab05: the GPU's steps match the CPU's float steps for every field and integrator", "[lab05][gl43]") {
+TEST_CASE("lab05: the GPU's steps match the CPU's float steps for every field and integrator", "[lab][lab05][gl43]") {
     Advector gpu;
     for (const char* field : {"gravity", "rotation", "saddle", "abc"})
         for (const char* integrator : {"euler", "midpoint", "rk4"}) {
@@ -252,7 +252,7 @@ TEST_CASE("lab05: the GPU's steps match the CPU's float steps for every field an
         }
 }
 
-TEST_CASE("lab05: through the velocity texture, a particle on a texel centre moves by that texel exactly, the edges clamp", "[lab05][gl43]") {
+TEST_CASE("lab05: through the velocity texture, a particle on a texel centre moves by that texel exactly, the edges clamp", "[lab][lab05][gl43]") {
     Advector gpu;
     const VelocityGrid grid = VelocityGrid::sample(ParticleScene::Abc, 8);
     Config c;
@@ -283,7 +283,7 @@ TEST_CASE("lab05: through the velocity texture, a particle on a texel centre mov
     CHECK(apart <= 3);
 }
 
-TEST_CASE("lab05: a count that is no multiple of the group size leaves every slot past it untouched", "[lab05][gl43]") {
+TEST_CASE("lab05: a count that is no multiple of the group size leaves every slot past it untouched", "[lab][lab05][gl43]") {
     Advector gpu;
     for (int local : {1, 7, 64, 1000, 1024}) {
         INFO("local size " << local);
@@ -301,7 +301,7 @@ TEST_CASE("lab05: a count that is no multiple of the group size leaves every slo
     }
 }
 
-TEST_CASE("lab05: more work groups than one row holds, a plain dispatch is refused, the split one moves every particle", "[lab05][gl43]") {
+TEST_CASE("lab05: more work groups than one row holds, a plain dispatch is refused, the split one moves every particle", "[lab][lab05][gl43]") {
     Advector gpu;
     const std::size_t count = 140000;  // at a local size of 1, 140000 groups: over 65535
     REQUIRE(static_cast<std::int64_t>(count) > gpu.limits().max_group_count[0]);
@@ -323,7 +323,7 @@ TEST_CASE("lab05: more work groups than one row holds, a plain dispatch is refus
     CHECK(max_gap(out.positions, set.positions, count) < 1e-6);
 }
 
-TEST_CASE("lab05: the dispatch layout covers every item in the fewest rows, and refuses what no layout can hold", "[lab05]") {
+TEST_CASE("lab05: the dispatch layout covers every item in the fewest rows, and refuses what no layout can hold", "[lab][lab05]") {
     ComputeLimits limits;  // GL's guaranteed minimums: 65535 groups per axis
     CHECK(dispatch_grid(0, 64, limits).groups_x == 0);
     const DispatchGrid small = dispatch_grid(1000, 64, limits);

@@ -41,7 +41,7 @@ int column(const std::string& header, const std::string& name) {
 
 }  // namespace
 
-TEST_CASE("lab05: on a context without compute shaders it stops with one line saying why, status 3", "[lab05][gl43]") {
+TEST_CASE("lab05: on a context without compute shaders it stops with one line saying why, status 3", "[lab][lab05][gl43]") {
     test::TempDir dir;
     const auto run = test::render("lab05_solution", {}, dir.path(), "old", {"--gl", "4.1"},
                                   {"MESA_GL_VERSION_OVERRIDE=4.1", "MESA_GLSL_VERSION_OVERRIDE=410"});
@@ -51,7 +51,7 @@ TEST_CASE("lab05: on a context without compute shaders it stops with one line sa
     CHECK_FALSE(fs::exists(run.png));
 }
 
-TEST_CASE("lab05: settings that cannot go together or out of range give one line naming them", "[lab05][gl43]") {
+TEST_CASE("lab05: settings that cannot go together or out of range give one line naming them", "[lab][lab05][gl43]") {
     test::TempDir dir;
     auto run = test::render("lab05_solution", {"field=gravity", "source=texture"}, dir.path(), "bad");
     CHECK(run.exit_code() == 1);
@@ -65,7 +65,7 @@ TEST_CASE("lab05: settings that cannot go together or out of range give one line
     CHECK(run.process.output.find("particles") != std::string::npos);
 }
 
-TEST_CASE("lab05: the buffers handed to the grader hold every particle and the untouched sentinels past them", "[lab05][gl43]") {
+TEST_CASE("lab05: the buffers handed to the grader hold every particle and the untouched sentinels past them", "[lab][lab05][gl43]") {
     test::TempDir dir;
     const auto plain = test::render("lab05_solution", {"particles=1000", "local_size=64"}, dir.path(), "plain");
     REQUIRE(plain.exit_code() == 0);
@@ -89,7 +89,7 @@ TEST_CASE("lab05: the buffers handed to the grader hold every particle and the u
     }
 }
 
-TEST_CASE("lab05: the starter draws its particles magenta, unmoved, until its TODOs are done", "[lab05][gl43]") {
+TEST_CASE("lab05: the starter draws its particles magenta, unmoved, until its TODOs are done", "[lab][lab05][gl43]") {
     test::TempDir dir;
     const auto run = test::render("lab05", {"particles=65536"}, dir.path(), "starter");
     INFO(run.process.output);
@@ -98,7 +98,7 @@ TEST_CASE("lab05: the starter draws its particles magenta, unmoved, until its TO
     CHECK(test::not_done_pixels(image) > image.width * image.height / 10);
 }
 
-TEST_CASE("lab05: animate carries the particles on from frame to frame and gives what a render at that time gives", "[lab05][gl43]") {
+TEST_CASE("lab05: animate carries the particles on from frame to frame and gives what a render at that time gives", "[lab][lab05][gl43]") {
     test::TempDir dir;
     const fs::path out = dir.path("anim");
     const auto run = test::run_lab("lab05_solution", {"animate", "--size", "96x96", "--count", "3", "--from", "0", "--to", "1.5",
@@ -117,7 +117,7 @@ TEST_CASE("lab05: animate carries the particles on from frame to frame and gives
     CHECK(read_png(out / "frame_0000.png").rgba != read_png(out / "frame_0002.png").rgba);
 }
 
-TEST_CASE("lab05: the sweep measures each integrator's order against the double-precision reference, and both speeds", "[lab05][gl43]") {
+TEST_CASE("lab05: the sweep measures each integrator's order against the double-precision reference, and both speeds", "[lab][lab05][gl43]") {
     test::TempDir dir;
     const auto run = test::run_lab("lab05_solution", {"sweep", "--size", "64x64", "--frames", "1", "--warmup", "0", "--set",
                                                       "particles=2048", "--set", "time=1.6", "--out-dir", dir.path().string()},
@@ -159,7 +159,7 @@ TEST_CASE("lab05: the sweep measures each integrator's order against the double-
     CHECK(rows[0].find("radius_ratio") == std::string::npos);
 }
 
-TEST_CASE("lab05: on the rotation the sweep shows each integrator's radius after a turn beside its closed form", "[lab05][gl43]") {
+TEST_CASE("lab05: on the rotation the sweep shows each integrator's radius after a turn beside its closed form", "[lab][lab05][gl43]") {
     test::TempDir dir;
     const auto run = test::run_lab("lab05_solution", {"sweep", "--size", "48x48", "--frames", "1", "--warmup", "0", "--set",
                                                       "particles=1024", "--set", "field=rotation", "--set", "time=6.3", "--knob",

@@ -31,7 +31,7 @@ int background_pixels(const Image& image) {
 
 }  // namespace
 
-TEST_CASE("lab06: the network built in code draws what raycast.network and probe.network draw", "[lab06]") {
+TEST_CASE("lab06: the network built in code draws what raycast.network and probe.network draw", "[lab][lab06]") {
     test::TempDir dir;
     const auto code = test::render(kLab, {}, dir.path(), "code");
     const auto file = test::render(kLab, {"network=raycast.network"}, dir.path(), "file");
@@ -46,7 +46,7 @@ TEST_CASE("lab06: the network built in code draws what raycast.network and probe
     CHECK(rmse(code.png, probe_code.png) > 1.0);  // the probe shows
 }
 
-TEST_CASE("lab06: a property a network file sets wins over the parameter of that name", "[lab06]") {
+TEST_CASE("lab06: a property a network file sets wins over the parameter of that name", "[lab][lab06]") {
     test::TempDir dir;
     std::string text = test::read_text(test::source_root() / "solutions" / "lab06_raycasting" / "raycast.network");
     const auto at = text.find("processor RayTraversal raycaster");
@@ -61,7 +61,7 @@ TEST_CASE("lab06: a property a network file sets wins over the parameter of that
     CHECK(rmse(from_file.png, mip.png) == 0.0);
 }
 
-TEST_CASE("lab06: render --debug-images writes every port's colour, alpha and depth, named by processor", "[lab06]") {
+TEST_CASE("lab06: render --debug-images writes every port's colour, alpha and depth, named by processor", "[lab][lab06]") {
     test::TempDir dir;
     const auto run = test::render(kLab, {"probe=on"}, dir.path(), "probe", {"--debug-images"});
     INFO(run.process.output);
@@ -82,7 +82,7 @@ TEST_CASE("lab06: render --debug-images writes every port's colour, alpha and de
     CHECK(rmse(debug / "entry_exit.entry.png", debug / "entry_exit.exit.png") > 10.0);
 }
 
-TEST_CASE("lab06: with the camera inside the volume every pixel has a ray, from the near plane", "[lab06]") {
+TEST_CASE("lab06: with the camera inside the volume every pixel has a ray, from the near plane", "[lab][lab06]") {
     test::TempDir dir;
     const auto inside = test::render(kLab, {"camera_distance=0.3", "transfer_function=grey"}, dir.path(), "inside");
     const auto outside = test::render(kLab, {"transfer_function=grey"}, dir.path(), "outside");
@@ -93,7 +93,7 @@ TEST_CASE("lab06: with the camera inside the volume every pixel has a ray, from 
     CHECK(background_pixels(read_png(inside.png)) == 0);
 }
 
-TEST_CASE("lab06: a clipping plane that removes the whole volume leaves the background, and the rays follow a cut", "[lab06]") {
+TEST_CASE("lab06: a clipping plane that removes the whole volume leaves the background, and the rays follow a cut", "[lab][lab06]") {
     test::TempDir dir;
     const auto gone = test::render(kLab, {"clip_normal=1,0,0", "clip_offset=-0.9"}, dir.path(), "gone");
     INFO(gone.process.output);
@@ -105,7 +105,7 @@ TEST_CASE("lab06: a clipping plane that removes the whole volume leaves the back
     CHECK(background_pixels(read_png(half.png)) > background_pixels(read_png(whole.png)) + 500);
 }
 
-TEST_CASE("lab06: a constant volume (zero gradient) and an iso value equal to it draw no NaN", "[lab06]") {
+TEST_CASE("lab06: a constant volume (zero gradient) and an iso value equal to it draw no NaN", "[lab][lab06]") {
     test::TempDir dir;
     for (const std::string compositing : {"dvr", "iso"}) {
         std::vector<std::string> settings{"volume=constant", "compositing=" + compositing};
@@ -119,7 +119,7 @@ TEST_CASE("lab06: a constant volume (zero gradient) and an iso value equal to it
     }
 }
 
-TEST_CASE("lab06: a broken shader stops the run with one line naming the processor that owns it and the file", "[lab06]") {
+TEST_CASE("lab06: a broken shader stops the run with one line naming the processor that owns it and the file", "[lab][lab06]") {
     test::TempDir dir;
     const fs::path root = dir.path("kit");
     test::copy_lab_kit(test::source_root(), root, "lab06_raycasting");
@@ -136,7 +136,7 @@ TEST_CASE("lab06: a broken shader stops the run with one line naming the process
     CHECK(dvr.exit_code() == 0);
 }
 
-TEST_CASE("lab06: bad settings, network files and volumes give one line naming them, and no image", "[lab06]") {
+TEST_CASE("lab06: bad settings, network files and volumes give one line naming them, and no image", "[lab][lab06]") {
     test::TempDir dir;
     struct Bad {
         std::vector<std::string> settings;
@@ -170,7 +170,7 @@ TEST_CASE("lab06: bad settings, network files and volumes give one line naming t
     }
 }
 
-TEST_CASE("lab06: the starter draws the box magenta until the compositing is written", "[lab06]") {
+TEST_CASE("lab06: the starter draws the box magenta until the compositing is written", "[lab][lab06]") {
     test::TempDir dir;
     const auto run = test::render("lab06", {}, dir.path(), "starter");
     INFO(run.process.output);
@@ -178,7 +178,7 @@ TEST_CASE("lab06: the starter draws the box magenta until the compositing is wri
     CHECK(test::not_done_pixels(read_png(run.png)) > 128 * 128 / 4);
 }
 
-TEST_CASE("lab06: the sweep measures hits against the exact isosurface, and sampling more brings them closer", "[lab06]") {
+TEST_CASE("lab06: the sweep measures hits against the exact isosurface, and sampling more brings them closer", "[lab][lab06]") {
     test::TempDir dir;
     const auto run = test::run_lab(kLab, {"sweep", "--size", "96x96", "--frames", "1", "--warmup", "0", "--set", "compositing=iso",
                                           "--knob", "samples_per_voxel", "--values", "0.25,4", "--set", "compare_shaders=on",
@@ -200,7 +200,7 @@ TEST_CASE("lab06: the sweep measures hits against the exact isosurface, and samp
     CHECK(value(fine, "uber_ms") > 0.0);
 }
 
-TEST_CASE("lab06: the default camera frames the whole volume from any side, and fills a good part of the image", "[lab06]") {
+TEST_CASE("lab06: the default camera frames the whole volume from any side, and fills a good part of the image", "[lab][lab06]") {
     // A constant volume fills its whole box: through the grey transfer function every ray that meets the box shows.
     test::TempDir dir;
     const std::vector<std::vector<std::string>> views = {
@@ -227,7 +227,7 @@ TEST_CASE("lab06: the default camera frames the whole volume from any side, and 
     }
 }
 
-TEST_CASE("lab06: the MRI brain shows its tissues, the ventricles blue and the white matter cream, by DVR and MIP", "[lab06]") {
+TEST_CASE("lab06: the MRI brain shows its tissues, the ventricles blue and the white matter cream, by DVR and MIP", "[lab][lab06]") {
     // Before the scan was windowed its tissue filled [0.17, 0.45] of the normalised range: a dim brown blur (the
     // head and mip-head goldens then had no pixel blue or cream, and a mean of 41 and 28 over the volume's pixels).
     test::TempDir dir;

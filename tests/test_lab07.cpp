@@ -68,7 +68,7 @@ NodeProbe probe_at_nodes(NodeSet set, int degree) {
 
 }  // namespace
 
-TEST_CASE("lab07: a fragment exactly on a node gets the node's value exactly, and one ulp beside it stays finite", "[lab07]") {
+TEST_CASE("lab07: a fragment exactly on a node gets the node's value exactly, and one ulp beside it stays finite", "[lab][lab07]") {
     for (NodeSet set : {NodeSet::GaussLobattoLegendre, NodeSet::Equispaced})
         for (int degree : {1, 2, 4, 8, 16}) {
             INFO(name_of(set) << " degree " << degree);
@@ -89,7 +89,7 @@ TEST_CASE("lab07: a fragment exactly on a node gets the node's value exactly, an
         }
 }
 
-TEST_CASE("lab07: the sweep finds Runge's blow-up on equispaced nodes and float32's floor on GLL nodes", "[lab07]") {
+TEST_CASE("lab07: the sweep finds Runge's blow-up on equispaced nodes and float32's floor on GLL nodes", "[lab][lab07]") {
     test::TempDir dir;
     const auto run = test::run_lab("lab07_solution", {"sweep", "--size", "128x128", "--frames", "1", "--warmup", "0", "--set", "mesh=grid",
                                                       "--set", "columns=1", "--set", "rows=1", "--set", "field=runge", "--out-dir",
@@ -120,7 +120,7 @@ TEST_CASE("lab07: the sweep finds Runge's blow-up on equispaced nodes and float3
     CHECK(test::csv_value(header, rows["gll16"], "basis_bytes") == 17 * 8);
 }
 
-TEST_CASE("lab07: a degree-3 polynomial on degree-3 elements is drawn to float rounding, and the basis does not grow with elements", "[lab07]") {
+TEST_CASE("lab07: a degree-3 polynomial on degree-3 elements is drawn to float rounding, and the basis does not grow with elements", "[lab][lab07]") {
     test::TempDir dir;
     const auto run = test::run_lab("lab07_solution", {"sweep", "--size", "96x96", "--frames", "1", "--warmup", "0", "--set", "mesh=grid",
                                                       "--set", "field=polynomial", "--set", "degree=3", "--knob", "columns",
@@ -141,7 +141,7 @@ TEST_CASE("lab07: a degree-3 polynomial on degree-3 elements is drawn to float r
     CHECK(test::csv_value(header, many, "value_bytes") == 64.0 * test::csv_value(header, one, "value_bytes"));
 }
 
-TEST_CASE("lab07: the starter draws magenta until the colour map is written, and bad settings are one line", "[lab07]") {
+TEST_CASE("lab07: the starter draws magenta until the colour map is written, and bad settings are one line", "[lab][lab07]") {
     test::TempDir dir;
     const auto starter = test::render("lab07", {}, dir.path(), "starter");
     INFO(starter.process.output);

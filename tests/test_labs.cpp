@@ -78,15 +78,15 @@ int line_of(const fs::path& file, const std::string& needle) {
 
 }  // namespace
 
-TEST_CASE("labs: every case and demo of each public case file renders by name, starter and solution", "[labs]") {
+TEST_CASE("labs: every case and demo of each public case file renders by name, starter and solution", "[lab][labs]") {
     for (const auto& lab : labs_on_gl41()) every_case_renders_by_name(lab);
 }
 
-TEST_CASE("lab05: every case and demo of its public case file renders by name, starter and solution", "[labs][gl43]") {
+TEST_CASE("lab05: every case and demo of its public case file renders by name, starter and solution", "[lab][labs][gl43]") {
     every_case_renders_by_name("lab05");
 }
 
-TEST_CASE("labs: a case file's mistake is named where it is written, and without the file --set still works", "[labs]") {
+TEST_CASE("labs: a case file's mistake is named where it is written, and without the file --set still works", "[lab][labs]") {
     const fs::path root = copy_of_lab01("case-file");
     fs::create_directories(root / "grader" / "cases");
     const std::string original = test::read_text(test::source_root() / "grader" / "cases" / "lab01.json");
@@ -121,7 +121,7 @@ TEST_CASE("labs: a case file's mistake is named where it is written, and without
     CHECK(missing.process.output.find("lab01.json") != std::string::npos);
 }
 
-TEST_CASE("labs: every lab but 05 runs on an OpenGL 4.1 core context and renders the same image", "[labs]") {
+TEST_CASE("labs: every lab but 05 runs on an OpenGL 4.1 core context and renders the same image", "[lab][labs]") {
     const auto dir = test::temp_dir("gl41");
     for (const auto& lab : labs_on_gl41()) {
         INFO(lab);
@@ -136,7 +136,7 @@ TEST_CASE("labs: every lab but 05 runs on an OpenGL 4.1 core context and renders
     }
 }
 
-TEST_CASE("labs: a context below what the lab needs stops with one clear line and status 3", "[labs]") {
+TEST_CASE("labs: a context below what the lab needs stops with one clear line and status 3", "[lab][labs]") {
     const auto dir = test::temp_dir("gl33");
     const auto run = test::render("lab01_solution", {}, dir, "old", {}, {"MESA_GL_VERSION_OVERRIDE=3.3"});
     INFO(run.process.output);
@@ -145,7 +145,7 @@ TEST_CASE("labs: a context below what the lab needs stops with one clear line an
     CHECK_FALSE(fs::exists(run.png));
 }
 
-TEST_CASE("lab01: core and compat profiles, EGL and OSMesa backends give the same image", "[labs]") {
+TEST_CASE("lab01: core and compat profiles, EGL and OSMesa backends give the same image", "[lab][labs]") {
     const auto dir = test::temp_dir("profiles");
     for (const char* name : {"gooch", "phong", "silhouette", "back-faces", "per-vertex"}) {
         INFO(name);
@@ -164,7 +164,7 @@ TEST_CASE("lab01: core and compat profiles, EGL and OSMesa backends give the sam
 }
 
 // Tagged [timing] (ctest runs it alone): live grading times the solution against itself.
-TEST_CASE("every lab: the solution scores full marks against the goldens and live, and the starter fails every TODO", "[labs][timing]") {
+TEST_CASE("every lab: the solution scores full marks against the goldens and live, and the starter fails every TODO", "[lab][labs][timing]") {
   for (const std::string lab : labs_on_gl41()) {
     INFO(lab);
     const std::string lab_dir = test::mutant_spec(lab).string_at("lab_dir");
@@ -216,13 +216,13 @@ TEST_CASE("every lab: the solution scores full marks against the goldens and liv
   }
 }
 
-TEST_CASE("lab01: the starter renders a clear 'not done' image: magenta where the shading is missing", "[labs]") {
+TEST_CASE("lab01: the starter renders a clear 'not done' image: magenta where the shading is missing", "[lab][labs]") {
     const auto dir = test::temp_dir("starter");
     const Image image = must_render(test::render("lab01", {}, dir, "starter"));
     CHECK(test::not_done_pixels(image) > image.width * image.height / 5);
 }
 
-TEST_CASE("lab01: bad command lines give one line naming the culprit and status 2", "[labs]") {
+TEST_CASE("lab01: bad command lines give one line naming the culprit and status 2", "[lab][labs]") {
     const auto dir = test::temp_dir("bad-cli");
     struct Bad {
         std::vector<std::string> args;
@@ -251,7 +251,7 @@ TEST_CASE("lab01: bad command lines give one line naming the culprit and status 
     CHECK(fs::is_empty(dir));  // nothing written
 }
 
-TEST_CASE("lab01: a missing shader, a compile error, a missing or corrupt mesh: clear error, status 1", "[labs]") {
+TEST_CASE("lab01: a missing shader, a compile error, a missing or corrupt mesh: clear error, status 1", "[lab][labs]") {
     {
         const auto root = copy_of_lab01("missing-shader");
         fs::remove(root / "solutions" / "lab01_gooch" / "shade.frag");
@@ -291,14 +291,14 @@ TEST_CASE("lab01: a missing shader, a compile error, a missing or corrupt mesh: 
     }
 }
 
-TEST_CASE("lab01: assets are found from any working directory, never through it", "[labs]") {
+TEST_CASE("lab01: assets are found from any working directory, never through it", "[lab][labs]") {
     const auto elsewhere = test::temp_dir("cwd");
     const auto run = test::render("lab01_solution", {"model=teapot"}, elsewhere, "teapot");
     INFO(run.process.output);
     CHECK(run.exit_code() == 0);
 }
 
-TEST_CASE("lab01: sweep mode measures both shading rates against the exact sphere, as a table, CSV and plots", "[labs]") {
+TEST_CASE("lab01: sweep mode measures both shading rates against the exact sphere, as a table, CSV and plots", "[lab][labs]") {
     const auto dir = test::temp_dir("sweep");
     const auto run = test::run_lab("lab01_solution",
                                    {"sweep", "--size", "128x128", "--frames", "1", "--warmup", "0", "--out-dir", dir.string()},
@@ -346,7 +346,7 @@ TEST_CASE("lab01: sweep mode measures both shading rates against the exact spher
     }
 }
 
-TEST_CASE("sweep report: a measure only some rows have gets one column, blank or '-' where a row lacks it, and a summary line", "[labs]") {
+TEST_CASE("sweep report: a measure only some rows have gets one column, blank or '-' where a row lacks it, and a summary line", "[lab][labs]") {
     SweepReport report;
     report.lab = "labX";
     report.knob = "k";
@@ -378,7 +378,7 @@ TEST_CASE("sweep report: a measure only some rows have gets one column, blank or
     CHECK(test::lines_of(report.summary())[1] == "labX,k,only_b,mode=a k=1,-,2,mode=b k=1,7,4,2,-");
 }
 
-TEST_CASE("sweep report: a time or ratio with its spread is one cell in the table and the Markdown, three in the CSV", "[labs]") {
+TEST_CASE("sweep report: a time or ratio with its spread is one cell in the table and the Markdown, three in the CSV", "[lab][labs]") {
     SweepReport report;
     report.lab = "labX";
     report.knob = "k";

@@ -27,7 +27,7 @@ double legendre_derivative(int p, double x) {
 
 }  // namespace
 
-TEST_CASE("lagrange: GLL nodes are the endpoints and the roots of P'_p, ascending and exactly symmetric", "[spectral]") {
+TEST_CASE("lagrange: GLL nodes are the endpoints and the roots of P'_p, ascending and exactly symmetric", "[unit][spectral]") {
     for (int p = 1; p <= kMaxLagrangeDegree; ++p) {
         INFO("degree " << p);
         const std::vector<double> x = lagrange_nodes(NodeSet::GaussLobattoLegendre, p);
@@ -47,7 +47,7 @@ TEST_CASE("lagrange: GLL nodes are the endpoints and the roots of P'_p, ascendin
     CHECK_THROWS_WITH(parse_node_set("chebyshev"), "unknown node set 'chebyshev' (known: gll, equispaced)");
 }
 
-TEST_CASE("lagrange: the Lebesgue constant at degree 16 is 934.5 on equispaced nodes and 2.47 on GLL nodes", "[spectral]") {
+TEST_CASE("lagrange: the Lebesgue constant at degree 16 is 934.5 on equispaced nodes and 2.47 on GLL nodes", "[unit][spectral]") {
     CHECK(lebesgue_constant(NodeSet::Equispaced, 16) == Approx(934.53).epsilon(1e-4));
     CHECK(lebesgue_constant(NodeSet::GaussLobattoLegendre, 16) == Approx(2.4684).epsilon(1e-4));
     // GLL grows like log p, equispaced like 2^p / (p log p).
@@ -56,7 +56,7 @@ TEST_CASE("lagrange: the Lebesgue constant at degree 16 is 934.5 on equispaced n
     CHECK(lebesgue_constant(NodeSet::Equispaced, 1) == Approx(1.0));
 }
 
-TEST_CASE("lagrange: at a node the basis is exactly that node's unit vector, with no 0/0", "[spectral]") {
+TEST_CASE("lagrange: at a node the basis is exactly that node's unit vector, with no 0/0", "[unit][spectral]") {
     for (NodeSet set : {NodeSet::GaussLobattoLegendre, NodeSet::Equispaced})
         for (int p : {1, 2, 5, 16, 24}) {
             const auto x = lagrange_nodes(set, p);
@@ -68,7 +68,7 @@ TEST_CASE("lagrange: at a node the basis is exactly that node's unit vector, wit
         }
 }
 
-TEST_CASE("lagrange: next to a node the basis stays finite and tends to the node's unit vector", "[spectral]") {
+TEST_CASE("lagrange: next to a node the basis stays finite and tends to the node's unit vector", "[unit][spectral]") {
     const auto x = lagrange_nodes(NodeSet::GaussLobattoLegendre, 8);
     const auto w = barycentric_weights(x);
     for (double offset : {1e-300, std::numeric_limits<double>::denorm_min(), 1e-17, 1e-9}) {
@@ -83,7 +83,7 @@ TEST_CASE("lagrange: next to a node the basis stays finite and tends to the node
     }
 }
 
-TEST_CASE("lagrange: polynomials up to the degree are reproduced to rounding, and Runge's function is not on equispaced nodes", "[spectral]") {
+TEST_CASE("lagrange: polynomials up to the degree are reproduced to rounding, and Runge's function is not on equispaced nodes", "[unit][spectral]") {
     auto cubic = [](double t) { return 2 * t * t * t - t * t + 0.25 * t - 3; };
     auto runge = [](double t) { return 1.0 / (1.0 + 25.0 * t * t); };
     for (NodeSet set : {NodeSet::GaussLobattoLegendre, NodeSet::Equispaced})
@@ -108,7 +108,7 @@ TEST_CASE("lagrange: polynomials up to the degree are reproduced to rounding, an
     CHECK(worst_error(NodeSet::GaussLobattoLegendre, 24) < worst_error(NodeSet::GaussLobattoLegendre, 16));
 }
 
-TEST_CASE("spectral mesh: values lie element by element, xi fastest, and evaluate back exactly at the nodes", "[spectral]") {
+TEST_CASE("spectral mesh: values lie element by element, xi fastest, and evaluate back exactly at the nodes", "[unit][spectral]") {
     ElementMesh mesh;
     mesh.columns = 5;
     mesh.rows = 3;
@@ -142,7 +142,7 @@ TEST_CASE("spectral mesh: values lie element by element, xi fastest, and evaluat
                   Approx(spectral_field(SpectralField::Polynomial, grid.position(e, xi, -xi / 2), 0)).margin(1e-6));
 }
 
-TEST_CASE("spectral mesh: annulus elements follow the ring, neighbours share their edges, and patches are in element order", "[spectral]") {
+TEST_CASE("spectral mesh: annulus elements follow the ring, neighbours share their edges, and patches are in element order", "[unit][spectral]") {
     ElementMesh mesh;
     mesh.columns = 8;
     mesh.rows = 2;

@@ -35,7 +35,7 @@ double share_below(const ToneCurve& curve, const std::vector<float>& values, flo
 
 }  // namespace
 
-TEST_CASE("lic contrast: off, and an image with one grey level, leave every value as it is", "[lic_contrast]") {
+TEST_CASE("lic contrast: off, and an image with one grey level, leave every value as it is", "[unit][lic_contrast]") {
     const std::vector<float> grey = crowded_greys(4096);
     const ToneCurve off = make_tone_curve(grey, LicContrast::Off);
     CHECK(off.identity());
@@ -48,7 +48,7 @@ TEST_CASE("lic contrast: off, and an image with one grey level, leave every valu
     }
 }
 
-TEST_CASE("lic contrast: a stretch takes the 0.5th and 99.5th percentiles to black and white, linearly between", "[lic_contrast]") {
+TEST_CASE("lic contrast: a stretch takes the 0.5th and 99.5th percentiles to black and white, linearly between", "[unit][lic_contrast]") {
     std::vector<float> grey;
     for (int i = 0; i <= 1000; ++i) grey.push_back(0.4f + 0.2f * static_cast<float>(i) / 1000.0f);  // 0.4 .. 0.6
     std::reverse(grey.begin(), grey.end());  // any order
@@ -67,7 +67,7 @@ TEST_CASE("lic contrast: a stretch takes the 0.5th and 99.5th percentiles to bla
     CHECK(1.0 - share_below(stretch, crowded, 1.0f - 1e-6f) == Approx(0.005).margin(0.002));
 }
 
-TEST_CASE("lic contrast: equalisation spreads crowded grey levels evenly, in order, and skips NaN and Inf", "[lic_contrast]") {
+TEST_CASE("lic contrast: equalisation spreads crowded grey levels evenly, in order, and skips NaN and Inf", "[unit][lic_contrast]") {
     std::vector<float> grey = crowded_greys(8000);
     const ToneCurve before = make_tone_curve(grey, LicContrast::Equalize);
     grey.push_back(std::numeric_limits<float>::quiet_NaN());
@@ -86,7 +86,7 @@ TEST_CASE("lic contrast: equalisation spreads crowded grey levels evenly, in ord
     CHECK(std::isnan(curve(std::numeric_limits<float>::quiet_NaN())));
 }
 
-TEST_CASE("lic contrast: names, and a sweep refused with a contrast on", "[lic_contrast]") {
+TEST_CASE("lic contrast: names, and a sweep refused with a contrast on", "[unit][lic_contrast]") {
     CHECK(gsv::lic_contrast_from_name("equalize") == LicContrast::Equalize);
     CHECK(gsv::lic_contrast_names() == std::vector<std::string>{"off", "stretch", "equalize"});
     CHECK(gsv::test::gsv_error_message([] { gsv::lic_contrast_from_name("gamma"); }) ==

@@ -58,15 +58,15 @@ void check_contrast(const std::string& lab, const std::vector<std::string>& sett
 
 }  // namespace
 
-TEST_CASE("lab02: contrast=stretch and contrast=equalize spread the vortex street's grey levels", "[lab02]") {
+TEST_CASE("lab02: contrast=stretch and contrast=equalize spread the vortex street's grey levels", "[lab][lab02]") {
     check_contrast("lab02_solution", {"field=file", "time=5", "length=30"});
 }
 
-TEST_CASE("lab03: contrast=stretch and contrast=equalize spread the vortex street's grey levels", "[lab03]") {
+TEST_CASE("lab03: contrast=stretch and contrast=equalize spread the vortex street's grey levels", "[lab][lab03]") {
     check_contrast("lab03_solution", {"field=file", "time=2", "length=30"});
 }
 
-TEST_CASE("lab02 and lab03: a sweep with a contrast on is refused in one line", "[lab02][lab03]") {
+TEST_CASE("lab02 and lab03: a sweep with a contrast on is refused in one line", "[lab][lab02][lab03]") {
     test::TempDir dir;
     for (const std::string lab : {"lab02_solution", "lab03_solution"}) {
         const auto run = test::run_lab(lab, {"sweep", "--size", "64x64", "--set", "contrast=equalize", "--out-dir", dir.path().string()},

@@ -71,7 +71,7 @@ int grey(const gsv::Image& image, int x, int y) { return image.at(x, image.heigh
 
 }  // namespace
 
-TEST_CASE("analytic_flow is make_flow's field: equal at every texel centre once rounded to float", "[flow]") {
+TEST_CASE("analytic_flow is make_flow's field: equal at every texel centre once rounded to float", "[unit][flow]") {
     for (auto [width, height] : {std::pair{64, 64}, std::pair{65, 33}, std::pair{80, 48}})
         for (double speed : {1.0, 2.5})
             for (FlowKind kind : kKinds) {
@@ -93,7 +93,7 @@ TEST_CASE("analytic_flow is make_flow's field: equal at every texel centre once 
 }
 
 TEST_CASE("exact streamlines of the linear fields are their closed forms, the rotation an ellipse on a wide grid",
-          "[flow]") {
+          "[unit][flow]") {
     // Measured, after up to 100 steps either way: 1.7e-12 texels (a texel out from the centre) at speed 1, and
     // 1.7e-9 at speed 4, where a substep turns the 64x64 rotation by 0.011 radian.
     for (auto [width, height] : {std::pair{64, 64}, std::pair{80, 48}})
@@ -120,7 +120,7 @@ TEST_CASE("exact streamlines of the linear fields are their closed forms, the ro
 
 TEST_CASE("normalised exact streamlines run at unit speed: circles of the square rotation, and into the source's "
           "centre, where they end",
-          "[flow]") {
+          "[unit][flow]") {
     const dvec2 centre(32.0, 32.0);
     const gsv::StreamlineOptions normalized{true};
     // A circle of radius 10 texels is swept at 0.1 radian a step. Measured: 7e-9 texels off after 100 steps.
@@ -145,7 +145,7 @@ TEST_CASE("normalised exact streamlines run at unit speed: circles of the square
 }
 
 TEST_CASE("exact streamlines have converged: four times the substeps moves none by 1e-6 texels (1e-5 normalised)",
-          "[flow]") {
+          "[unit][flow]") {
     // 64x64 at speed 1: the lab's smallest vortex cores are fewest texels across here. Measured, 8 against 32
     // substeps over 100 steps: 8e-9 texels on the vortices, 7e-10 on the double gyre (4 against 16: 1.3e-7 and
     // 1.1e-8). Normalised, the streamlines that circle a vortex's core or pass near a zero turn sharply: 1.1e-6 on
@@ -178,7 +178,7 @@ TEST_CASE("exact streamlines have converged: four times the substeps moves none 
     }
 }
 
-TEST_CASE("exact LIC: a still field gives the noise itself, top row first, and so does length 0", "[flow]") {
+TEST_CASE("exact LIC: a still field gives the noise itself, top row first, and so does length 0", "[unit][flow]") {
     const int width = 24, height = 16;
     const std::vector<float> noise = gsv::white_noise(width, height, 5);
     for (bool normalized : {false, true}) {
@@ -197,7 +197,7 @@ TEST_CASE("exact LIC: a still field gives the noise itself, top row first, and s
     }
 }
 
-TEST_CASE("exact LIC: a streamline that leaves the grid stops there, and nothing outside is counted", "[flow]") {
+TEST_CASE("exact LIC: a streamline that leaves the grid stops there, and nothing outside is counted", "[unit][flow]") {
     // One texel a step to the right from a texel centre lands on texel centres: with a length longer than the grid
     // every pixel of a row averages exactly that row's texels, each once. A sample beyond the edge, clamped to the
     // edge texel and counted, would weigh the ends of the row more.
@@ -228,7 +228,7 @@ TEST_CASE("exact LIC: a streamline that leaves the grid stops there, and nothing
     CHECK(grey(lic, n - 1, centre) == level(sum / (length + 1)));
 }
 
-TEST_CASE("exact LIC: every length of one walk is the image walked for it alone, in any order", "[flow]") {
+TEST_CASE("exact LIC: every length of one walk is the image walked for it alone, in any order", "[unit][flow]") {
     const int width = 40, height = 30;
     const std::vector<float> noise = gsv::white_noise(width, height, 4);
     const gsv::VelocityAt vortices = gsv::analytic_flow(FlowKind::Vortices, width, height, 1.5, 0, 2);
@@ -243,7 +243,7 @@ TEST_CASE("exact LIC: every length of one walk is the image walked for it alone,
     CHECK(together[0].rgba != together[1].rgba);
 }
 
-TEST_CASE("exact LIC refuses bad arguments with one line naming the value", "[flow]") {
+TEST_CASE("exact LIC refuses bad arguments with one line naming the value", "[unit][flow]") {
     const std::vector<float> noise(16, 0.5f);
     const gsv::VelocityAt still = [](dvec2) { return dvec2(0.0); };
     using gsv::test::gsv_error_message;
@@ -261,7 +261,7 @@ TEST_CASE("exact LIC refuses bad arguments with one line naming the value", "[fl
 }
 
 TEST_CASE("lab02: the sweep measures against the exact LIC, and midpoint steps come out well below Euler's",
-          "[lab02]") {
+          "[lab][lab02]") {
     gsv::test::TempDir dir;
     const auto sweep = [&](const std::vector<std::string>& settings) {
         std::vector<std::string> args{"sweep", "--size", "64x64", "--frames", "1", "--warmup", "0", "--knob", "length",

@@ -92,7 +92,7 @@ using gsv::test::source_root;
 
 }  // namespace
 
-TEST_CASE("mesh_data: uv sphere normals are unit and equal position/radius, without NaN at the poles") {
+TEST_CASE("mesh_data: uv sphere normals are unit and equal position/radius, without NaN at the poles", "[unit]") {
     for (const auto& [slices, stacks, radius] : {std::tuple{3, 2, 1.0f}, std::tuple{24, 12, 2.5f},
                                                  std::tuple{7, 5, 0.01f}, std::tuple{64, 33, 100.0f}}) {
         INFO("slices " << slices << " stacks " << stacks << " radius " << radius);
@@ -117,7 +117,7 @@ TEST_CASE("mesh_data: uv sphere normals are unit and equal position/radius, with
     }
 }
 
-TEST_CASE("mesh_data: uv sphere and torus have the documented counts") {
+TEST_CASE("mesh_data: uv sphere and torus have the documented counts", "[unit]") {
     const MeshData sphere = gsv::make_uv_sphere(16, 8);
     CHECK(sphere.positions.size() == 2 * 16 + 7 * 17);
     CHECK(sphere.triangle_count() == 2 * 16 * 7);
@@ -131,7 +131,7 @@ TEST_CASE("mesh_data: uv sphere and torus have the documented counts") {
     CHECK(torus.texcoords.size() == torus.positions.size());
 }
 
-TEST_CASE("mesh_data: sphere and torus triangles wind counter-clockwise seen from outside") {
+TEST_CASE("mesh_data: sphere and torus triangles wind counter-clockwise seen from outside", "[unit]") {
     const MeshData sphere = gsv::make_uv_sphere(20, 10, 3.0f);
     const int sphere_checked = for_each_proper_triangle(sphere, [&](glm::vec3 face, glm::vec3 a, glm::vec3 b,
                                                                     glm::vec3 c, std::size_t t) {
@@ -156,7 +156,7 @@ TEST_CASE("mesh_data: sphere and torus triangles wind counter-clockwise seen fro
     CHECK(torus_checked == static_cast<int>(torus.triangle_count()));
 }
 
-TEST_CASE("mesh_data: torus normals match the analytic formula") {
+TEST_CASE("mesh_data: torus normals match the analytic formula", "[unit]") {
     const float major = 1.5f;
     const float minor = 0.4f;
     const MeshData torus = gsv::make_torus(36, 18, major, minor);
@@ -170,7 +170,7 @@ TEST_CASE("mesh_data: torus normals match the analytic formula") {
     }
 }
 
-TEST_CASE("mesh_data: bad shape arguments throw gsv::Error naming the value") {
+TEST_CASE("mesh_data: bad shape arguments throw gsv::Error naming the value", "[unit]") {
     CHECK(contains(error_message([] { gsv::make_uv_sphere(2, 8); }), "slices must be at least 3, got 2"));
     CHECK(contains(error_message([] { gsv::make_uv_sphere(8, 1); }), "stacks must be at least 2, got 1"));
     CHECK(contains(error_message([] { gsv::make_uv_sphere(8, 4, 0.0f); }), "radius"));
@@ -186,7 +186,7 @@ TEST_CASE("mesh_data: bad shape arguments throw gsv::Error naming the value") {
     CHECK(contains(error_message([] { gsv::make_torus(8, 8, INFINITY, 0.5f); }), "major_radius"));
 }
 
-TEST_CASE("mesh_data: OBJ with quads, negative indices and every corner form loads") {
+TEST_CASE("mesh_data: OBJ with quads, negative indices and every corner form loads", "[unit]") {
     TempDir dir;
     const fs::path file = dir.write("square.obj",
                                     "# a unit square and a triangle over it\r\n"
@@ -231,7 +231,7 @@ TEST_CASE("mesh_data: OBJ with quads, negative indices and every corner form loa
     CHECK(mesh.indices[11] == mesh.indices[3 + 2]);
 }
 
-TEST_CASE("mesh_data: OBJ negative indices count back from the elements read so far") {
+TEST_CASE("mesh_data: OBJ negative indices count back from the elements read so far", "[unit]") {
     TempDir dir;
     const fs::path file = dir.write("two.obj",
                                     "v 0 0 0\nv 1 0 0\nv 0 1 0\n"
@@ -244,7 +244,7 @@ TEST_CASE("mesh_data: OBJ negative indices count back from the elements read so 
     CHECK(mesh.positions[mesh.indices[5]] == glm::vec3(5, 1, 0));
 }
 
-TEST_CASE("mesh_data: OBJ tolerates CRLF, tabs, a byte-order mark and trailing comments") {
+TEST_CASE("mesh_data: OBJ tolerates CRLF, tabs, a byte-order mark and trailing comments", "[unit]") {
     TempDir dir;
     const fs::path file = dir.write("windows.obj",
                                     "\xEF\xBB\xBFv 0 0 0\r\n"
@@ -259,7 +259,7 @@ TEST_CASE("mesh_data: OBJ tolerates CRLF, tabs, a byte-order mark and trailing c
     CHECK(mesh.positions[2] == glm::vec3(0, 1, 0));
 }
 
-TEST_CASE("mesh_data: OBJ without normals gets unit normals") {
+TEST_CASE("mesh_data: OBJ without normals gets unit normals", "[unit]") {
     TempDir dir;
     // A pentagon in the xy plane and a tetrahedron, no vn at all and no texture coordinates.
     const fs::path file = dir.write("plain.obj",
@@ -278,7 +278,7 @@ TEST_CASE("mesh_data: OBJ without normals gets unit normals") {
     CHECK(glm::length(corner_normal - glm::normalize(glm::vec3(-1, -1, -1))) < 1e-6f);
 }
 
-TEST_CASE("mesh_data: OBJ errors name the path and line") {
+TEST_CASE("mesh_data: OBJ errors name the path and line", "[unit]") {
     TempDir dir;
     const auto message_for = [&](const std::string& name, const std::string& text) {
         const fs::path file = dir.write(name, text);
@@ -320,7 +320,7 @@ TEST_CASE("mesh_data: OBJ errors name the path and line") {
     CHECK(contains(message, "no faces"));
 }
 
-TEST_CASE("mesh_data: OBJ with a zero-length normal falls back to a computed one") {
+TEST_CASE("mesh_data: OBJ with a zero-length normal falls back to a computed one", "[unit]") {
     TempDir dir;
     const fs::path file = dir.write("zero_normal.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 0\nvn 0 0 1\n"
                                                         "f 1//1 2//2 3//2\n");
@@ -329,7 +329,7 @@ TEST_CASE("mesh_data: OBJ with a zero-length normal falls back to a computed one
     for (glm::vec3 n : mesh.normals) CHECK(glm::length(n - glm::vec3(0, 0, 1)) < 1e-6f);
 }
 
-TEST_CASE("mesh_data: compute_vertex_normals survives zero-area triangles and weights by angle") {
+TEST_CASE("mesh_data: compute_vertex_normals survives zero-area triangles and weights by angle", "[unit]") {
     MeshData mesh;
     mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0},   // a proper triangle
                       {2, 0, 0}, {3, 0, 0}, {4, 0, 0},   // collinear: zero area
@@ -361,7 +361,7 @@ TEST_CASE("mesh_data: compute_vertex_normals survives zero-area triangles and we
     CHECK(glm::length(corner.normals[0] - glm::normalize(glm::vec3(-1, -1, -1))) < 1e-6f);
 }
 
-TEST_CASE("mesh_data: normal_matrix keeps normals perpendicular under non-uniform scale") {
+TEST_CASE("mesh_data: normal_matrix keeps normals perpendicular under non-uniform scale", "[unit]") {
     const glm::mat4 model_view = glm::scale(glm::mat4(1.0f), glm::vec3(2.0f, 1.0f, 1.0f));
     // A surface at 45 degrees: normal (1, 1, 0), spanned by the tangents (1, -1, 0) and (0, 0, 1).
     const glm::vec3 normal = glm::normalize(glm::vec3(1, 1, 0));
@@ -379,7 +379,7 @@ TEST_CASE("mesh_data: normal_matrix keeps normals perpendicular under non-unifor
     CHECK(glm::length(glm::dvec3(transformed) - glm::normalize(glm::dvec3(1, 2, 0))) < 1e-6);
 }
 
-TEST_CASE("mesh_data: normal_matrix equals the model-view's 3x3 for a rotation, and rejects singular ones") {
+TEST_CASE("mesh_data: normal_matrix equals the model-view's 3x3 for a rotation, and rejects singular ones", "[unit]") {
     const glm::mat4 rotation = glm::rotate(glm::mat4(1.0f), 0.7f, glm::normalize(glm::vec3(1, 2, 3)));
     const glm::mat4 model_view = glm::translate(glm::mat4(1.0f), glm::vec3(4, -5, 6)) * rotation;
     const glm::mat3 result = gsv::normal_matrix(model_view);
@@ -391,7 +391,7 @@ TEST_CASE("mesh_data: normal_matrix equals the model-view's 3x3 for a rotation, 
     CHECK(contains(error_message([&] { gsv::normal_matrix(flattened); }), "singular"));
 }
 
-TEST_CASE("mesh_data: bounds and normalize_to_unit_sphere") {
+TEST_CASE("mesh_data: bounds and normalize_to_unit_sphere", "[unit]") {
     MeshData torus = gsv::make_torus(24, 12, 30.0f, 10.0f);
     for (glm::vec3& p : torus.positions) p += glm::vec3(100.0f, -7.0f, 3.0f);
     const gsv::Bounds before = gsv::bounds_of(torus);
@@ -413,7 +413,7 @@ TEST_CASE("mesh_data: bounds and normalize_to_unit_sphere") {
     CHECK(contains(error_message([&] { gsv::normalize_to_unit_sphere(point); }), "radius"));
 }
 
-TEST_CASE("mesh_data: the shipped data/meshes/teapot.obj loads") {
+TEST_CASE("mesh_data: the shipped data/meshes/teapot.obj loads", "[unit]") {
     const fs::path file = source_root() / "data" / "meshes" / "teapot.obj";
     INFO(file.string());
     MeshData teapot = gsv::load_obj(file);

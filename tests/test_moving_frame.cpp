@@ -48,7 +48,7 @@ CriticalPoints critical_points(const FlowField& field) {
 
 }  // namespace
 
-TEST_CASE("moving frame: the observer's velocity is taken off every texel's x velocity, and must be finite", "[flow]") {
+TEST_CASE("moving frame: the observer's velocity is taken off every texel's x velocity, and must be finite", "[unit][flow]") {
     FlowField field;
     field.width = 2;
     field.height = 1;
@@ -62,7 +62,7 @@ TEST_CASE("moving frame: the observer's velocity is taken off every texel's x ve
     CHECK_THROWS_AS(gsv::seen_from_moving_frame(field, std::numeric_limits<double>::infinity()), gsv::Error);
 }
 
-TEST_CASE("moving frame: the vortex street shows its vortices only to an observer moving with them", "[flow]") {
+TEST_CASE("moving frame: the vortex street shows its vortices only to an observer moving with them", "[unit][flow]") {
     // The street as data/flows/vortex_street.flow holds it: 128 x 64 texels over [0,2]x[0,1], so a domain unit of
     // velocity along x is 64 texels per step before the sequence is scaled to its largest speed.
     const gsv::FlowSequence street = gsv::make_vortex_street(128, 64, 16, 1.0);

@@ -30,7 +30,7 @@ double neighbour_correlation(const std::vector<float>& v, int width, int height,
 
 }  // namespace
 
-TEST_CASE("splitmix64 reproduces the reference generator's outputs", "[noise][flow]") {
+TEST_CASE("splitmix64 reproduces the reference generator's outputs", "[unit][noise][flow]") {
     // Vigna's splitmix64.c with state 0: published test vectors, so any platform difference shows here.
     std::uint64_t state = 0;
     CHECK(gsv::splitmix64_next(state) == 0xE220A8397B1DCDAFull);
@@ -42,7 +42,7 @@ TEST_CASE("splitmix64 reproduces the reference generator's outputs", "[noise][fl
     CHECK(gsv::unit_double(~std::uint64_t(0)) < 1.0);
 }
 
-TEST_CASE("white noise is pinned to the hash of the texel index, row 0 at the bottom", "[noise][flow]") {
+TEST_CASE("white noise is pinned to the hash of the texel index, row 0 at the bottom", "[unit][noise][flow]") {
     const std::vector<float> first = gsv::white_noise(1, 1, 0);
     REQUIRE(first.size() == 1);
     CHECK(first[0] == 0xE220A8 / 16777216.0f);  // the top 24 bits of hash64(0, 0)
@@ -55,7 +55,7 @@ TEST_CASE("white noise is pinned to the hash of the texel index, row 0 at the bo
             CHECK(noise[y * width + x] == gsv::unit_float(gsv::hash64(42, static_cast<std::uint64_t>(y * width + x))));
 }
 
-TEST_CASE("white noise is deterministic and depends on the seed", "[noise][flow]") {
+TEST_CASE("white noise is deterministic and depends on the seed", "[unit][noise][flow]") {
     const std::vector<float> a = gsv::white_noise(64, 32, 7);
     CHECK(a == gsv::white_noise(64, 32, 7));
     const std::vector<float> b = gsv::white_noise(64, 32, 8);
@@ -64,7 +64,7 @@ TEST_CASE("white noise is deterministic and depends on the seed", "[noise][flow]
     CHECK(same < 5);
 }
 
-TEST_CASE("white noise is uniform on the unit interval with independent neighbours", "[noise][flow]") {
+TEST_CASE("white noise is uniform on the unit interval with independent neighbours", "[unit][noise][flow]") {
     const int side = 256;
     const std::vector<float> noise = gsv::white_noise(side, side, 1);
     double sum = 0.0, sum_sq = 0.0;
@@ -90,7 +90,7 @@ TEST_CASE("white noise is uniform on the unit interval with independent neighbou
     CHECK(std::abs(neighbour_correlation(noise, side, side, 0, 1, mean, variance)) < 0.02);
 }
 
-TEST_CASE("white noise refuses sizes outside 1..8192", "[noise][flow]") {
+TEST_CASE("white noise refuses sizes outside 1..8192", "[unit][noise][flow]") {
     CHECK(gsv_error_message([] { gsv::white_noise(0, 4, 1); }) == "white_noise: width must be 1..8192, got 0");
     CHECK(gsv_error_message([] { gsv::white_noise(4, 8193, 1); }) == "white_noise: height must be 1..8192, got 8193");
     CHECK(contains(gsv_error_message([] { gsv::white_noise(-3, 4, 1); }), "got -3"));

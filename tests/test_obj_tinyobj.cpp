@@ -101,7 +101,7 @@ int position_index(const std::string& corner) { return std::stoi(corner.substr(0
 
 }  // namespace
 
-TEST_CASE("obj: the kit's reader and tinyobjloader give the same surface on the teapot as exporters write it", "[mesh]") {
+TEST_CASE("obj: the kit's reader and tinyobjloader give the same surface on the teapot as exporters write it", "[unit][mesh]") {
     TempDir dir;
     const fs::path teapot = fs::path(GSV_SOURCE_ROOT) / "data/meshes/teapot.obj";
     check_same_surface(teapot);
@@ -156,7 +156,7 @@ TEST_CASE("obj: the kit's reader and tinyobjloader give the same surface on the 
     }
 }
 
-TEST_CASE("obj: quads and convex polygons become the same surface in both readers", "[mesh]") {
+TEST_CASE("obj: quads and convex polygons become the same surface in both readers", "[unit][mesh]") {
     TempDir dir;
     // A unit cube of quads and a regular hexagon: any triangulation of a convex face has its area and moment.
     std::string text = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"

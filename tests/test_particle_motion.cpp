@@ -84,7 +84,7 @@ std::vector<std::size_t> all_indices(std::size_t count) { return gsv::reference_
 // ---------------------------------------------------------------------------------------------------------
 // Integrators on fields with known answers
 
-TEST_CASE("particles: one turn of rotation gives each integrator's closed-form radius ratio", "[particles]") {
+TEST_CASE("particles: one turn of rotation gives each integrator's closed-form radius ratio", "[unit][particles]") {
     // One step multiplies z = x + iy by the method's stability polynomial at ih; 63 steps of 0.1 is one turn.
     const double h = 0.1;
     const int steps = 63;
@@ -112,7 +112,7 @@ TEST_CASE("particles: one turn of rotation gives each integrator's closed-form r
     }
 }
 
-TEST_CASE("particles: a particle on a stagnation point stays exactly there", "[particles]") {
+TEST_CASE("particles: a particle on a stagnation point stays exactly there", "[unit][particles]") {
     for (ParticleScene scene : {ParticleScene::Rotation, ParticleScene::Saddle})
         for (Integrator integrator : gsv::kIntegrators) {
             INFO(gsv::particle_scene_name(scene) << " " << gsv::integrator_name(integrator));
@@ -128,7 +128,7 @@ TEST_CASE("particles: a particle on a stagnation point stays exactly there", "[p
         }
 }
 
-TEST_CASE("particles: leaving the domain returns to the origin, while the boundary itself is inside", "[particles]") {
+TEST_CASE("particles: leaving the domain returns to the origin, while the boundary itself is inside", "[unit][particles]") {
     const auto check_both = [](const StepSpec& spec, glm::dvec3 p, glm::dvec3 v, glm::dvec3 p0, glm::dvec3 v0,
                                glm::dvec3 want_p, glm::dvec3 want_v, bool want_exit) {
         glm::dvec3 pd = p, vd = v;
@@ -167,7 +167,7 @@ TEST_CASE("particles: leaving the domain returns to the origin, while the bounda
     }
 }
 
-TEST_CASE("particles: gravity's midpoint and rk4 follow the exact parabola, Euler lags by G h t / 2", "[particles]") {
+TEST_CASE("particles: gravity's midpoint and rk4 follow the exact parabola, Euler lags by G h t / 2", "[unit][particles]") {
     const double G = 2, h = 0.01;
     const int n = 100;
     const double t = n * h;
@@ -192,7 +192,7 @@ TEST_CASE("particles: gravity's midpoint and rk4 follow the exact parabola, Eule
 // ---------------------------------------------------------------------------------------------------------
 // The velocity grid
 
-TEST_CASE("particles: the grid holds the field at texel centres, x fastest", "[particles]") {
+TEST_CASE("particles: the grid holds the field at texel centres, x fastest", "[unit][particles]") {
     const int n = 5;
     const VelocityGrid grid = VelocityGrid::sample(ParticleScene::Abc, n);
     REQUIRE(grid.n == n);
@@ -209,7 +209,7 @@ TEST_CASE("particles: the grid holds the field at texel centres, x fastest", "[p
             }
 }
 
-TEST_CASE("particles: grid lookup gives texels at centres, the trilinear mix between, the edge beyond", "[particles]") {
+TEST_CASE("particles: grid lookup gives texels at centres, the trilinear mix between, the edge beyond", "[unit][particles]") {
     // A power-of-two side: texel centres and these fractions are exact in binary.
     const int n = 16;
     const VelocityGrid grid = VelocityGrid::sample(ParticleScene::Abc, n);
@@ -252,7 +252,7 @@ TEST_CASE("particles: grid lookup gives texels at centres, the trilinear mix bet
     }
 }
 
-TEST_CASE("particles: integrating through a finer grid comes closer to the analytic path", "[particles]") {
+TEST_CASE("particles: integrating through a finer grid comes closer to the analytic path", "[unit][particles]") {
     const std::vector<glm::dvec3> starts = inner_points(64, 0.7, 11);
     const ParticleSet set = field_set(ParticleScene::Abc, starts);
     const StepSpec analytic{ParticleScene::Abc, Integrator::Rk4, 0.01};
@@ -277,7 +277,7 @@ TEST_CASE("particles: integrating through a finer grid comes closer to the analy
 // ---------------------------------------------------------------------------------------------------------
 // Orders of accuracy against the converged reference
 
-TEST_CASE("particles: abc errors fall with each integrator's order as h halves", "[particles]") {
+TEST_CASE("particles: abc errors fall with each integrator's order as h halves", "[unit][particles]") {
     // Starts within 0.3 of the centre and a time of 0.8: speeds are below 0.9 per axis, so nobody can leave.
     const ParticleSet set = field_set(ParticleScene::Abc, inner_points(32, 0.3, 5));
     const std::vector<std::size_t> indices = all_indices(set.count());
@@ -311,7 +311,7 @@ TEST_CASE("particles: abc errors fall with each integrator's order as h halves",
 // The multi-threaded CPU update
 
 TEST_CASE("particles: advance_cpu is bit-identical for any thread count and leaves the sentinels alone",
-          "[particles]") {
+          "[unit][particles]") {
     const std::size_t count = 10007, capacity = 10240;
     for (ParticleScene scene : {ParticleScene::Abc, ParticleScene::Gravity}) {
         INFO(gsv::particle_scene_name(scene));
@@ -341,7 +341,7 @@ TEST_CASE("particles: advance_cpu is bit-identical for any thread count and leav
     }
 }
 
-TEST_CASE("particles: advance_cpu in float agrees with the double reference of the same method", "[particles]") {
+TEST_CASE("particles: advance_cpu in float agrees with the double reference of the same method", "[unit][particles]") {
     const std::size_t count = 10007;
     for (ParticleScene scene : {ParticleScene::Abc, ParticleScene::Gravity, ParticleScene::Saddle})
         for (Integrator integrator : gsv::kIntegrators) {
@@ -360,7 +360,7 @@ TEST_CASE("particles: advance_cpu in float agrees with the double reference of t
         }
 }
 
-TEST_CASE("particles: advance_cpu with a grid matches step_particle through the same grid", "[particles]") {
+TEST_CASE("particles: advance_cpu with a grid matches step_particle through the same grid", "[unit][particles]") {
     const VelocityGrid grid = VelocityGrid::sample(ParticleScene::Abc, 12);
     StepSpec spec{ParticleScene::Abc, Integrator::Midpoint, 0.05};
     spec.grid = &grid;
@@ -377,7 +377,7 @@ TEST_CASE("particles: advance_cpu with a grid matches step_particle through the 
 // ---------------------------------------------------------------------------------------------------------
 // Initial sets and small helpers
 
-TEST_CASE("particles: make_particles is deterministic for a seed and inside the domain", "[particles]") {
+TEST_CASE("particles: make_particles is deterministic for a seed and inside the domain", "[unit][particles]") {
     for (ParticleScene scene : gsv::kParticleScenes) {
         INFO(gsv::particle_scene_name(scene));
         const ParticleSet a = gsv::make_particles(scene, 1000, 7), b = gsv::make_particles(scene, 1000, 7);
@@ -420,7 +420,7 @@ TEST_CASE("particles: make_particles is deterministic for a seed and inside the 
     }
 }
 
-TEST_CASE("particles: pad_particles fills the capacity with undrawn sentinels", "[particles]") {
+TEST_CASE("particles: pad_particles fills the capacity with undrawn sentinels", "[unit][particles]") {
     const ParticleSet set = gsv::make_particles(ParticleScene::Rotation, 1000, 3);
     const ParticleSet padded = gsv::pad_particles(set, 1024);
     REQUIRE(padded.count() == 1024);
@@ -437,7 +437,7 @@ TEST_CASE("particles: pad_particles fills the capacity with undrawn sentinels", 
     CHECK(contains(gsv_error_message([&] { gsv::pad_particles(set, 999); }), "999"));
 }
 
-TEST_CASE("particles: reference_sample spreads at most the asked number of indices evenly", "[particles]") {
+TEST_CASE("particles: reference_sample spreads at most the asked number of indices evenly", "[unit][particles]") {
     CHECK(gsv::reference_sample(5, 4096) == std::vector<std::size_t>{0, 1, 2, 3, 4});
     CHECK(gsv::reference_sample(10, 4) == std::vector<std::size_t>{0, 2, 5, 7});
     CHECK(gsv::reference_sample(10, 0).empty());
@@ -448,7 +448,7 @@ TEST_CASE("particles: reference_sample spreads at most the asked number of indic
     CHECK(std::is_sorted(big.begin(), big.end()));
 }
 
-TEST_CASE("particles: bandwidth is positive and finite, and traffic per step is as documented", "[particles]") {
+TEST_CASE("particles: bandwidth is positive and finite, and traffic per step is as documented", "[unit][particles]") {
     const double rate = gsv::measure_copy_bandwidth(1 << 16, 3);
     CHECK(std::isfinite(rate));
     CHECK(rate > 0);
@@ -457,7 +457,7 @@ TEST_CASE("particles: bandwidth is positive and finite, and traffic per step is 
     CHECK(gsv::bytes_per_particle_step({ParticleScene::Gravity, Integrator::Euler, 0.01}) == 80);
 }
 
-TEST_CASE("particles: names round-trip and bad input is refused naming the value", "[particles]") {
+TEST_CASE("particles: names round-trip and bad input is refused naming the value", "[unit][particles]") {
     for (ParticleScene scene : gsv::kParticleScenes)
         CHECK(gsv::particle_scene_from_name(gsv::particle_scene_name(scene)) == scene);
     for (Integrator integrator : gsv::kIntegrators)

@@ -215,7 +215,7 @@ std::string parse_error(const std::string& text) {
 
 }  // namespace
 
-TEST_CASE("network: processors built in code run in dependency order and pass data along", "[network]") {
+TEST_CASE("network: processors built in code run in dependency order and pass data along", "[unit][network]") {
     gsv::Network network;
     Sink& sink = network.add<Sink>("sink");
     network.add<Doubler>("twice");
@@ -246,7 +246,7 @@ TEST_CASE("network: processors built in code run in dependency order and pass da
     CHECK(static_cast<Sink&>(fan.processor("sink")).got == 10);
 }
 
-TEST_CASE("network: execution order is stable with ties broken by the order added", "[network]") {
+TEST_CASE("network: execution order is stable with ties broken by the order added", "[unit][network]") {
     gsv::Network network;
     network.add<Sink>("first_sink");
     network.add<NumberSource>("x");
@@ -271,7 +271,7 @@ TEST_CASE("network: execution order is stable with ties broken by the order adde
     CHECK(order_names(same) == std::vector<std::string>{"x", "first_sink", "y", "second_sink"});
 }
 
-TEST_CASE("network: connect names the unknown processor or port and the known ones", "[network]") {
+TEST_CASE("network: connect names the unknown processor or port and the known ones", "[unit][network]") {
     gsv::Network network;
     network.add<NumberSource>("source");
     network.add<Doubler>("twice");
@@ -290,7 +290,7 @@ TEST_CASE("network: connect names the unknown processor or port and the known on
     CHECK(network.connections().empty());
 }
 
-TEST_CASE("network: connect runs from an output to an input only", "[network]") {
+TEST_CASE("network: connect runs from an output to an input only", "[unit][network]") {
     gsv::Network network;
     network.add<NumberSource>("source");
     network.add<Doubler>("twice");
@@ -303,7 +303,7 @@ TEST_CASE("network: connect runs from an output to an input only", "[network]") 
           "input");
 }
 
-TEST_CASE("network: connect refuses ports of different types naming both ports and types", "[network]") {
+TEST_CASE("network: connect refuses ports of different types naming both ports and types", "[unit][network]") {
     gsv::Network network;
     network.add("source", std::make_unique<VolumeSource>());
     network.add("points", std::make_unique<EntryExitPoints>());
@@ -312,7 +312,7 @@ TEST_CASE("network: connect refuses ports of different types naming both ports a
           "geometry input");
 }
 
-TEST_CASE("network: an input takes one connection", "[network]") {
+TEST_CASE("network: an input takes one connection", "[unit][network]") {
     gsv::Network network;
     network.add<NumberSource>("a");
     network.add<NumberSource>("b");
@@ -325,7 +325,7 @@ TEST_CASE("network: an input takes one connection", "[network]") {
     CHECK(network.connections().size() == 1);
 }
 
-TEST_CASE("network: connect refuses a cycle and names it", "[network]") {
+TEST_CASE("network: connect refuses a cycle and names it", "[unit][network]") {
     gsv::Network network;
     network.add<Doubler>("a");
     network.add<Doubler>("b");
@@ -346,7 +346,7 @@ TEST_CASE("network: connect refuses a cycle and names it", "[network]") {
     CHECK(order_names(network) == std::vector<std::string>{"a", "b", "c", "d"});
 }
 
-TEST_CASE("network: validate names every unconnected required input and optional ones may stay open", "[network]") {
+TEST_CASE("network: validate names every unconnected required input and optional ones may stay open", "[unit][network]") {
     gsv::Network network;
     network.add<NumberSource>("source");
     network.add<Adder>("add");
@@ -363,7 +363,7 @@ TEST_CASE("network: validate names every unconnected required input and optional
 }
 
 TEST_CASE("network: a failing processor marks everything downstream not run while independent branches run",
-          "[network]") {
+          "[unit][network]") {
     gsv::Network network;
     network.add<NumberSource>("left", 1.0);
     network.add<Doubler>("left_twice");
@@ -397,7 +397,7 @@ TEST_CASE("network: a failing processor marks everything downstream not run whil
     CHECK(gsv_error_message([&] { (void)report.at("nobody"); }) == "the run report has no processor 'nobody'");
 }
 
-TEST_CASE("network: a skip two steps down names the failures that caused it", "[network]") {
+TEST_CASE("network: a skip two steps down names the failures that caused it", "[unit][network]") {
     gsv::Network network;
     network.add<NumberSource>("a");
     network.add<NumberSource>("b");
@@ -419,7 +419,7 @@ TEST_CASE("network: a skip two steps down names the failures that caused it", "[
           "sink: not run: a and b failed\n");
 }
 
-TEST_CASE("network: a second run starts clean", "[network]") {
+TEST_CASE("network: a second run starts clean", "[unit][network]") {
     gsv::Network network;
     network.add<NumberSource>("source", 4.0);
     network.add<Sink>("sink");
@@ -437,7 +437,7 @@ TEST_CASE("network: a second run starts clean", "[network]") {
     CHECK(*network.processor("source").outputs()[0].data.as<double>() == 4);
 }
 
-TEST_CASE("network: an empty connected output or a value of the wrong C++ type fails its processor", "[network]") {
+TEST_CASE("network: an empty connected output or a value of the wrong C++ type fails its processor", "[unit][network]") {
     gsv::Network network;
     network.add("lazy", std::make_unique<Careless>(false));
     network.add("unread", std::make_unique<Careless>(false));
@@ -455,7 +455,7 @@ TEST_CASE("network: an empty connected output or a value of the wrong C++ type f
           "after_ints: failed: input after_ints.in holds another C++ type than process() asks for\n");
 }
 
-TEST_CASE("network: any exception from process is reported but a missing GL feature ends the run", "[network]") {
+TEST_CASE("network: any exception from process is reported but a missing GL feature ends the run", "[unit][network]") {
     class Throws : public gsv::Processor {
     public:
         explicit Throws(bool unsupported) : Processor("Throws"), unsupported_(unsupported) {}
@@ -475,7 +475,7 @@ TEST_CASE("network: any exception from process is reported but a missing GL feat
     CHECK(network.processor("old_gl").error() == "compute shaders need OpenGL 4.3");
 }
 
-TEST_CASE("network: properties are declared with defaults and choices and unknown ones list the known", "[network]") {
+TEST_CASE("network: properties are declared with defaults and choices and unknown ones list the known", "[unit][network]") {
     RayTraversal raycaster;
     CHECK(raycaster.property("compositing") == "dvr");
     CHECK_FALSE(raycaster.properties()[0].set);
@@ -517,7 +517,7 @@ TEST_CASE("network: properties are declared with defaults and choices and unknow
           "Sloppy: property name 'a=b' may only use letters, digits, '_' and '-'");
 }
 
-TEST_CASE("network: processor names are unique and file-safe and unknown ones list the known", "[network]") {
+TEST_CASE("network: processor names are unique and file-safe and unknown ones list the known", "[unit][network]") {
     gsv::Network network;
     network.add<NumberSource>("source");
     CHECK(gsv_error_message([&] { network.add<Sink>("source"); }) ==
@@ -535,7 +535,7 @@ TEST_CASE("network: processor names are unique and file-safe and unknown ones li
     CHECK(network.processors().size() == 1);
 }
 
-TEST_CASE("network: the registry creates known types and lists them for an unknown one", "[network]") {
+TEST_CASE("network: the registry creates known types and lists them for an unknown one", "[unit][network]") {
     const gsv::ProcessorRegistry registry = lab_registry();
     CHECK(registry.create("RayTraversal")->type_name() == "RayTraversal");
     CHECK(registry.contains("Canvas"));
@@ -556,7 +556,7 @@ TEST_CASE("network: the registry creates known types and lists them for an unkno
           "the factory for processor type 'Screen' made a 'Canvas'");
 }
 
-TEST_CASE("network file: the lab network parses and runs from source to canvas", "[network]") {
+TEST_CASE("network file: the lab network parses and runs from source to canvas", "[unit][network]") {
     gsv::Network network = gsv::parse_network(kLabNetwork, "dvr.txt", lab_registry());
     CHECK(order_names(network) == std::vector<std::string>{"source", "proxy", "entry_exit", "raycaster", "output"});
     CHECK(network.processor("raycaster").property("shading") == "phong");
@@ -577,7 +577,7 @@ TEST_CASE("network file: the lab network parses and runs from source to canvas",
           "output: not run: raycaster failed\n");
 }
 
-TEST_CASE("network file: blanks and quotes and comments and CRLF line ends", "[network]") {
+TEST_CASE("network file: blanks and quotes and comments and CRLF line ends", "[unit][network]") {
     const std::string text =
         "\xEF\xBB\xBFprocessor Canvas output\r\n"
         "# exported on Windows, where paths have spaces\r\n"
@@ -597,7 +597,7 @@ TEST_CASE("network file: blanks and quotes and comments and CRLF line ends", "[n
           "filter(front(cube(volume(my data/head #1.nii))))");
 }
 
-TEST_CASE("network file: every mistake is one line naming the file and line", "[network]") {
+TEST_CASE("network file: every mistake is one line naming the file and line", "[unit][network]") {
     const std::string three =
         "processor VolumeSource source\n"
         "processor ProxySource proxy\n"
@@ -672,7 +672,7 @@ TEST_CASE("network file: every mistake is one line naming the file and line", "[
     }
 }
 
-TEST_CASE("network file: required inputs left open are reported after the last line", "[network]") {
+TEST_CASE("network file: required inputs left open are reported after the last line", "[unit][network]") {
     const std::string full = kLabNetwork;
     const std::string entry = "connect entry_exit.entry -> raycaster.entry\n";
     const std::string exit = "connect entry_exit.exit -> raycaster.exit\n";
@@ -688,7 +688,7 @@ TEST_CASE("network file: required inputs left open are reported after the last l
     CHECK(gsv::parse_network("# nothing yet\n", "net.txt", lab_registry()).processors().empty());
 }
 
-TEST_CASE("network file: written text parses back to the same network", "[network]") {
+TEST_CASE("network file: written text parses back to the same network", "[unit][network]") {
     // Canonical form: properties that were set, in declared order; a blank line; connections in order made.
     const std::string canonical =
         "processor VolumeSource source file=\"my data/head.nii\"\n"
@@ -749,7 +749,7 @@ TEST_CASE("network file: written text parses back to the same network", "[networ
           "source.file = 'say \"hi\".nii' cannot be written to a network file (no double quotes or line breaks)");
 }
 
-TEST_CASE("network file: read_network_file names the file it cannot read and the line at fault", "[network]") {
+TEST_CASE("network file: read_network_file names the file it cannot read and the line at fault", "[unit][network]") {
     gsv::test::TempDir dir;
     const gsv::ProcessorRegistry registry = lab_registry();
     CHECK(gsv_error_message([&] { gsv::read_network_file(dir.path("missing.txt"), registry); }) ==
@@ -766,7 +766,7 @@ TEST_CASE("network file: read_network_file names the file it cannot read and the
 }
 
 TEST_CASE("network: port images are named processor.port.png and written for image outputs that hold data",
-          "[network]") {
+          "[unit][network]") {
     CHECK(gsv::port_image_file_name("raycaster", "image") == "raycaster.image.png");
     CHECK(gsv::port_image_file_name("entry_exit", "entry") == "entry_exit.entry.png");
 
@@ -804,7 +804,7 @@ TEST_CASE("network: port images are named processor.port.png and written for ima
     CHECK(written.size() == 2);
 }
 
-TEST_CASE("network: port data keeps its C++ type", "[network]") {
+TEST_CASE("network: port data keeps its C++ type", "[unit][network]") {
     const gsv::PortData empty;
     CHECK(empty.empty());
     CHECK(empty.as<double>() == nullptr);

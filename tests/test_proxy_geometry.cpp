@@ -207,7 +207,7 @@ std::optional<double> first_hit(const std::vector<Triangle>& triangles, glm::dve
 // ---------------------------------------------------------------------------------------------------
 // The box and its model-space placement
 
-TEST_CASE("proxy: the unclipped box is 12 outward triangles whose positions are its texture coordinates", "[proxy]") {
+TEST_CASE("proxy: the unclipped box is 12 outward triangles whose positions are its texture coordinates", "[unit][proxy]") {
     const ProxyGeometry proxy;
     const MeshData mesh = proxy.mesh();
     REQUIRE(mesh.triangle_count() == 12);
@@ -229,7 +229,7 @@ TEST_CASE("proxy: the unclipped box is 12 outward triangles whose positions are 
 }
 
 TEST_CASE("proxy: the volume box maps texture coordinates linearly onto a centred box whose largest side is 2",
-          "[proxy]") {
+          "[unit][proxy]") {
     const glm::dvec3 extent(33 * 3.0, 41 * 3.0, 25 * 3.0);
     const gsv::VolumeBox box(extent);
     CHECK(box.size().y == 2.0);
@@ -285,7 +285,7 @@ TEST_CASE("proxy: the volume box maps texture coordinates linearly onto a centre
 // ---------------------------------------------------------------------------------------------------
 // Clipping
 
-TEST_CASE("proxy: an axis plane at 0.5 halves the volume and adds one cap of area 1", "[proxy]") {
+TEST_CASE("proxy: an axis plane at 0.5 halves the volume and adds one cap of area 1", "[unit][proxy]") {
     for (int axis = 0; axis < 3; ++axis)
         for (const double sign : {1.0, -1.0}) {
             INFO("axis " << axis << " sign " << sign);
@@ -309,7 +309,7 @@ TEST_CASE("proxy: an axis plane at 0.5 halves the volume and adds one cap of are
         }
 }
 
-TEST_CASE("proxy: oblique planes through the centre halve the volume", "[proxy]") {
+TEST_CASE("proxy: oblique planes through the centre halve the volume", "[unit][proxy]") {
     for (const glm::dvec3& normal : {glm::dvec3(1, 1, 1), glm::dvec3(1, 2, 3), glm::dvec3(-0.3, 0.7, 0.2),
                                     glm::dvec3(1, -1, 0), glm::dvec3(0, 5, -1e-3)}) {
         INFO("normal (" << normal.x << ", " << normal.y << ", " << normal.z << ")");
@@ -329,7 +329,7 @@ TEST_CASE("proxy: oblique planes through the centre halve the volume", "[proxy]"
         if (face.tag == gsv::kFirstClipTag) CHECK(face.loop.size() == 6);
 }
 
-TEST_CASE("proxy: planes through a vertex, along an edge or on a face keep, cut or remove exactly", "[proxy]") {
+TEST_CASE("proxy: planes through a vertex, along an edge or on a face keep, cut or remove exactly", "[unit][proxy]") {
     struct Case {
         const char* name;
         Plane plane;
@@ -371,7 +371,7 @@ TEST_CASE("proxy: planes through a vertex, along an edge or on a face keep, cut 
 }
 
 TEST_CASE("proxy: a plane that keeps everything changes nothing and one that removes everything leaves an empty mesh",
-          "[proxy]") {
+          "[unit][proxy]") {
     for (const Plane& plane : {Plane{{1, 0, 0}, 5}, Plane{{1, 2, 3}, 6 + 1e-3}, Plane{{-1, -1, -1}, 0}}) {
         const ProxyGeometry proxy({plane});
         CHECK(proxy.mesh().triangle_count() == 12);
@@ -390,7 +390,7 @@ TEST_CASE("proxy: a plane that keeps everything changes nothing and one that rem
     }
 }
 
-TEST_CASE("proxy: several planes cut the volume to its analytic value in any order", "[proxy]") {
+TEST_CASE("proxy: several planes cut the volume to its analytic value in any order", "[unit][proxy]") {
     const std::vector<Plane> slab = {{{-1, 0, 0}, -0.2}, {{1, 0, 0}, 0.7}, {{0, 1, 0}, 0.6}, {{0, 0, -1}, -0.1}};
     std::vector<Plane> order = slab;
     std::sort(order.begin(), order.end(), [](const Plane& a, const Plane& b) { return a.offset < b.offset; });
@@ -425,7 +425,7 @@ TEST_CASE("proxy: several planes cut the volume to its analytic value in any ord
     CHECK(ProxyGeometry({Plane{{1, 0, 0}, 0.3}, Plane{{-1, 0, 0}, -0.6}}).empty());
 }
 
-TEST_CASE("proxy: thin slivers stay closed, and one thinner than the epsilon is removed", "[proxy]") {
+TEST_CASE("proxy: thin slivers stay closed, and one thinner than the epsilon is removed", "[unit][proxy]") {
     // A slab 2e-5 thick.
     const ProxyGeometry slab({Plane{{1, 0, 0}, 0.5 + 1e-5}, Plane{{-1, 0, 0}, -(0.5 - 1e-5)}});
     check_proxy(slab);
@@ -449,7 +449,7 @@ TEST_CASE("proxy: thin slivers stay closed, and one thinner than the epsilon is 
     CHECK(too_thin.mesh().indices.empty());
 }
 
-TEST_CASE("proxy: non-unit normals are made unit length and a zero normal is an error naming the plane", "[proxy]") {
+TEST_CASE("proxy: non-unit normals are made unit length and a zero normal is an error naming the plane", "[unit][proxy]") {
     const ProxyGeometry reference({Plane{{1, 0, 0}, 0.5}});
     for (const Plane& plane : {Plane{{2, 0, 0}, 1}, Plane{{1e-200, 0, 0}, 0.5e-200}, Plane{{1e200, 0, 0}, 0.5e200},
                                Plane{{0.25, 0, 0}, 0.125}}) {
@@ -475,7 +475,7 @@ TEST_CASE("proxy: non-unit normals are made unit length and a zero normal is an 
 }
 
 TEST_CASE("proxy: random plane sets give closed outward meshes with volume in 0 to 1 that agree with sampling",
-          "[proxy]") {
+          "[unit][proxy]") {
     Random random{20240607};
     int non_empty = 0, cut = 0;
     for (int set = 0; set < 300; ++set) {
@@ -511,7 +511,7 @@ TEST_CASE("proxy: random plane sets give closed outward meshes with volume in 0 
 }
 
 TEST_CASE("proxy: planes through earlier corners or nearly parallel to earlier planes still give closed meshes",
-          "[proxy]") {
+          "[unit][proxy]") {
     // The epsilon's hard cases on purpose: each plane passes within 1e-10 .. 1e-4 of a corner the earlier
     // planes made, or through two of them, or is an earlier plane tilted and shifted by 1e-9 .. 1e-3,
     // either way round. Bodies thinner than the epsilon vanish; the rest must stay closed and outward.
@@ -555,7 +555,7 @@ TEST_CASE("proxy: planes through earlier corners or nearly parallel to earlier p
 // ---------------------------------------------------------------------------------------------------
 // The near-plane cap and the camera inside
 
-TEST_CASE("proxy: a camera at the centre gets a near cap that is the box cross-section", "[proxy]") {
+TEST_CASE("proxy: a camera at the centre gets a near cap that is the box cross-section", "[unit][proxy]") {
     const gsv::VolumeBox box({33 * 3.0, 41 * 3.0, 25 * 3.0});
     const ProxyGeometry proxy;
     const glm::dvec3 eye_texture = box.texture_from_model(glm::dvec3(0.0));
@@ -595,7 +595,7 @@ TEST_CASE("proxy: a camera at the centre gets a near cap that is the box cross-s
 }
 
 TEST_CASE("proxy: the near cap is empty when the near plane misses the proxy, and present when it reaches in",
-          "[proxy]") {
+          "[unit][proxy]") {
     const gsv::VolumeBox box({64.0, 64.0, 128.0});
     const ProxyGeometry proxy;
     const auto cap_for = [&](glm::dvec3 eye, glm::dvec3 forward, double near) {
@@ -632,7 +632,7 @@ TEST_CASE("proxy: the near cap is empty when the near plane misses the proxy, an
 }
 
 TEST_CASE("proxy: front faces plus the near cap give the exact entry points for a camera inside the volume",
-          "[proxy]") {
+          "[unit][proxy]") {
     // What the GL side draws into the entry image, rasterized on the CPU: per pixel ray, the nearest
     // front-facing proxy triangle beyond the near plane, or the cap. It must start each ray where the exact
     // span does, or at the near plane where the span starts behind it.
@@ -684,7 +684,7 @@ TEST_CASE("proxy: front faces plus the near cap give the exact entry points for 
 // ---------------------------------------------------------------------------------------------------
 // The exact ray reference
 
-TEST_CASE("proxy: ray spans agree with brute-force marching for random rays and planes", "[proxy]") {
+TEST_CASE("proxy: ray spans agree with brute-force marching for random rays and planes", "[unit][proxy]") {
     Random random{31337};
     int hits = 0;
     for (int ray = 0; ray < 300; ++ray) {
@@ -724,7 +724,7 @@ TEST_CASE("proxy: ray spans agree with brute-force marching for random rays and 
     CHECK(hits > 60);
 }
 
-TEST_CASE("proxy: ray spans with a direction component of exactly 0 and the origin on a slab plane", "[proxy]") {
+TEST_CASE("proxy: ray spans with a direction component of exactly 0 and the origin on a slab plane", "[unit][proxy]") {
     const auto span = [](glm::dvec3 o, glm::dvec3 d, std::vector<Plane> planes = {}) {
         return gsv::ray_proxy_span(o, d, planes);
     };
@@ -766,7 +766,7 @@ TEST_CASE("proxy: ray spans with a direction component of exactly 0 and the orig
     CHECK(s->exit > 0.0);
 }
 
-TEST_CASE("proxy: a ray along an edge, grazing an edge or a corner, and rays that miss", "[proxy]") {
+TEST_CASE("proxy: a ray along an edge, grazing an edge or a corner, and rays that miss", "[unit][proxy]") {
     const auto span = [](glm::dvec3 o, glm::dvec3 d, std::vector<Plane> planes = {}) {
         return gsv::ray_proxy_span(o, d, planes);
     };

@@ -289,7 +289,7 @@ float blob(int i, int j, int k) {
 
 }  // namespace
 
-TEST_CASE("raycast_config: names print and parse, and a bad name is one line naming it and the known ones", "[raycast]") {
+TEST_CASE("raycast_config: names print and parse, and a bad name is one line naming it and the known ones", "[unit][raycast]") {
     for (G g : {G::None, G::Forward, G::Central, G::Precomputed}) CHECK(parse_gradient(name_of(g)) == g);
     for (C c : {C::Raw, C::TransferFunction}) CHECK(parse_classification(name_of(c)) == c);
     for (S s : {S::None, S::Phong}) CHECK(parse_shading(name_of(s)) == s);
@@ -302,7 +302,7 @@ TEST_CASE("raycast_config: names print and parse, and a bad name is one line nam
           "compositing dvr, gradient central, classification tf, shading phong, early termination on");
 }
 
-TEST_CASE("raycast_config: Phong without a gradient is refused in one line, and 56 configurations remain", "[raycast]") {
+TEST_CASE("raycast_config: Phong without a gradient is refused in one line, and 56 configurations remain", "[unit][raycast]") {
     const std::string refusal = "raycast shading 'phong' needs a gradient for its normal, and gradient is 'none' "
                                 "(pick forward, central or precomputed, or shading none)";
     for (K k : {K::Dvr, K::Mip, K::Isosurface, K::FirstHit}) {
@@ -321,7 +321,7 @@ TEST_CASE("raycast_config: Phong without a gradient is refused in one line, and 
     CHECK(distinct.size() == configs.size());
 }
 
-TEST_CASE("raycast_config: a module the compositing cannot use is dropped, and the header says so", "[raycast]") {
+TEST_CASE("raycast_config: a module the compositing cannot use is dropped, and the header says so", "[unit][raycast]") {
     // MIP and first hit use neither gradient nor shading, whatever was asked.
     for (K k : {K::Mip, K::FirstHit}) {
         const Config e = effective_config(make_config(k, G::Central, C::TransferFunction, S::Phong));
@@ -371,7 +371,7 @@ TEST_CASE("raycast_config: a module the compositing cannot use is dropped, and t
     CHECK(raycast_uber_uniforms(make_config(K::Mip, G::Central, C::TransferFunction, S::Phong)) == modes);
 }
 
-TEST_CASE("raycast: each configuration's preprocessed source holds exactly the modules it uses", "[raycast]") {
+TEST_CASE("raycast: each configuration's preprocessed source holds exactly the modules it uses", "[unit][raycast]") {
     for (const Config& config : configs_with_termination_off()) {
         PreprocessOptions options = shader_options();
         options.generated = {raycast_config_file(config)};
@@ -386,7 +386,7 @@ TEST_CASE("raycast: each configuration's preprocessed source holds exactly the m
     }
 }
 
-TEST_CASE("raycast: every configuration passes glslangValidator, the front end stricter than Mesa", "[raycast]") {
+TEST_CASE("raycast: every configuration passes glslangValidator, the front end stricter than Mesa", "[unit][raycast]") {
     // Mesa accepts GLSL that glslang (and so Apple's and AMD's compilers) refuses: a struct field named
     // `length`, for one, which glslang reads as the .length() method.
     bool found = false;

@@ -60,7 +60,7 @@ std::vector<float> floats_in(const fs::path& file) {
 
 }  // namespace
 
-TEST_CASE("render: the arrays a lab hands in are written beside the image and listed in its report", "[gl]") {
+TEST_CASE("render: the arrays a lab hands in are written beside the image and listed in its report", "[lab]") {
     test::TempDir dir;
     const fs::path png = dir.path("case.png");
     const std::vector<DataArray> arrays{{"positions", 4, {0, 1, 2, 3, 4, 5, 6, 7}}, {"ids", 1, {9, 8, 7}}};
@@ -80,7 +80,7 @@ TEST_CASE("render: the arrays a lab hands in are written beside the image and li
     CHECK(listed.at(1).int_at("count") == 3);
 }
 
-TEST_CASE("render: no arrays and no arrays key, and a malformed array is the lab's own error", "[gl]") {
+TEST_CASE("render: no arrays and no arrays key, and a malformed array is the lab's own error", "[lab]") {
     test::TempDir dir;
     REQUIRE(render({}, dir.path("plain.png")) == 0);
     CHECK_FALSE(read_json_file(dir.path("plain.json")).contains("arrays"));

@@ -36,7 +36,7 @@ using gsv::test::count_of;
 
 }  // namespace
 
-TEST_CASE("shader_source: a generated file is found by name before any folder and named as generated") {
+TEST_CASE("shader_source: a generated file is found by name before any folder and named as generated", "[unit]") {
     TempDir dir;
     dir.write("lab/rc_config.glsl", "// the file on disk\n");
     const fs::path main = dir.write("lab/main.frag", "// main\n#include \"rc_config.glsl\"\nvoid main() {}\n");
@@ -71,7 +71,7 @@ TEST_CASE("shader_source: a generated file is found by name before any folder an
     CHECK(unused.text.find("// generated") == std::string::npos);
 }
 
-TEST_CASE("shader_source: a generated file's includes search the include dirs, never the working directory") {
+TEST_CASE("shader_source: a generated file's includes search the include dirs, never the working directory", "[unit]") {
     TempDir dir;
     dir.write("inc/raycast/module.glsl", "#pragma once\nfloat module_marker() { return 2.0; }\n");
     dir.write("cwd/beside.glsl", "// in the working directory\n");
@@ -94,7 +94,7 @@ TEST_CASE("shader_source: a generated file's includes search the include dirs, n
     CHECK(message == "<generated config.glsl>:2: cannot find include \"beside.glsl\" (searched: <generated config.glsl>)");
 }
 
-TEST_CASE("shader_source: a missing include lists the generated files before the folders searched") {
+TEST_CASE("shader_source: a missing include lists the generated files before the folders searched", "[unit]") {
     TempDir dir;
     const fs::path main = dir.write("lab/main.frag", "#include \"rc_confg.glsl\"\n");
     PreprocessOptions options = bare_options({{"rc_config.glsl", ""}, {"extra.glsl", ""}});
@@ -105,7 +105,7 @@ TEST_CASE("shader_source: a missing include lists the generated files before the
                                          dir.path("lab").string() + ", " + dir.path("inc").string() + ")");
 }
 
-TEST_CASE("shader_source: generated names #include cannot name, and a name given twice, are one-line errors") {
+TEST_CASE("shader_source: generated names #include cannot name, and a name given twice, are one-line errors", "[unit]") {
     TempDir dir;
     const fs::path main = dir.write("main.frag", "void main() {}\n");
     for (const std::string& bad : {std::string(), std::string("a\"b.glsl"), std::string("two\nlines.glsl")}) {
@@ -116,7 +116,7 @@ TEST_CASE("shader_source: generated names #include cannot name, and a name given
     CHECK(error_of(main, bare_options({{"a.glsl", "1"}, {"a.glsl", "2"}})) == "generated shader file 'a.glsl': given twice");
 }
 
-TEST_CASE("shader_source: errors in and through a generated file name it and its line") {
+TEST_CASE("shader_source: errors in and through a generated file name it and its line", "[unit]") {
     TempDir dir;
     const fs::path main = dir.write("main.frag", "#include \"rc_config.glsl\"\nvoid main() {}\n");
     // The kit's own checks.

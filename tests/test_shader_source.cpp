@@ -81,7 +81,7 @@ ToolRun run_glslang(const fs::path& shader, const std::string& stage, const Temp
 
 }  // namespace
 
-TEST_CASE("shader_source: version line and built-in defines follow profile, version and stage") {
+TEST_CASE("shader_source: version line and built-in defines follow profile, version and stage", "[unit]") {
     TempDir dir;
     const fs::path main = dir.write("main.frag", "void main() {}\n");
 
@@ -127,7 +127,7 @@ TEST_CASE("shader_source: version line and built-in defines follow profile, vers
     }
 }
 
-TEST_CASE("shader_source: user defines come in order after the built-ins and before the prelude") {
+TEST_CASE("shader_source: user defines come in order after the built-ins and before the prelude", "[unit]") {
     TempDir dir;
     dir.write("inc/gsv/prelude_core.glsl", "// prelude body\n");
     const fs::path main = dir.write("main.frag", "void main() {}\n");
@@ -157,7 +157,7 @@ TEST_CASE("shader_source: user defines come in order after the built-ins and bef
     CHECK(source.file_line_text(0, 6) == "#define LIGHTS 4");
 }
 
-TEST_CASE("shader_source: define names that GLSL reserves or cannot parse are rejected by name") {
+TEST_CASE("shader_source: define names that GLSL reserves or cannot parse are rejected by name", "[unit]") {
     TempDir dir;
     const fs::path main = dir.write("main.frag", "void main() {}\n");
     const std::pair<std::string, std::string> bad[] = {
@@ -183,7 +183,7 @@ TEST_CASE("shader_source: define names that GLSL reserves or cannot parse are re
     CHECK_NOTHROW(gsv::preprocess_shader(main, fine));
 }
 
-TEST_CASE("shader_source: include from the file's own folder and nested includes") {
+TEST_CASE("shader_source: include from the file's own folder and nested includes", "[unit]") {
     TempDir dir;
     dir.write("lab/lib/noise.glsl", "float noise(vec3 p) { return 0.5; }\n");
     dir.write("lab/shading.glsl", "#include \"lib/noise.glsl\"\nvec3 shade() { return vec3(noise(vec3(0))); }\n");
@@ -203,7 +203,7 @@ TEST_CASE("shader_source: include from the file's own folder and nested includes
     CHECK(source.dependencies == expected_dependencies);
 }
 
-TEST_CASE("shader_source: include_dirs are searched in order after the including file's folder") {
+TEST_CASE("shader_source: include_dirs are searched in order after the including file's folder", "[unit]") {
     TempDir dir;
     dir.write("first/common.glsl", "// from first\n");
     dir.write("second/common.glsl", "// from second\n");
@@ -222,7 +222,7 @@ TEST_CASE("shader_source: include_dirs are searched in order after the including
     CHECK(source.text.find("// from first") == std::string::npos);
 }
 
-TEST_CASE("shader_source: a missing include names the includer, the line and every folder searched") {
+TEST_CASE("shader_source: a missing include names the includer, the line and every folder searched", "[unit]") {
     TempDir dir;
     const fs::path main = dir.write("lab/main.frag", "// one\n// two\n#include \"x.glsl\"\n");
     PreprocessOptions options = bare_options();
@@ -239,7 +239,7 @@ TEST_CASE("shader_source: a missing include names the includer, the line and eve
     CHECK(relative == "lab/main.frag:3: cannot find include \"x.glsl\" (searched: lab)");
 }
 
-TEST_CASE("shader_source: malformed and angle-bracket includes are errors") {
+TEST_CASE("shader_source: malformed and angle-bracket includes are errors", "[unit]") {
     TempDir dir;
     CHECK(error_of(dir.write("a.frag", "#include <x.glsl>\n"), bare_options()) ==
           dir.path("a.frag").string() + ":1: write #include \"x.glsl\"; the kit only resolves the quoted form");
@@ -249,7 +249,7 @@ TEST_CASE("shader_source: malformed and angle-bracket includes are errors") {
           std::string::npos);
 }
 
-TEST_CASE("shader_source: an include cycle is reported with the whole chain") {
+TEST_CASE("shader_source: an include cycle is reported with the whole chain", "[unit]") {
     TempDir dir;
     dir.write("a.glsl", "#include \"b.glsl\"\n");
     dir.write("b.glsl", "// b\n#include \"a.glsl\"\n");
@@ -263,7 +263,7 @@ TEST_CASE("shader_source: an include cycle is reported with the whole chain") {
                                               dir.path("self.frag").string()) != std::string::npos);
 }
 
-TEST_CASE("shader_source: #pragma once includes a file once, and without it a repeated include is inserted again") {
+TEST_CASE("shader_source: #pragma once includes a file once, and without it a repeated include is inserted again", "[unit]") {
     TempDir dir;
     dir.write("once.glsl", "#pragma once\nconst float ONCE_MARKER = 1.0;\n");
     dir.write("twice.glsl", "const float TWICE_MARKER = 1.0;\n");
@@ -282,7 +282,7 @@ TEST_CASE("shader_source: #pragma once includes a file once, and without it a re
     CHECK(source.text.compare(source.text.size() - tail.size(), tail.size(), tail) == 0);
 }
 
-TEST_CASE("shader_source: #line directives map every line back to its file") {
+TEST_CASE("shader_source: #line directives map every line back to its file", "[unit]") {
     TempDir dir;
     dir.write("lib.glsl", "float lib() { return 1.0; }\n");
     const fs::path main = dir.write("main.frag", "// main line 1\n#include \"lib.glsl\"\nvoid main() {}");
@@ -323,7 +323,7 @@ TEST_CASE("shader_source: #line directives map every line back to its file") {
     CHECK(source.file_line_text(1, 0).empty());
 }
 
-TEST_CASE("shader_source: a #version line in a file is an error pointing at it") {
+TEST_CASE("shader_source: a #version line in a file is an error pointing at it", "[unit]") {
     TempDir dir;
     const fs::path main = dir.write("main.frag", "// header\n  #  version 330 core\nvoid main() {}\n");
     CHECK(error_of(main, bare_options()) ==
@@ -333,7 +333,7 @@ TEST_CASE("shader_source: a #version line in a file is an error pointing at it")
     CHECK(error_of(includer, bare_options()).rfind(dir.path("inc.glsl").string() + ":1: remove '#version'", 0) == 0);
 }
 
-TEST_CASE("shader_source: directives inside block comments are left alone") {
+TEST_CASE("shader_source: directives inside block comments are left alone", "[unit]") {
     TempDir dir;
     const fs::path main = dir.write("main.frag", "/* usage:\n#include \"nowhere.glsl\"\n#version 100\n*/\n"
                                                  "// #include \"nowhere.glsl\"\nvoid main() {}\n");
@@ -341,14 +341,14 @@ TEST_CASE("shader_source: directives inside block comments are left alone") {
     CHECK(source.text.find("#include \"nowhere.glsl\"\n#version 100\n") != std::string::npos);
 }
 
-TEST_CASE("shader_source: a missing main file is reported by path") {
+TEST_CASE("shader_source: a missing main file is reported by path", "[unit]") {
     TempDir dir;
     CHECK(error_of(dir.path("absent.frag"), bare_options()) ==
           "cannot open shader file '" + dir.path("absent.frag").string() + "'");
     CHECK(error_of(dir.path(), bare_options()) == "cannot open shader file '" + dir.path().string() + "'");
 }
 
-TEST_CASE("shader_source: the prelude must be found when it is asked for") {
+TEST_CASE("shader_source: the prelude must be found when it is asked for", "[unit]") {
     TempDir dir;
     const fs::path main = dir.write("main.frag", "void main() {}\n");
     PreprocessOptions options;
@@ -359,7 +359,7 @@ TEST_CASE("shader_source: the prelude must be found when it is asked for") {
                                          "); add the kit's shaders/ folder to the include dirs");
 }
 
-TEST_CASE("shader_source: CRLF files work and keep their bytes") {
+TEST_CASE("shader_source: CRLF files work and keep their bytes", "[unit]") {
     TempDir dir;
     dir.write("lib.glsl", "#pragma once\r\nfloat lib() { return 1.0; }\r\n");
     const fs::path main = dir.write("main.frag", "// crlf\r\n#include \"lib.glsl\"\r\nvoid main() {}\r\n");
@@ -373,7 +373,7 @@ TEST_CASE("shader_source: CRLF files work and keep their bytes") {
     CHECK(error_of(versioned, bare_options()).find(":1: remove '#version'") != std::string::npos);
 }
 
-TEST_CASE("shader_source: translate_compile_log understands Mesa, NVIDIA and glslang logs") {
+TEST_CASE("shader_source: translate_compile_log understands Mesa, NVIDIA and glslang logs", "[unit]") {
     TempDir dir;
     dir.write("labs/lab01/lighting.glsl", "vec3 light() {\n    vec3 c = undefined_thing;\n    return c;\n}\n");
     const fs::path main = dir.write("labs/lab01/gooch.frag", "#include \"lighting.glsl\"\nvoid main() {}\n");
@@ -429,7 +429,7 @@ TEST_CASE("shader_source: translate_compile_log understands Mesa, NVIDIA and gls
     CHECK(gsv::translate_compile_log("", source).empty());
 }
 
-TEST_CASE("shader_source: stage names and extensions") {
+TEST_CASE("shader_source: stage names and extensions", "[unit]") {
     CHECK(std::string(gsv::stage_name(ShaderStage::Vertex)) == "vertex");
     CHECK(std::string(gsv::stage_name(ShaderStage::Fragment)) == "fragment");
     CHECK(std::string(gsv::stage_name(ShaderStage::Geometry)) == "geometry");
@@ -448,7 +448,7 @@ TEST_CASE("shader_source: stage names and extensions") {
                       "noext: cannot tell the shader stage from '' (use .vert, .frag, .geom, .comp, .tesc or .tese)");
 }
 
-TEST_CASE("shader_source: glslangValidator reports an error in an include at the file and line we map to") {
+TEST_CASE("shader_source: glslangValidator reports an error in an include at the file and line we map to", "[unit]") {
     if (!glslang_available()) {
         WARN("glslangValidator is not on PATH; skipping the compiler round-trip");
         SUCCEED();
@@ -483,7 +483,7 @@ TEST_CASE("shader_source: glslangValidator reports an error in an include at the
                                                             "    float y = missing_y;") != std::string::npos);
 }
 
-TEST_CASE("shader_source: one vertex/fragment pair builds against both preludes with glslangValidator") {
+TEST_CASE("shader_source: one vertex/fragment pair builds against both preludes with glslangValidator", "[unit]") {
     if (!glslang_available()) {
         WARN("glslangValidator is not on PATH; skipping the prelude compile check");
         SUCCEED();

@@ -47,7 +47,7 @@ std::array<int, 3> rgb(const gsv::Image& image, int x, int y) {
 
 }  // namespace
 
-TEST_CASE("text: a line rasterises anti-aliased ink inside its measured box, wider for longer text and taller for a larger size") {
+TEST_CASE("text: a line rasterises anti-aliased ink inside its measured box, wider for longer text and taller for a larger size", "[unit]") {
     const gsv::Rgba8 black{0, 0, 0, 255}, white{255, 255, 255, 255};
     gsv::Image short_line = filled(400, 60, black), long_line = filled(400, 60, black), large = filled(400, 60, black);
     const int end = gsv::draw_text(short_line, 10, 5, "height (m)", 16, white);
@@ -76,7 +76,7 @@ TEST_CASE("text: a line rasterises anti-aliased ink inside its measured box, wid
     CHECK(large_box[2] - large_box[0] > (box[2] - box[0]) * 3 / 2);
 }
 
-TEST_CASE("text: drawn in colour over the image, clipped at its edges, and an empty line draws nothing") {
+TEST_CASE("text: drawn in colour over the image, clipped at its edges, and an empty line draws nothing", "[unit]") {
     const gsv::Rgba8 grey{40, 40, 40, 255}, red{255, 0, 0, 255};
     gsv::Image image = filled(60, 20, grey);
     gsv::draw_text(image, 30, 2, "clipped at the edge", 14, red);
@@ -95,7 +95,7 @@ TEST_CASE("text: drawn in colour over the image, clipped at its edges, and an em
     CHECK(gsv::test::gsv_error_message([&] { gsv::measure_text("x", 0); }).find("pixel height 0") != std::string::npos);
 }
 
-TEST_CASE("text: the font is found, GSV_FONT first, DejaVu Sans before the system fonts of macOS and Windows") {
+TEST_CASE("text: the font is found, GSV_FONT first, DejaVu Sans before the system fonts of macOS and Windows", "[unit]") {
     const auto candidates = gsv::ui_font_candidates();
     REQUIRE(candidates.size() > 4);
     CHECK(candidates.front().filename() == "DejaVuSans.ttf");
@@ -103,7 +103,7 @@ TEST_CASE("text: the font is found, GSV_FONT first, DejaVu Sans before the syste
     CHECK(std::filesystem::is_regular_file(gsv::find_ui_font()));
 }
 
-TEST_CASE("legend: nice ticks lie in the range 1, 2 or 5 times a power of ten apart, and their text has the decimals they need") {
+TEST_CASE("legend: nice ticks lie in the range 1, 2 or 5 times a power of ten apart, and their text has the decimals they need", "[unit]") {
     CHECK(gsv::nice_ticks(0, 10) == std::vector<double>{0, 2, 4, 6, 8, 10});
     const auto ticks = gsv::nice_ticks(-37.5, 812.25);
     REQUIRE(ticks.size() >= 3);
@@ -121,7 +121,7 @@ TEST_CASE("legend: nice ticks lie in the range 1, 2 or 5 times a power of ten ap
     CHECK(gsv::nice_ticks(1, 1).empty());
 }
 
-TEST_CASE("legend: colours are linear between stops and the end colour beyond them, and a bad legend is refused naming what is wrong") {
+TEST_CASE("legend: colours are linear between stops and the end colour beyond them, and a bad legend is refused naming what is wrong", "[unit]") {
     gsv::Legend legend;
     legend.title = "speed";
     legend.min = 0;
@@ -145,7 +145,7 @@ TEST_CASE("legend: colours are linear between stops and the end colour beyond th
     CHECK(gsv::test::gsv_error_message([&] { gsv::check_legend(bright); }).find("'no data' has a channel 1.5") != std::string::npos);
 }
 
-TEST_CASE("legend image: the picture is kept, the bar has the ramp's colours from the largest value at the top, swatches their colours") {
+TEST_CASE("legend image: the picture is kept, the bar has the ramp's colours from the largest value at the top, swatches their colours", "[unit]") {
     const gsv::Rgba8 ground{10, 20, 30, 255};
     const gsv::Image picture = filled(120, 240, ground);
     gsv::Legend legend;
@@ -204,7 +204,7 @@ TEST_CASE("legend image: the picture is kept, the bar has the ramp's colours fro
     CHECK(inked > 50);
 }
 
-TEST_CASE("legend image: a transfer function's opacity is a curve beside the bar, full where opaque and empty where clear") {
+TEST_CASE("legend image: a transfer function's opacity is a curve beside the bar, full where opaque and empty where clear", "[unit]") {
     gsv::Legend legend;
     legend.title = "intensity";
     legend.opacity = true;
@@ -222,7 +222,7 @@ TEST_CASE("legend image: a transfer function's opacity is a curve beside the bar
     CHECK(rgb(out, where.bar[0] + 2, where.bar[3] - 1) == std::array<int, 3>{255, 255, 255});
 }
 
-TEST_CASE("comparison: the difference is amplified by a power of two, with the panels side by side and the numbers right") {
+TEST_CASE("comparison: the difference is amplified by a power of two, with the panels side by side and the numbers right", "[unit]") {
     gsv::Image yours = filled(40, 30, {100, 100, 100, 255});
     const gsv::Image reference = yours;
     for (int y = 10; y < 20; ++y)

@@ -191,7 +191,7 @@ std::optional<std::pair<double, double>> dense_bracket(glm::dvec3 o, glm::dvec3 
 // ---------------------------------------------------------------------------------------------------------
 // Volume
 
-TEST_CASE("volume: index and at run x fastest, then y, then z, and throw outside the grid", "[volume]") {
+TEST_CASE("volume: index and at run x fastest, then y, then z, and throw outside the grid", "[unit][volume]") {
     const Volume volume = labelled_volume(5, 4, 3);
     CHECK(volume.index(0, 0, 0) == 0);
     CHECK(volume.index(1, 0, 0) == 1);
@@ -210,13 +210,13 @@ TEST_CASE("volume: index and at run x fastest, then y, then z, and throw outside
     CHECK(contains(gsv_error_message([&] { short_of_values.at(0, 0, 0); }), "is 5x4x3 but holds 59 values"));
 }
 
-TEST_CASE("volume: extent is n times the anisotropic spacing", "[volume]") {
+TEST_CASE("volume: extent is n times the anisotropic spacing", "[unit][volume]") {
     Volume volume = labelled_volume(5, 4, 3);
     volume.spacing = {0.5, 2.0, 3.25};
     CHECK(volume.extent() == glm::dvec3(2.5, 8.0, 9.75));
 }
 
-TEST_CASE("volume: sample at texel centres returns the voxel exactly, for odd and even sizes", "[volume]") {
+TEST_CASE("volume: sample at texel centres returns the voxel exactly, for odd and even sizes", "[unit][volume]") {
     // 41 and 7 are not powers of two: (i + 0.5) / n is rounded, and the lookup must still land on voxel i.
     for (const auto& [nx, ny, nz] : {std::tuple{4, 2, 8}, std::tuple{41, 7, 3}, std::tuple{1, 5, 2}}) {
         const Volume volume = labelled_volume(nx, ny, nz);
@@ -226,7 +226,7 @@ TEST_CASE("volume: sample at texel centres returns the voxel exactly, for odd an
     }
 }
 
-TEST_CASE("volume: sample clamps to the edge voxel in the outer half texel and beyond 0..1", "[volume]") {
+TEST_CASE("volume: sample clamps to the edge voxel in the outer half texel and beyond 0..1", "[unit][volume]") {
     const Volume volume = labelled_volume(5, 4, 3);
     const glm::dvec3 middle = texel_centre(volume, 2, 1, 1);
     // x: the outer half texel, the edge itself, and far outside, on both sides.
@@ -240,7 +240,7 @@ TEST_CASE("volume: sample clamps to the edge voxel in the outer half texel and b
     for (double s : {-1.0, 0.0, 0.3, 1.0, 9.0}) CHECK(one.sample({s, s, s}) == 0.25);
 }
 
-TEST_CASE("volume: sample between centres is the trilinear mix, and a NaN coordinate gives NaN", "[volume]") {
+TEST_CASE("volume: sample between centres is the trilinear mix, and a NaN coordinate gives NaN", "[unit][volume]") {
     const Volume volume = labelled_volume(5, 4, 3);
     // Halfway between the centres of voxels 1 and 2 along every axis: the mean of the 8 voxels around it,
     // exact here (quarters and halves of small integers).
@@ -257,7 +257,7 @@ TEST_CASE("volume: sample between centres is the trilinear mix, and a NaN coordi
     CHECK(std::isnan(volume.sample({0.5, 0.5, kNaN})));
 }
 
-TEST_CASE("volume: normalized maps min to 0 and max to 1, a constant volume to 0 with no NaN", "[volume]") {
+TEST_CASE("volume: normalized maps min to 0 and max to 1, a constant volume to 0 with no NaN", "[unit][volume]") {
     Volume volume;
     volume.nx = 3, volume.ny = 1, volume.nz = 1;
     volume.values = {-2.0f, 0.0f, 6.0f};
@@ -281,7 +281,7 @@ TEST_CASE("volume: normalized maps min to 0 and max to 1, a constant volume to 0
     CHECK(contains(gsv_error_message([&] { volume.normalized(); }), "not finite min <= max"));
 }
 
-TEST_CASE("volume: a percentile window leaves the outliers out of the range normalized maps onto [0, 1]", "[volume]") {
+TEST_CASE("volume: a percentile window leaves the outliers out of the range that normalized maps onto 0 to 1", "[unit][volume]") {
     Volume volume;
     volume.nx = 1000, volume.ny = 1, volume.nz = 1;
     for (int i = 0; i < 1000; ++i) volume.values.push_back(static_cast<float>(i));
@@ -300,7 +300,7 @@ TEST_CASE("volume: a percentile window leaves the outliers out of the range norm
     CHECK(contains(gsv_error_message([&] { Volume().set_percentile_window(0.0, 1.0); }), "has no values"));
 }
 
-TEST_CASE("volume: exchanging y and z moves voxel (i, j, k) to (i, k, j) and the spacing with it", "[volume]") {
+TEST_CASE("volume: exchanging y and z moves voxel (i, j, k) to (i, k, j) and the spacing with it", "[unit][volume]") {
     Volume volume;
     volume.nx = 2, volume.ny = 3, volume.nz = 4;
     volume.spacing = {1.0, 2.0, 3.0};
@@ -319,7 +319,7 @@ TEST_CASE("volume: exchanging y and z moves voxel (i, j, k) to (i, k, j) and the
 // ---------------------------------------------------------------------------------------------------------
 // NIfTI-1
 
-TEST_CASE("nifti: the real big-endian anatomical.nii reads as 33x41x25 int16 voxels 2 mm apart", "[volume]") {
+TEST_CASE("nifti: the real big-endian anatomical.nii reads as 33x41x25 int16 voxels 2 mm apart", "[unit][volume]") {
     // The facts and voxel values below were read independently of this reader, with Python's struct module
     // on the committed file (header fields at their nifti1.h offsets, voxels as '>33825h' from byte 352,
     // voxel (i, j, k) at i + 33 (j + 41 k)), and agree with nibabel 5.0.0's own reading of it
@@ -358,7 +358,7 @@ TEST_CASE("nifti: the real big-endian anatomical.nii reads as 33x41x25 int16 vox
     CHECK(volume.at(17, 23, 0) == 30393.0f);
 }
 
-TEST_CASE("nifti: the real MRI gzipped (.nii.gz) reads as the same voxels as the .nii", "[volume]") {
+TEST_CASE("nifti: the real MRI gzipped (.nii.gz) reads as the same voxels as the .nii", "[unit][volume]") {
     TempDir dir;
     const fs::path gz = dir.write("anatomical.nii.gz", gzipped(gsv::test::read_text(anatomical_path())));
     CHECK(fs::file_size(gz) < fs::file_size(anatomical_path()));
@@ -371,7 +371,7 @@ TEST_CASE("nifti: the real MRI gzipped (.nii.gz) reads as the same voxels as the
     CHECK(unzipped.spacing == plain.spacing);
 }
 
-TEST_CASE("nifti: the real volume saved as little-endian float32 reads back identically", "[volume]") {
+TEST_CASE("nifti: the real volume saved as little-endian float32 reads back identically", "[unit][volume]") {
     TempDir dir;
     const Volume volume = gsv::load_nifti(anatomical_path());
     const fs::path copy = dir.path("anatomical_le.nii");
@@ -388,7 +388,7 @@ TEST_CASE("nifti: the real volume saved as little-endian float32 reads back iden
     CHECK(back.max == volume.max);
 }
 
-TEST_CASE("nifti: every datatype round-trips in both byte orders, with and without slope and intercept", "[volume]") {
+TEST_CASE("nifti: every datatype round-trips in both byte orders, with and without slope and intercept", "[unit][volume]") {
     struct Case {
         int datatype, bitpix;
         std::vector<double> stored;
@@ -432,7 +432,7 @@ TEST_CASE("nifti: every datatype round-trips in both byte orders, with and witho
             }
 }
 
-TEST_CASE("nifti: a NaN scl_slope means unscaled, and spatial units become millimetres", "[volume]") {
+TEST_CASE("nifti: a NaN scl_slope means unscaled, and spatial units become millimetres", "[unit][volume]") {
     TempDir dir;
     NiftiSpec spec = float_spec({1, 2, 3, 4, 5, 6}, 3, 2, 1);
     spec.scl_slope = std::numeric_limits<float>::quiet_NaN(), spec.scl_inter = 100;
@@ -450,7 +450,7 @@ TEST_CASE("nifti: a NaN scl_slope means unscaled, and spatial units become milli
     CHECK(gsv::read_nifti_header(dir.write("x.nii", nifti_bytes(spec))).spacing == glm::dvec3(500, 250, 1000));
 }
 
-TEST_CASE("nifti: save_nifti and load_nifti round-trip float32 bit for bit, anisotropic spacing too", "[volume]") {
+TEST_CASE("nifti: save_nifti and load_nifti round-trip float32 bit for bit, anisotropic spacing too", "[unit][volume]") {
     TempDir dir;
     Volume volume;
     volume.nx = 3, volume.ny = 2, volume.nz = 2;
@@ -470,7 +470,7 @@ TEST_CASE("nifti: save_nifti and load_nifti round-trip float32 bit for bit, anis
     CHECK(std::memcmp(back.values.data(), volume.values.data(), volume.values.size() * sizeof(float)) == 0);
 }
 
-TEST_CASE("nifti: save_nifti refuses what load_nifti would, before creating the file", "[volume]") {
+TEST_CASE("nifti: save_nifti refuses what load_nifti would, before creating the file", "[unit][volume]") {
     TempDir dir;
     const fs::path path = dir.path("refused.nii");
     Volume volume = labelled_volume(3, 2, 2);
@@ -487,7 +487,7 @@ TEST_CASE("nifti: save_nifti refuses what load_nifti would, before creating the 
     CHECK_FALSE(fs::exists(path));
 }
 
-TEST_CASE("nifti: each broken file is refused with one line naming the file and the fault", "[volume]") {
+TEST_CASE("nifti: each broken file is refused with one line naming the file and the fault", "[unit][volume]") {
     TempDir dir;
     const NiftiSpec good = float_spec({0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23},
                                       2, 3, 4);
@@ -620,7 +620,7 @@ TEST_CASE("nifti: each broken file is refused with one line naming the file and 
 // ---------------------------------------------------------------------------------------------------------
 // ray_box_span
 
-TEST_CASE("ray_box: spans through the box, along axes, on faces and touching an edge", "[volume]") {
+TEST_CASE("ray_box: spans through the box, along axes, on faces and touching an edge", "[unit][volume]") {
     const glm::dvec3 lo(-1.0), hi(1.0);
     const auto span = [&](glm::dvec3 o, glm::dvec3 d) { return gsv::ray_box_span(o, d, lo, hi); };
     // A diagonal ray through the centre: enters at the corner (-1,-1,-1), leaves at (1,1,1).
@@ -665,7 +665,7 @@ TEST_CASE("ray_box: spans through the box, along axes, on faces and touching an 
 // ---------------------------------------------------------------------------------------------------------
 // Marschner-Lobb
 
-TEST_CASE("marschner_lobb: exact values at the centre, on the axis, on a ring and at the corners", "[volume]") {
+TEST_CASE("marschner_lobb: exact values at the centre, on the axis, on a ring and at the corners", "[unit][volume]") {
     // f_M = 6, alpha = 0.25, so 2 (1 + alpha) = 2.5 and rho = (1 - sin(pi z / 2) + 0.25 (1 + rho_r)) / 2.5.
     // Centre: r = 0, rho_r = cos(12 pi cos 0) = cos(12 pi) = 1, sin 0 = 0: (1 + 0.5) / 2.5 = 0.6.
     CHECK(gsv::marschner_lobb({0, 0, 0}) == Approx(0.6).epsilon(1e-15));
@@ -696,7 +696,7 @@ TEST_CASE("marschner_lobb: exact values at the centre, on the axis, on a ring an
     CHECK(contains(gsv_error_message([] { gsv::marschner_lobb({0, 0, 0}, MarschnerLobb{6, -1}); }), "alpha"));
 }
 
-TEST_CASE("marschner_lobb: the exact gradient matches central differences of rho at second order", "[volume]") {
+TEST_CASE("marschner_lobb: the exact gradient matches central differences of rho at second order", "[unit][volume]") {
     const glm::dvec3 points[] = {{0.3, -0.2, 0.1}, {-0.71, 0.05, 0.6}, {0.02, 0.01, -0.4}, {0.9, 0.4, -0.95}};
     const auto central = [](glm::dvec3 p, double h) {
         glm::dvec3 g;
@@ -718,7 +718,7 @@ TEST_CASE("marschner_lobb: the exact gradient matches central differences of rho
     }
 }
 
-TEST_CASE("marschner_lobb: the gradient on the z axis, r = 0, is finite and continuous, no NaN", "[volume]") {
+TEST_CASE("marschner_lobb: the gradient on the z axis, r = 0, is finite and continuous, no NaN", "[unit][volume]") {
     // On the axis the x and y parts are exactly 0 and the z part is the z term's: -(pi / 2) cos(pi z / 2) / 2.5.
     for (double z : {-1.0, -0.3, 0.0, 0.7, 1.0}) {
         const glm::dvec3 g = gsv::marschner_lobb_gradient({0, 0, z});
@@ -744,7 +744,7 @@ TEST_CASE("marschner_lobb: the gradient on the z axis, r = 0, is finite and cont
     CHECK(gsv::marschner_lobb_gradient({0, 0, 0.2}, flank).x == 0.0);
 }
 
-TEST_CASE("marschner_lobb: the volume holds rho at its texel centres and Volume::sample reads it there", "[volume]") {
+TEST_CASE("marschner_lobb: the volume holds rho at its texel centres and Volume::sample reads it there", "[unit][volume]") {
     const Volume volume = gsv::make_marschner_lobb_volume();
     CHECK(volume.nx == 41);
     CHECK(volume.ny == 41);
@@ -766,7 +766,7 @@ TEST_CASE("marschner_lobb: the volume holds rho at its texel centres and Volume:
     CHECK(contains(gsv_error_message([] { gsv::make_marschner_lobb_volume(1000); }), "side 1000"));
 }
 
-TEST_CASE("marschner_lobb: ray hits agree with a dense march and are exact to adjacent doubles", "[volume]") {
+TEST_CASE("marschner_lobb: ray hits agree with a dense march and are exact to adjacent doubles", "[unit][volume]") {
     std::uint64_t state = 0x6a09e667f3bcc908ull;
     const auto uniform = [&](double lo, double hi) {
         return lo + (hi - lo) * double(gsv::splitmix64_next(state) >> 11) * 0x1.0p-53;
@@ -803,7 +803,7 @@ TEST_CASE("marschner_lobb: ray hits agree with a dense march and are exact to ad
 }
 
 TEST_CASE("marschner_lobb: axis-aligned rays, with direction components of exactly 0, hit where the formula says",
-          "[volume]") {
+          "[unit][volume]") {
     // Along the z axis rho = (1.5 - sin(pi z / 2)) / 2.5, which is 0.5 where sin(pi z / 2) = 0.25:
     // z* = (2 / pi) asin(0.25) = 0.1608612. Upward from z = -2, rho falls from 1 and crosses at t = 2 + z*.
     const double z_star = 2 / kPi * std::asin(0.25);
@@ -854,7 +854,7 @@ TEST_CASE("marschner_lobb: axis-aligned rays, with direction components of exact
 // Gradients
 
 TEST_CASE("gradient: a linear volume's differences are its slope in physical units, anisotropic spacing too",
-          "[volume]") {
+          "[unit][volume]") {
     // f = 3 x - y + 8 z at the physical centres ((i + 0.5) sx, ...), with spacings whose products are exact
     // in float, so every interior difference is exactly the slope.
     Volume volume;
@@ -894,7 +894,7 @@ TEST_CASE("gradient: a linear volume's differences are its slope in physical uni
 }
 
 TEST_CASE("gradient: a constant volume's gradient is exactly 0 and its safe normalisation is 0, not NaN",
-          "[volume]") {
+          "[unit][volume]") {
     // 0.1 is not a dyadic fraction: (1 - f) 0.1 + f 0.1 is not always 0.1 in floating point, which is why
     // Volume::sample mixes equal values exactly.
     const Volume volume = constant_volume(7, 5, 3, 0.1f);
@@ -918,7 +918,7 @@ TEST_CASE("gradient: a constant volume's gradient is exactly 0 and its safe norm
     CHECK(std::isnan(glm::normalize(g).x));
 }
 
-TEST_CASE("gradient: safe_normalize gives unit vectors for tiny and huge gradients, NaN for NaN", "[volume]") {
+TEST_CASE("gradient: safe_normalize gives unit vectors for tiny and huge gradients, NaN for NaN", "[unit][volume]") {
     CHECK(gsv::safe_normalize({3, 0, -4}) == glm::dvec3(0.6, 0, -0.8));
     // |g|^2 underflows to 0 (1e-200 squared) or overflows to inf (1e200 squared): still a unit vector.
     for (double scale : {1e-200, 5e-324, 1e200, 1.7e308}) {
@@ -935,7 +935,7 @@ TEST_CASE("gradient: safe_normalize gives unit vectors for tiny and huge gradien
 }
 
 TEST_CASE("gradient: central differences of a sampled smooth Marschner-Lobb volume converge at second order",
-          "[volume]") {
+          "[unit][volume]") {
     // alpha = 0 leaves the smooth z term (1 - sin(pi z / 2)) / 2: its texel-centre central differences in
     // physical units (spacing 2 / n, the units of p) approach the exact gradient with error ~ h^2, so doubling
     // n divides the error by about 4. (With the rings, 41^3 is meant to be too coarse; see the header.)

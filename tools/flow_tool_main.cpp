@@ -2,6 +2,7 @@
 // with it (data/README.md), and a test regenerates that data to prove it still matches this generator.
 #include "common/core/error.h"
 #include "common/core/number_text.h"
+#include "common/core/version.h"
 #include "support/flow/flow_field.h"
 
 #include <algorithm>
@@ -16,6 +17,7 @@ namespace {
 constexpr const char* kUsage =
     "usage: gsv-flow write <kind> <width> <height> [<frames>] <out.flow>\n"
     "       gsv-flow info <file.flow>\n"
+    "       gsv-flow --help | --version\n"
     "kinds: rotation, saddle, source, double_gyre, vortices, vortex_street\n"
     "Fields are scaled so the fastest texel moves 1 texel per step. Without <frames>: one field with the\n"
     "three-field header (double_gyre at t = 0, vortex_street at phase 0, vortices from seed 0). With <frames>:\n"
@@ -109,6 +111,10 @@ int main(int argc, char** argv) {
     }
     if (args[0] == "--help" || args[0] == "-h") {
         std::fputs(kUsage, stdout);
+        return 0;
+    }
+    if (args[0] == "--version") {
+        std::printf("%s\n", gsv::version_line("gsv-flow").c_str());
         return 0;
     }
     try {

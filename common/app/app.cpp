@@ -2,9 +2,11 @@
 
 #include "common/app/app_session.h"
 #include "common/core/error.h"
+#include "common/core/version.h"
 #include "common/gl/gl.h"
 
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 namespace gsv {
@@ -162,13 +164,18 @@ int run_lab(std::unique_ptr<Lab> lab, const char* lab_dir, const char* variant, 
         try {
             session.options = parse_cli(argc, argv);
             session.apply_command_line_settings();
-            if (session.options.mode == RunMode::Animate && !session.options.help) check_animate_command(session);
-            if (session.options.mode == RunMode::Sweep && !session.options.help) check_sweep_command(session);
+            const bool informational = session.options.help || session.options.version;
+            if (session.options.mode == RunMode::Animate && !informational) check_animate_command(session);
+            if (session.options.mode == RunMode::Sweep && !informational) check_sweep_command(session);
             if (session.options.mode != RunMode::Sweep && (!session.options.knob.empty() || !session.options.values.empty()))
                 throw Error("--knob and --values are for sweep mode");
         } catch (const Error& e) {
             std::fprintf(stderr, "%s: %s\n", session.info.id.c_str(), e.what());
             return kExitUsage;
+        }
+        if (session.options.version) {
+            std::printf("%s\n", version_line(session.info.id + (session.variant == std::string("solution") ? "_solution" : "")).c_str());
+            return kExitOk;
         }
         if (session.options.help) {
             std::printf("%s: %s (%s)\n%s", session.info.id.c_str(), session.info.title.c_str(), variant,
@@ -194,6 +201,10 @@ int run_lab(std::unique_ptr<Lab> lab, const char* lab_dir, const char* variant, 
         std::fprintf(stderr, "%s: %s\n", session.info.id.c_str(), e.what());
         return kExitUnsupported;
     } catch (const Error& e) {
+        std::fprintf(stderr, "%s: %s\n", session.info.id.c_str(), e.what());
+        return kExitError;
+    } catch (const std::filesystem::filesystem_error& e) {
+        // A file or folder that could not be read or written: the user's to fix, and the message names it.
         std::fprintf(stderr, "%s: %s\n", session.info.id.c_str(), e.what());
         return kExitError;
     } catch (const std::exception& e) {

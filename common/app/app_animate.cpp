@@ -5,6 +5,7 @@
 #include "common/core/number_text.h"
 #include "common/gl/gl.h"
 #include "common/image/animation.h"
+#include "common/io/output_folder.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -42,12 +43,13 @@ void check_animate_command(const Session& s) { animation_axis(s); }
 
 int run_animate(Session& s) {
     const Axis axis = animation_axis(s);
+    const std::filesystem::path dir = s.options.out_dir.empty() ? "animate-" + s.info.id : s.options.out_dir;
+    prepare_output_folder(dir, "--out-dir");
     s.open(s.options.backend.value_or(Backend::Egl));
     const int width = s.options.width, height = s.options.height, count = s.options.count;
     // Float target so NaN and Inf survive to the readback, as in render mode.
     Framebuffer target(width, height, ColorFormat::RGBA32F);
     const Frame frame{width, height, 0.0};
-    const std::filesystem::path dir = s.options.out_dir.empty() ? "animate-" + s.info.id : s.options.out_dir;
 
     std::vector<Image> frames;
     int first_bad = -1;

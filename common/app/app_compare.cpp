@@ -7,6 +7,7 @@
 #include "common/gl/framebuffer.h"
 #include "common/gl/gl.h"
 #include "common/image/comparison_image.h"
+#include "common/io/output_folder.h"
 
 #include <cstdio>
 #include <string>
@@ -14,6 +15,9 @@
 namespace gsv {
 
 int run_compare(Session& s) {
+    std::string png = s.options.out;
+    if (png.empty()) png = s.info.id + "-compare" + (s.options.case_name.empty() ? "" : "-" + s.options.case_name) + ".png";
+    prepare_output_file(png, "--out");
     const ReferenceSource source = find_reference(s);
     Image golden;
     if (source.kind == ReferenceSource::Kind::Golden) {
@@ -41,8 +45,6 @@ int run_compare(Session& s) {
     const Image composite = compose_comparison(yours.image, reference, "yours: " + s.title(), "reference: " + reference_text);
     const ImageDifference d = image_difference(yours.image, reference);
 
-    std::string png = s.options.out;
-    if (png.empty()) png = s.info.id + "-compare" + (s.options.case_name.empty() ? "" : "-" + s.options.case_name) + ".png";
     write_png(png, composite);
     std::printf("%s: wrote %s (yours | reference | difference x%d, %dx%d each)\n", s.info.id.c_str(), png.c_str(),
                 difference_factor(d.max_rgb), width, height);

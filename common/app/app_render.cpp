@@ -8,6 +8,7 @@
 #include "common/image/image_compare.h"
 #include "common/io/data_array.h"
 #include "common/io/json.h"
+#include "common/io/output_folder.h"
 #include "common/timing/frame_marks.h"
 #include "common/timing/timing.h"
 
@@ -71,6 +72,12 @@ Readback read_back(const Framebuffer& float_target) {
 }
 
 int run_render(Session& s) {
+    std::string png = s.options.out;
+    if (png.empty()) png = s.info.id + (s.options.case_name.empty() ? "" : "-" + s.options.case_name) + ".png";
+    std::string json_path = s.options.json;
+    if (json_path.empty()) json_path = std::filesystem::path(png).replace_extension(".json").string();
+    prepare_output_file(png, "--out");
+    prepare_output_file(json_path, "--json");
     const Backend backend = s.options.backend.value_or(Backend::Egl);
     s.open(backend);
     if (auto error = s.sync_params()) throw Error(*error);
@@ -93,10 +100,6 @@ int run_render(Session& s) {
     const Image& image = shot.image;
     const FloatStats& stats = shot.stats;
 
-    std::string png = s.options.out;
-    if (png.empty()) png = s.info.id + (s.options.case_name.empty() ? "" : "-" + s.options.case_name) + ".png";
-    std::string json_path = s.options.json;
-    if (json_path.empty()) json_path = std::filesystem::path(png).replace_extension(".json").string();
     // The legend after the timed frames and before anything else draws: it describes the frame read back.
     write_png(png, s.options.legend ? with_lab_legend(s, image) : image);
     // After the last timed frame, so what is handed in is what the image shows. Only when asked: a million

@@ -4,11 +4,13 @@
 #include "common/app/app_session.h"
 #include "common/app/sweep_report.h"
 #include "common/core/number_text.h"
+#include "common/core/progress.h"
 #include "common/core/error.h"
 #include "common/gl/framebuffer.h"
 #include "common/gl/gl.h"
 #include "common/image/image.h"
 #include "common/image/image_compare.h"
+#include "common/io/output_folder.h"
 #include "common/timing/timing.h"
 
 #include <algorithm>
@@ -51,6 +53,8 @@ void check_sweep_command(const Session& s) { sweep_axis(s); }
 int run_sweep(Session& s) {
     const SweepAxis axis = sweep_axis(s);
     s.params.check_applies({axis.name}, "sweep: the swept parameter ");
+    const std::filesystem::path dir = s.options.out_dir.empty() ? "sweep-" + s.info.id : s.options.out_dir;
+    prepare_output_folder(dir, "--out-dir");
     const std::string knob_name = axis.name;
     const std::vector<std::string> knob_values = axis.values;
     std::vector<std::string> series_values{""};
@@ -117,8 +121,18 @@ int run_sweep(Session& s) {
     report.height = height;
     report.plotted_error = s.lab->sweep_error_column();
 
-    // First what each point draws and how far it is from the reference; the times after, interleaved.
+    // First what each point draws and how far it is from the reference; the times after, interleaved. Each
+    // point is a step of the progress line, and so is each switch to it while timing (once to size its
+    // batches, then once a round).
+    const int planned_points = static_cast<int>(series_values.size() * knob_values.size());
+    Progress progress("sweep " + s.info.id, planned_points * (2 + rounds));
+    auto point_name = [&](const std::vector<std::string>& settings) {
+        std::string name;
+        for (const auto& setting : settings) name += (name.empty() ? "" : " ") + setting;
+        return name;
+    };
     std::vector<std::vector<std::string>> point_settings;
+    int left_out = 0;
     bool exact = false;
     for (std::size_t curve = 0; curve < series_values.size(); ++curve) {
         const std::string& series_value = series_values[curve];
@@ -131,8 +145,12 @@ int run_sweep(Session& s) {
             } catch (const UnsupportedError& e) {
                 // A point this GPU cannot draw (lab 03's separate textures past the unit limit) is left out,
                 // said once, and the rest of the sweep goes on.
+                progress.finish();
                 std::fprintf(stderr, "  %s=%s %s=%s: left out: %s\n", series_name.c_str(), series_value.c_str(),
                              knob_name.c_str(), knob_value.c_str(), e.what());
+                ++left_out;  // a step now, and none while timing
+                progress.set_total(planned_points * (2 + rounds) - left_out * (1 + rounds));
+                progress.step("left out " + point_name(settings));
                 continue;
             }
             const std::optional<Image> exact_image = axis.lab_knob ? s.lab->sweep_exact_image(*s.kit, frame) : std::nullopt;
@@ -146,6 +164,7 @@ int run_sweep(Session& s) {
             row.max_diff = diff.max_channel_diff;
             report.rows.push_back(row);
             point_settings.push_back(settings);
+            progress.step("error of " + point_name(settings));
         }
     }
 
@@ -189,8 +208,14 @@ int run_sweep(Session& s) {
     }
 
     std::vector<TimedWork> work;
-    for (const auto& settings : point_settings) work.push_back({[&, settings] { use(settings); }, draw});
+    for (const auto& settings : point_settings)
+        work.push_back({[&, settings] {
+                            use(settings);
+                            progress.step("timing " + point_name(settings));
+                        },
+                        draw});
     const std::vector<TimingStats> times = time_interleaved(work, warmup, frames_per_round, rounds).stats;
+    progress.finish();
     for (std::size_t i = 0; i < report.rows.size(); ++i) {
         SweepRow& row = report.rows[i];
         row.median_ms = times[i].median_ms;
@@ -202,7 +227,6 @@ int run_sweep(Session& s) {
     }
     s.params = base;
 
-    const std::filesystem::path dir = s.options.out_dir.empty() ? "sweep-" + s.info.id : s.options.out_dir;
     std::printf("%s", report.table().c_str());
     const auto files = report.write(dir);
     for (const auto& f : files) std::printf("wrote %s\n", f.c_str());

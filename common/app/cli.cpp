@@ -4,6 +4,7 @@
 #include "common/core/number_text.h"
 #include "common/window/scripted_keys.h"
 
+#include <algorithm>
 #include <cmath>
 #include <regex>
 #include <sstream>
@@ -58,6 +59,7 @@ CliOptions parse_cli(int argc, const char* const* argv) {
         }
         auto next = [&]() { return has_inline ? inline_value : value(arg); };
         if (arg == "-h" || arg == "--help") o.help = true;
+        else if (arg == "--version") o.version = true;
         else if (arg == "--backend") o.backend = parse_backend(next());
         else if (arg == "--profile") o.profile = parse_profile(next());
         else if (arg == "--gl") o.gl = parse_gl_version(next());
@@ -65,11 +67,19 @@ CliOptions parse_cli(int argc, const char* const* argv) {
         else if (arg == "--set" || arg == "-s") o.assignments.push_back(next());
         else if (arg == "--size") {
             const std::string text = next();
-            static const std::regex pattern(R"(^([0-9]{1,5})x([0-9]{1,5})$)");
+            static const std::regex pattern(R"(^([0-9]+)x([0-9]+)$)");
             std::smatch m;
             if (!std::regex_match(text, m, pattern)) throw Error("option --size needs WIDTHxHEIGHT, got '" + text + "'");
-            o.width = parse_count("--size", m[1], 1, 8192);
-            o.height = parse_count("--size", m[2], 1, 8192);
+            // Compared as text first: a side of twenty digits is too large, not a number that overflows.
+            auto side = [&](const std::string& digits) {
+                const std::string trimmed = digits.substr(std::min(digits.find_first_not_of('0'), digits.size()));
+                if (trimmed.size() > 4 || (!trimmed.empty() && std::stoi(trimmed) > kMaxImageSide))
+                    throw Error("option --size " + text + " is too large: each side is at most " +
+                                std::to_string(kMaxImageSide) + " pixels");
+                return parse_count("--size", trimmed.empty() ? "0" : trimmed, 1, kMaxImageSide);
+            };
+            o.width = side(m[1]);
+            o.height = side(m[2]);
             o.size_given = true;
         } else if (arg == "--out" || arg == "-o") o.out = next();
         else if (arg == "--json") o.json = next();
@@ -151,6 +161,7 @@ std::string cli_usage(const std::string& program) {
            "  --screenshot-after N, --quit-after N|Ns   window: save a screenshot / quit after N frames or N seconds\n"
            "                      (a screenshot is the picture, FILE, and the whole window, FILE-window.png)\n"
            "  --press KEY@N       window: press KEY before frame N (repeatable; U@5 hides the panel): scripted demos\n"
+           "  -h, --help          this text; --version: the kit's version\n"
            "window keys: Tab/arrows pick and change parameters, C next case, U hide/show the panel, S screenshot,\n"
            "             H all keys (printed); parameters greyed in the panel have no effect under the current ones\n"
            "exit status: 0 ok, 1 error, 2 bad command line, 3 GL feature not available, 4 NaN/Inf in the image\n";

@@ -8,6 +8,10 @@
 
 namespace gsv {
 
+// The largest side --size accepts: well inside the 16384 texture size GL 4.1 guarantees, and a float
+// target of 8192x8192 is already 1 GiB.
+constexpr int kMaxImageSide = 8192;
+
 enum class RunMode { Window, Render, Sweep, Animate, Compare, List };
 
 struct CliOptions {
@@ -36,6 +40,7 @@ struct CliOptions {
     double quit_after_s = 0;             // ...or after this many seconds ("--quit-after 8s")
     std::vector<std::string> presses;    // window: scripted keys, "U@5" (--press), for demos and tests
     bool help = false;
+    bool version = false;                // --version: one line, exit 0
 };
 
 // Throws gsv::Error naming the unknown option or the bad value.
