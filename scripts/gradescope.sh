@@ -40,11 +40,7 @@ case "$dest" in *.zip) ;; *) die "DEST must end in .zip, got '$dest'" ;; esac
 dest_dir=$(cd "$(dirname "$dest")" 2>/dev/null && pwd) || die "no folder '$(dirname "$dest")' for '$dest'"
 dest_abs=$dest_dir/$(basename "$dest")
 [ -d "$root/solutions" ] && [ -d "$root/grader/hidden" ] || die "$root has no solutions/ or grader/hidden/: the autograder is made from the instructor's kit"
-if [ -z "$seed" ]; then
-  seed=$(( ($(od -An -N4 -tu4 /dev/urandom | tr -d ' ') % 900000000) + 100000000 ))
-  echo "gradescope: drew the seed $seed (baked into the zip)"
-fi
-case "$seed" in *[!0-9]*|'') die "--seed needs a whole number, got '$seed'" ;; esac
+case "$seed" in *[!0-9]*) die "--seed needs a whole number, got '$seed'" ;; esac
 if [ -n "$labs" ]; then
   IFS=, read -r -a wanted <<<"$labs"
   for lab in "${wanted[@]}"; do
@@ -52,6 +48,10 @@ if [ -n "$labs" ]; then
   done
 fi
 command -v python3 >/dev/null || die "python3 is needed to write the zip"
+if [ -z "$seed" ]; then
+  seed=$(( ($(od -An -N4 -tu4 /dev/urandom | tr -d ' ') % 900000000) + 100000000 ))
+  echo "gradescope: drew the seed $seed (baked into the zip)"
+fi
 
 # The file list: what git tracks (or every file outside git), less what the autograder has no use for.
 excluded() {
@@ -106,7 +106,8 @@ if [ ! -d "\$submission/labs" ]; then
 fi
 mkdir -p "\$top/results"
 cd "\$kit"
-"\$kit/build/bin/gsv-grade" --kit "\$kit" --bin "\$kit/build/bin" --submission "\$submission" --out "\$top/results" \\
+# The kit and binaries gsv-grade was built with and for: on Gradescope this folder and its build/.
+"\$kit/build/bin/gsv-grade" --submission "\$submission" --out "\$top/results" \\
   $options
 status=\$?
 # gsv-grade writes results.json whenever it graded or could name why not; anything else still gets one.

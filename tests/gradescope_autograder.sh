@@ -5,7 +5,9 @@
 # results.json in Gradescope's format for the lab 01 starter (a repository: labs/ at the top) and the solution (a
 # zip of one folder holding labs/): tests with name, score, max_score and output, and a total that is their sum,
 # full marks for the solution, hidden cases included. grader/ci/classroom_points.py turns the same results into
-# GitHub Classroom points. The simulated source/ reuses this build (setup.sh's build is not rerun).
+# GitHub Classroom points. The simulated source/ reuses this build (setup.sh's build is not rerun), so the grading
+# takes the kit this build was made from (the working tree), not the zip's copy of it, whose contents are checked
+# apart.
 # Usage: gradescope_autograder.sh BIN_DIR. Exit 0: pass, 1: fail.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
