@@ -82,12 +82,17 @@ BatchRecord merge_shards(const std::vector<fs::path>& shard_dirs, const fs::path
     std::map<std::string, const BatchEntry*> rows;
     for (const BatchRecord& r : records)
         for (const BatchEntry& e : r.entries) rows[e.name] = &e;
-    fs::create_directories(out);
-    for (const std::string& name : merged.roster) {
-        merged.entries.push_back(*rows.at(name));
-        // Every row has its folder where grading got far enough to write one (a name with nothing submitted has none).
-        const fs::path from = by_student.at(name) / name;
-        if (fs::is_directory(from)) fs::copy(from, out / name, fs::copy_options::recursive);
+    try {
+        fs::create_directories(out);
+        for (const std::string& name : merged.roster) {
+            merged.entries.push_back(*rows.at(name));
+            // A row has its folder where grading got far enough to write one (a name with nothing submitted has none).
+            const fs::path from = by_student.at(name) / name;
+            if (fs::is_directory(from)) fs::copy(from, out / name, fs::copy_options::recursive);
+        }
+    } catch (const fs::filesystem_error& e) {
+        throw Error("merge: cannot write into '" + out.string() + "': " + e.code().message() +
+                    (e.path1().empty() ? "" : " ('" + e.path1().string() + "')"));
     }
     write_class_tables(merged.entries, out);
     write_batch_record(merged, out);

@@ -97,8 +97,6 @@ std::uint64_t parse_seed(const std::string& text) {
     return value;
 }
 
-}  // namespace
-
 // gsv-grade merge OUT SHARD_OUT... and gsv-grade shard K/N ROSTER.
 int merge_main(int argc, char** argv) {
     if (argc < 4) throw gsv::Error("needs OUT and at least one shard's output folder: gsv-grade merge OUT SHARD_OUT...");
@@ -115,6 +113,8 @@ int shard_main(int argc, char** argv) {
     for (const std::string& name : gsv::shard_names(gsv::read_roster(argv[3]), k, n)) std::printf("%s\n", name.c_str());
     return 0;
 }
+
+}  // namespace
 
 int main(int argc, char** argv) {
     if (argc > 1 && (std::string(argv[1]) == "merge" || std::string(argv[1]) == "shard")) {

@@ -77,6 +77,7 @@ refused "a missing shard" "shard 3/3 missing, so are the students cy" "$grade" m
 refused "a shard twice" "are both shard 1/3" "$grade" merge "$tmp/m2" "$tmp/shard1" "$tmp/shard1" "$tmp/shard2" "$tmp/shard3"
 refused "a non-empty OUT" "must be a new or empty folder" "$grade" merge "$tmp/merged" "$tmp/shard1" "$tmp/shard2" "$tmp/shard3"
 refused "not a shard" "holds no batch.json" "$grade" merge "$tmp/m3" "$tmp/class"
+refused "an OUT that cannot be made" "cannot write into" "$grade" merge "$tmp/roster.txt/out" "$tmp/shard1" "$tmp/shard2" "$tmp/shard3"
 [ ! -e "$tmp/m1" ] && [ ! -e "$tmp/m2" ] || fail "a refused merge wrote its OUT"
 # Shard 3 (cy: no labs/, graded in a moment) again with another seed, other labs and another kit.
 other_shard() {  # other_shard OUT OPTIONS...
