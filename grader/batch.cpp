@@ -8,8 +8,11 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cctype>
 #include <cstdio>
+#include <fstream>
 #include <mutex>
+#include <regex>
 #include <sstream>
 #include <thread>
 
@@ -17,29 +20,85 @@ namespace fs = std::filesystem;
 
 namespace gsv {
 
-std::vector<BatchEntry> grade_batch(const BatchOptions& options, void (*progress)(const BatchEntry&, int, int)) {
+std::pair<int, int> parse_shard(const std::string& text) {
+    static const std::regex form(R"(^([0-9]{1,6})/([0-9]{1,6})$)");
+    std::smatch m;
+    if (!std::regex_match(text, m, form)) throw Error("--shard needs K/N (shard K of N, e.g. 2/8), got '" + text + "'");
+    const int k = std::stoi(m[1]), n = std::stoi(m[2]);
+    if (n < 1) throw Error("--shard " + text + ": N (the number of shards) must be at least 1");
+    if (k < 1 || k > n) throw Error("--shard " + text + ": K must be in 1.." + std::to_string(n));
+    return {k, n};
+}
+
+std::vector<std::string> shard_names(std::vector<std::string> roster, int shard, int shard_count) {
+    std::sort(roster.begin(), roster.end());
+    roster.erase(std::unique(roster.begin(), roster.end()), roster.end());
+    std::vector<std::string> mine;
+    for (std::size_t i = static_cast<std::size_t>(shard - 1); i < roster.size(); i += static_cast<std::size_t>(shard_count))
+        mine.push_back(roster[i]);
+    return mine;
+}
+
+std::vector<std::string> read_roster(const std::filesystem::path& file) {
+    std::ifstream in(file);
+    if (!in) throw Error("cannot read the roster '" + file.string() + "'");
+    std::vector<std::string> names;
+    int line_number = 0;
+    for (std::string line; std::getline(in, line);) {
+        ++line_number;
+        line.erase(std::find_if(line.rbegin(), line.rend(), [](unsigned char c) { return !std::isspace(c); }).base(), line.end());
+        line.erase(line.begin(), std::find_if(line.begin(), line.end(), [](unsigned char c) { return !std::isspace(c); }));
+        if (line.empty() || line[0] == '#') continue;
+        // A name becomes a folder under --out and a quoted CSV field: nothing that could leave either.
+        const bool bad_char = std::any_of(line.begin(), line.end(), [](unsigned char c) { return c < 0x20 || c == '/' || c == '"' || c == 0x7f; });
+        if (bad_char || line[0] == '.')
+            throw Error(file.string() + ":" + std::to_string(line_number) + ": '" + line + "' is not a submission folder name");
+        names.push_back(line);
+    }
+    if (names.empty()) throw Error("the roster '" + file.string() + "' names no submissions");
+    return names;
+}
+
+std::vector<BatchEntry> grade_batch(const BatchOptions& options, void (*progress)(const BatchEntry&, int, int),
+                                    std::vector<std::string>* class_names) {
     if (!fs::is_directory(options.submissions)) throw Error("no folder of submissions '" + options.submissions.string() + "'");
-    std::vector<fs::path> folders;
-    for (const auto& e : fs::directory_iterator(options.submissions))
-        if (e.is_directory() && e.path().filename().string()[0] != '.') folders.push_back(e.path());
-    std::sort(folders.begin(), folders.end());
-    if (folders.empty()) throw Error("'" + options.submissions.string() + "' holds no submission folders");
+    std::vector<std::string> roster = options.roster;
+    if (roster.empty()) {
+        for (const auto& e : fs::directory_iterator(options.submissions))
+            if (e.is_directory() && e.path().filename().string()[0] != '.') roster.push_back(e.path().filename().string());
+        if (roster.empty()) throw Error("'" + options.submissions.string() + "' holds no submission folders");
+    }
+    std::sort(roster.begin(), roster.end());
+    roster.erase(std::unique(roster.begin(), roster.end()), roster.end());
+    if (class_names) *class_names = roster;
+    const std::vector<std::string> names = shard_names(roster, options.shard, options.shard_count);
     fs::create_directories(options.out_dir);
 
-    std::vector<BatchEntry> entries(folders.size());
+    std::vector<BatchEntry> entries(names.size());
     std::atomic<std::size_t> next{0};
     std::mutex report_mutex;
     int done = 0;
     auto worker = [&] {
-        for (std::size_t i = next++; i < folders.size(); i = next++) {
+        for (std::size_t i = next++; i < names.size(); i = next++) {
             BatchEntry& entry = entries[i];
-            entry.name = folders[i].filename().string();
+            entry.name = names[i];
+            const fs::path folder = options.submissions / entry.name;
             const fs::path out = fs::absolute(options.out_dir) / entry.name;
+            // The uid follows the place in the whole class, so shards on one machine never share one.
+            const std::size_t place = static_cast<std::size_t>(
+                std::lower_bound(roster.begin(), roster.end(), entry.name) - roster.begin());
+            if (!fs::is_directory(folder)) {
+                entry.problem = "nothing submitted (no folder '" + entry.name + "')";
+                std::lock_guard<std::mutex> lock(report_mutex);
+                ++done;
+                if (progress) progress(entry, done, static_cast<int>(names.size()));
+                continue;
+            }
             // The seed goes through the environment, not the command line that /proc shows every process; each
             // submission runs as a uid of its own, so one cannot read or signal another's files or processes.
-            std::vector<std::string> argv{options.grader.string(), "--submission", fs::absolute(folders[i]).string(),
+            std::vector<std::string> argv{options.grader.string(), "--submission", fs::absolute(folder).string(),
                                           "--out", out.string(), "--quiet",
-                                          "--sandbox-uid", std::to_string(kSandboxUidBase + 1 + i)};
+                                          "--sandbox-uid", std::to_string(kSandboxUidBase + 1 + place)};
             argv.insert(argv.end(), options.pass_through.begin(), options.pass_through.end());
             ProcessLimits limits;
             limits.timeout = std::chrono::hours(1);
@@ -59,7 +118,7 @@ std::vector<BatchEntry> grade_batch(const BatchOptions& options, void (*progress
             }
             std::lock_guard<std::mutex> lock(report_mutex);
             ++done;
-            if (progress) progress(entry, done, static_cast<int>(folders.size()));
+            if (progress) progress(entry, done, static_cast<int>(names.size()));
         }
     };
     std::vector<std::thread> pool;

@@ -1,9 +1,11 @@
 #pragma once
 // Grades a folder of submissions (one sub-folder each) with N workers: each submission is graded by a
-// gsv-grade process of its own into <out>/<name>/, all with the same seed, then one class table.
+// gsv-grade process of its own into <out>/<name>/, all with the same seed, then one class table. A shard K/N
+// grades every N-th name of the class (sorted), so N machines share a class and `gsv-grade merge` joins them.
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace gsv {
@@ -19,7 +21,18 @@ struct BatchOptions {
     int workers = 2;
     std::uint64_t seed = 0;
     std::vector<std::string> pass_through;  // options given to every submission's run (--kit, --labs, ...)
+    int shard = 1, shard_count = 1;         // grade shard K of N (1 <= K <= N)
+    // The class: the folder names in `submissions` when empty. With a roster, `submissions` needs to hold only
+    // this shard's folders (what a CI job fetched), and a name without a folder is a row "nothing submitted".
+    std::vector<std::string> roster;
 };
+
+// "K/N" with 1 <= K <= N; throws gsv::Error naming the text otherwise.
+std::pair<int, int> parse_shard(const std::string& text);
+// The names of shard K of N: every N-th of the sorted, deduplicated class, starting at the K-th.
+std::vector<std::string> shard_names(std::vector<std::string> roster, int shard, int shard_count);
+// A roster file: one name per line; blank lines and '#' comments skipped; names as folder names allow.
+std::vector<std::string> read_roster(const std::filesystem::path& file);
 
 struct BatchEntry {
     std::string name;
@@ -29,7 +42,9 @@ struct BatchEntry {
     std::string problem;   // why it was not graded
 };
 
-std::vector<BatchEntry> grade_batch(const BatchOptions& options, void (*progress)(const BatchEntry&, int done, int total));
+// The entries of this shard, in class order; `class_names`, when given, gets the whole class, sorted.
+std::vector<BatchEntry> grade_batch(const BatchOptions& options, void (*progress)(const BatchEntry&, int done, int total),
+                                    std::vector<std::string>* class_names = nullptr);
 std::string class_csv(const std::vector<BatchEntry>& entries);
 std::string class_table(const std::vector<BatchEntry>& entries);
 

@@ -7,6 +7,8 @@
 #include "common/io/json.h"
 #include "common/io/output_folder.h"
 #include "grader/batch.h"
+#include "grader/batch_merge.h"
+#include "grader/batch_record.h"
 #include "grader/draw.h"
 #include "grader/grade.h"
 #include "grader/report.h"
@@ -25,8 +27,9 @@
 namespace {
 
 const char* kUsage =
-    "usage: gsv-grade [--kit DIR] [--bin DIR] [--submission DIR | --batch DIR [--workers N]] [--out DIR]\n"
-    "                 [--labs lab01,lab02] [--cases gyre,wrap] [--todo L02-T3] [--seed N] [--self-check] [--no-timing]\n"
+    "usage: gsv-grade [--kit DIR] [--bin DIR] [--submission DIR | --batch DIR [--workers N] [--shard K/N] [--roster FILE]]\n"
+    "                 [--out DIR]"
+    " [--labs lab01,lab02] [--cases gyre,wrap] [--todo L02-T3] [--seed N] [--self-check] [--no-timing]\n"
     "                 [--public-only]"
     " [--timeout S] [--fail-under F] [--update-goldens] [--allow-readable-kit] [--no-namespaces]\n"
     "                 [--no-sandbox] [--quiet] [--help] [--version]\n"
@@ -34,6 +37,10 @@ const char* kUsage =
     "  --bin DIR         the kit's built labs and <lab>_solution; default: this build's bin/\n"
     "  --submission DIR  a copy of the kit whose labs/ hold a student's work: built against this kit, then graded\n"
     "  --batch DIR       every folder in DIR is a submission; --workers N grade N at a time (default 2)\n"
+    "  --shard K/N       with --batch and --seed: grade every N-th submission (sorted by name) from the K-th, so N\n"
+    "                    machines share a class; then gsv-grade merge joins their --out folders\n"
+    "  --roster FILE     with --batch: the class, one name per line (default: the folders in DIR); DIR then needs\n"
+    "                    only this shard's folders, and a name without one is graded 'nothing submitted'\n"
     "  --out DIR         images and reports: results.json (Gradescope), report.json, junit.xml, report.html\n"
     "  --cases A,B       only these cases (public or hidden names) of the chosen labs: re-check one fix quickly\n"
     "  --todo L02-T3     only the cases of one TODO (its lab's): what the lab sheet's TODO table gives\n"
@@ -48,6 +55,10 @@ const char* kUsage =
     "                    references anyway; without it they are refused there, and the report says which walls were up\n"
     "  --no-namespaces   every wall but the namespaces: how the grader behaves where unshare is refused\n"
     "  --no-sandbox      run student code without namespaces and limits (to debug the grader only)\n"
+    "       gsv-grade merge OUT SHARD_OUT...  the --out folders of a batch's shards joined into OUT (new or empty):\n"
+    "                    the per-submission folders, class.csv, class.txt, batch.json; refused when the shards were\n"
+    "                    graded with other seeds, kits, labs or options, overlap, or one is missing\n"
+    "       gsv-grade shard K/N ROSTER       the names of shard K of N of a roster file, one a line (what to fetch)\n"
     "exit status: 0 graded (whatever the score), 1 under --fail-under, 2 usage or internal error\n";
 
 bool quiet = false;
@@ -95,9 +106,37 @@ std::uint64_t parse_seed(const std::string& text) {
     return value;
 }
 
+// gsv-grade merge OUT SHARD_OUT... and gsv-grade shard K/N ROSTER.
+int merge_main(int argc, char** argv) {
+    if (argc < 4) throw gsv::Error("needs OUT and at least one shard's output folder: gsv-grade merge OUT SHARD_OUT...");
+    std::vector<std::filesystem::path> shards(argv + 3, argv + argc);
+    const gsv::BatchRecord merged = gsv::merge_shards(shards, argv[2]);
+    std::printf("%s", gsv::class_table(merged.entries).c_str());
+    std::printf("%zu shards merged: per-submission reports in %s/<name>/, the class in %s/class.csv\n", shards.size(), argv[2], argv[2]);
+    return 0;
+}
+
+int shard_main(int argc, char** argv) {
+    if (argc != 4) throw gsv::Error("needs K/N and a roster file: gsv-grade shard K/N ROSTER");
+    const auto [k, n] = gsv::parse_shard(argv[2]);
+    for (const std::string& name : gsv::shard_names(gsv::read_roster(argv[3]), k, n)) std::printf("%s\n", name.c_str());
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+    if (argc > 1 && (std::string(argv[1]) == "merge" || std::string(argv[1]) == "shard")) {
+        try {
+            return std::string(argv[1]) == "merge" ? merge_main(argc, argv) : shard_main(argc, argv);
+        } catch (const gsv::Error& e) {
+            std::fprintf(stderr, "gsv-grade %s: %s\n", argv[1], e.what());
+            return 2;
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "gsv-grade %s: internal error: %s\n", argv[1], e.what());
+            return 2;
+        }
+    }
     gsv::GradeOptions options;
     options.kit_root = GSV_SOURCE_ROOT;
     options.bin_dir = GSV_BIN_DIR;
@@ -105,6 +144,8 @@ int main(int argc, char** argv) {
     double fail_under = -1;
     std::filesystem::path batch;
     int workers = 2;
+    std::string shard;                 // K/N, checked once every option is read
+    std::filesystem::path roster;
     std::vector<std::string> pass_through;  // what each batch run gets too
     try {
         for (int i = 1; i < argc; ++i) {
@@ -126,6 +167,8 @@ int main(int argc, char** argv) {
             else if (a == "--submission") options.submission = value();
             else if (a == "--batch") batch = value();
             else if (a == "--workers") workers = static_cast<int>(number(1, 256));
+            else if (a == "--shard") shard = value();
+            else if (a == "--roster") roster = value();
             else if (a == "--out") options.out_dir = value();
             else if (a == "--labs") {
                 const std::string list = value();
@@ -164,10 +207,17 @@ int main(int argc, char** argv) {
             } else throw gsv::Error("unknown option '" + a + "' (see --help)");
         }
         if (const char* seed = std::getenv(gsv::kSeedVariable); seed && !options.seed) options.seed = parse_seed(seed);
-        // Before any build or lab runs: a class's grading that cannot write its reports says so first.
-        gsv::prepare_output_folder(options.out_dir, "--out");
+        if (batch.empty() && !shard.empty()) throw gsv::Error("--shard " + shard + " needs --batch DIR");
+        if (batch.empty() && !roster.empty()) throw gsv::Error("--roster needs --batch DIR");
+        // Before any build or lab runs: a grading that cannot write its reports says so first (a batch once its
+        // command line is known good, so that a refused one leaves no folder behind).
+        if (batch.empty()) gsv::prepare_output_folder(options.out_dir, "--out");
         if (!batch.empty()) {
             if (!options.submission.empty()) throw gsv::Error("--batch and --submission exclude each other");
+            const auto [shard_k, shard_n] = shard.empty() ? std::pair{1, 1} : gsv::parse_shard(shard);
+            // Each shard would draw a fresh seed of its own: other hidden cases on every machine.
+            if (!shard.empty() && !options.seed)
+                throw gsv::Error("--shard " + shard + " needs --seed N: every shard must draw the same hidden cases");
             gsv::BatchOptions b;
             b.grader = gsv::Assets::executable_path(argv[0]);
             b.submissions = batch;
@@ -175,14 +225,24 @@ int main(int argc, char** argv) {
             b.workers = workers;
             b.seed = options.seed ? *options.seed : gsv::fresh_seed();
             b.pass_through = pass_through;
-            std::fprintf(stderr, "grading the submissions in %s with %d workers, seed %llu\n", batch.c_str(), workers,
-                         static_cast<unsigned long long>(b.seed));
+            b.shard = shard_k;
+            b.shard_count = shard_n;
+            if (!roster.empty()) b.roster = gsv::read_roster(roster);
+            gsv::prepare_output_folder(options.out_dir, "--out");
+            gsv::BatchRecord record;
+            record.seed = b.seed;
+            record.shard = shard_k;
+            record.shard_count = shard_n;
+            record.kit = gsv::kit_fingerprint(options.kit_root);
+            record.options = gsv::recorded_options(pass_through);
+            std::fprintf(stderr, "grading the submissions in %s%s with %d workers, seed %llu\n", batch.c_str(),
+                         shard.empty() ? "" : (", shard " + shard).c_str(), workers, static_cast<unsigned long long>(b.seed));
             batch_start = std::chrono::steady_clock::now();
-            const auto entries = gsv::grade_batch(b, print_batch_progress);
-            std::printf("%s", gsv::class_table(entries).c_str());
-            const auto csv = options.out_dir / "class.csv";
-            std::ofstream(csv) << gsv::class_csv(entries);
-            std::printf("per-submission reports in %s/<name>/, the class in %s\n", options.out_dir.c_str(), csv.c_str());
+            record.entries = gsv::grade_batch(b, print_batch_progress, &record.roster);
+            std::printf("%s", gsv::class_table(record.entries).c_str());
+            gsv::write_class_tables(record.entries, options.out_dir);
+            gsv::write_batch_record(record, options.out_dir);
+            std::printf("per-submission reports in %s/<name>/, the class in %s/class.csv\n", options.out_dir.c_str(), options.out_dir.c_str());
             return 0;
         }
         const gsv::GradeReport report = gsv::grade(options, print_progress);

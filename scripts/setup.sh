@@ -8,7 +8,7 @@ debian_packages=(
   libglfw3-dev libglm-dev catch2 libstb-dev fonts-dejavu-core zlib1g-dev libtinyobjloader-dev
   libegl-dev libgl-dev libgl1-mesa-dri libegl-mesa0 libosmesa6-dev
   libimgui-dev
-  python3-glad glslang-tools python-matplotlib-data python3-nibabel
+  python3-glad glslang-tools python-matplotlib-data python3-nibabel python3-yaml
   xvfb xauth imagemagick gnuplot-nox pandoc
 )
 

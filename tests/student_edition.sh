@@ -27,7 +27,8 @@ tail -n 1 "$log"
 for p in solutions tests grader/hidden build grade-results .git; do
   [ ! -e "$kit/$p" ] || fail "$p was exported"
 done
-for p in labs/lab01_gooch grader/golden/lab01 grader/cases/lab01.json README.md .github/workflows/self-check.yml; do
+for p in labs/lab01_gooch grader/golden/lab01 grader/cases/lab01.json README.md .github/workflows/self-check.yml \
+         grader/ci/classroom_points.py; do
   [ -e "$kit/$p" ] || fail "$p is missing from the export"
 done
 # The golden arrays (<case>.<array>.f32s) ship with the golden images: the self-check checks a lab's numbers too.
