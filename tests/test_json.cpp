@@ -3,6 +3,7 @@
 #include <fstream>
 #include <limits>
 #include <random>
+#include <vector>
 #include <string>
 
 #include "catch.hpp"
@@ -194,6 +195,74 @@ TEST_CASE("json: each value's line and column are those of its first byte") {
         CHECK(lines.at(i).line() == int(i) + 2);
         CHECK(lines.at(i).column() == 1);
     }
+}
+
+namespace {
+
+// Whether the byte at value's line and column is the one its kind of value starts with.
+bool placed_at_first_byte(const gsv::Json& value, const std::vector<std::size_t>& line_starts, const std::string& text) {
+    const std::size_t at = line_starts.at(static_cast<std::size_t>(value.line() - 1)) + value.column() - 1;
+    if (value.line() < 1 || value.column() < 1 || at >= text.size()) return false;
+    const char c = text[at];
+    switch (value.type()) {
+        case gsv::Json::Type::Null: return c == 'n';
+        case gsv::Json::Type::Bool: return c == 't' || c == 'f';
+        case gsv::Json::Type::Number: return c == '-' || (c >= '0' && c <= '9');
+        case gsv::Json::Type::String: return c == '"';
+        case gsv::Json::Type::Array: return c == '[';
+        case gsv::Json::Type::Object: return c == '{';
+    }
+    return false;
+}
+
+std::size_t count_misplaced(const gsv::Json& value, const std::vector<std::size_t>& line_starts, const std::string& text) {
+    std::size_t misplaced = placed_at_first_byte(value, line_starts, text) ? 0 : 1;
+    if (value.is_array())
+        for (const gsv::Json& element : value.as_array()) misplaced += count_misplaced(element, line_starts, text);
+    if (value.is_object())
+        for (const gsv::Json::Member& member : value.as_object()) misplaced += count_misplaced(member.second, line_starts, text);
+    return misplaced;
+}
+
+}  // namespace
+
+TEST_CASE("json: in mutated case files every value is placed at its first byte and every error is one line") {
+    // A real case file with bytes changed, removed and inserted at random (fixed seed): what parses
+    // has each value's line and column on its own first byte; what does not gives one "t.json:L:C:" line.
+    const std::string original = gsv::test::read_text(fs::path(GSV_SOURCE_ROOT) / "grader" / "cases" / "lab06.json");
+    const std::string alphabet("{}[]:,\" \n\t\\u0123456789eE+-.truefalsenull\0\xff\xc3\xa9", 44);
+    std::mt19937 random(7);
+    int parsed = 0, refused = 0;
+    std::size_t misplaced = 0, bad_messages = 0;
+    for (int round = 0; round < 3000; ++round) {
+        std::string text = original;
+        for (int edit = 0; edit < 3 && !text.empty(); ++edit) {
+            const std::size_t at = random() % text.size();
+            const char byte = alphabet[random() % alphabet.size()];
+            switch (random() % 3) {
+                case 0: text[at] = byte; break;
+                case 1: text.erase(at, 1 + random() % 3); break;
+                default: text.insert(at, 1, byte);
+            }
+        }
+        std::vector<std::size_t> line_starts{0};
+        for (std::size_t i = 0; i < text.size(); ++i)
+            if (text[i] == '\n') line_starts.push_back(i + 1);
+        try {
+            const gsv::Json root = gsv::parse_json(text, "t.json");
+            ++parsed;
+            misplaced += count_misplaced(root, line_starts, text);
+        } catch (const gsv::Error& e) {
+            ++refused;
+            const std::string message = e.what();
+            if (message.rfind("t.json:", 0) != 0 || message.find('\n') != std::string::npos || message.size() > 300)
+                ++bad_messages;
+        }
+    }
+    CHECK(parsed > 500);  // the mutations leave many files valid, so placement is checked on many
+    CHECK(refused > 500);
+    CHECK(misplaced == 0);
+    CHECK(bad_messages == 0);
 }
 
 TEST_CASE("json: hostile input is refused in one short line") {
