@@ -3,6 +3,7 @@
 find_package(glfw3 3.3 REQUIRED)
 find_package(glm REQUIRED)
 find_package(ZLIB REQUIRED)  # gzipped volumes (.nii.gz)
+find_package(nlohmann_json 3.9 REQUIRED)  # JSON files (header-only; 3.9 brought ordered_json)
 find_package(OpenGL REQUIRED COMPONENTS OpenGL OPTIONAL_COMPONENTS EGL)
 find_path(STB_INCLUDE_DIR stb_image.h PATH_SUFFIXES stb REQUIRED)
 

@@ -87,8 +87,11 @@ public:
     bool bool_or(const std::string& key, bool fallback) const;
     std::string string_or(const std::string& key, const std::string& fallback) const;
 
-    // indent > 0: one member or element per line, nested by that many spaces; indent <= 0: one line.
-    // Integral numbers print without ".0"; NaN and infinities, which JSON cannot express, print as null.
+    // Written by nlohmann-json. indent > 0: one member or element per line, nested by that many
+    // spaces; indent <= 0: one line. Members in the order they were added. Integral numbers below
+    // 2^53 print without ".0", others as short text that reads back as the same double; NaN
+    // and infinities, which JSON cannot express, print as null. Bytes in strings that are not UTF-8
+    // are written as U+FFFD, so what is written always parses.
     std::string dump(int indent = 2) const;
 
     // Structural equality; where a value came from is ignored.
@@ -108,7 +111,6 @@ private:
     [[noreturn]] void fail_type(const char* wanted) const;
     const Json& required_member(const std::string& key, const char* wanted) const;
     std::string child_path(const std::string& key) const;
-    void dump_to(std::string& out, int indent, int depth) const;
 
     Type type_ = Type::Null;
     bool bool_ = false;
@@ -122,9 +124,15 @@ private:
     std::string path_;
 };
 
-// Throws gsv::Error "source_name:line:col: <what is wrong>" on any syntax error. Lines and columns
-// count from 1; columns count bytes. Duplicate keys in an object are an error: in a hand-written
-// case file the second one is almost always a copy-paste mistake.
+// Parsed by nlohmann-json (RFC 8259, strict: no comments, no trailing commas, strings must be UTF-8).
+// Throws gsv::Error "source_name:line:col: <what is wrong>" on any error, in one line: for a syntax
+// error the byte where nlohmann stopped, with its reason; for a duplicate key, a number too large
+// for a double or nesting deeper than 256, the first byte of that key, number or bracket; for a
+// NUL byte (nowhere allowed; nlohmann would take it for the end), that byte. A value's
+// line() and column() are those of its first byte (the opening quote or bracket, the sign or first
+// digit). Lines and columns count from 1; columns count bytes, and a leading UTF-8 byte order mark
+// is not counted. Duplicate keys in an object are an error: in a hand-written case file the second
+// one is almost always a copy-paste mistake.
 Json parse_json(std::string_view text, const std::string& source_name);
 
 // Reads and parses a whole file, using its path as the source name. Throws gsv::Error naming the
