@@ -16,7 +16,7 @@ debian_packages=(
 if [ "$(uname -s)" = "Darwin" ]; then
   cat <<'MSG'
 macOS: install the kit's dependencies with Homebrew, then build with the same CMake commands:
-  brew install cmake ninja glfw glm catch2 stb nlohmann-json glslang gnuplot
+  brew install cmake ninja glfw glm catch2 stb nlohmann-json tinyobjloader glslang gnuplot
   (no EGL or OSMesa on macOS: labs run in a window with an OpenGL 4.1 core context; lab 05 needs 4.3)
 MSG
   exit 0
@@ -25,7 +25,7 @@ case "$(uname -s)" in
   MINGW*|MSYS*|CYGWIN*)
     cat <<'MSG'
 Windows: install the dependencies with vcpkg and point CMake at its toolchain file:
-  vcpkg install glfw3 glm catch2 stb nlohmann-json imgui[glfw-binding,opengl3-binding]
+  vcpkg install glfw3 glm catch2 stb nlohmann-json zlib tinyobjloader imgui[glfw-binding,opengl3-binding]
   cmake --preset default -DCMAKE_TOOLCHAIN_FILE=%VCPKG_ROOT%/scripts/buildsystems/vcpkg.cmake
 MSG
     exit 0 ;;

@@ -12,6 +12,7 @@
 #include "common/scene/mesh_data.h"
 #include "support/flow/flow_field.h"
 #include "support/flow/lic_contrast_pass.h"
+#include "support/flow/lic_view_params.h"
 #include "support/flow/noise.h"
 #include "time_flow.h"
 
@@ -45,12 +46,7 @@ public:
         p.add_int("grid", 256, 16, 1024, "flow texels across (the domain is twice as wide as high)");
         p.add_float("speed", 1.0, 0, 4, "largest speed, in flow texels per step").with_step(0.1);
         p.add_int("seed", 1, 0, 1000000, "the white noise");
-        p.add_float("observer_velocity", 0, -1, 1,
-                    "the observer's velocity along +x, a fraction of `speed`, subtracted from the flow: a frame that "
-                    "moves with the vortex street's vortices shows them").with_step(0.01);
-        p.add_choice("contrast", "off", gsv::lic_contrast_names(),
-                     "a tone curve after the LIC: a stretch of the 0.5-99.5 percentiles to black and white, or histogram "
-                     "equalisation");
+        gsv::add_lic_view_params(p);
     }
 
     void setup(gsv::LabKit& kit) override {

@@ -13,6 +13,7 @@
 #include "support/flow/flow_field.h"
 #include "support/flow/lic_contrast_pass.h"
 #include "support/flow/lic_reference.h"
+#include "support/flow/lic_view_params.h"
 #include "support/flow/moving_frame.h"
 #include "support/flow/noise.h"
 
@@ -46,12 +47,7 @@ public:
         p.add_float("time", 0, 0, 10, "the double gyre's time; the frame of a .flow sequence").with_step(0.5).animated()
             .applies_when("field", {"double_gyre", "file"});
         p.add_float("swirl_radius", 0.28, 0.05, 0.7, "radius of the swirl around the photograph's face").with_step(0.02).applies_when("field", {"swirl"});
-        p.add_float("observer_velocity", 0, -1, 1,
-                    "the observer's velocity along +x, a fraction of `speed`, subtracted from the field: a frame that "
-                    "moves with the vortex street's vortices shows them").with_step(0.01);
-        p.add_choice("contrast", "off", gsv::lic_contrast_names(),
-                     "a tone curve after the LIC: a stretch of the 0.5-99.5 percentiles to black and white, or histogram "
-                     "equalisation");
+        gsv::add_lic_view_params(p);
     }
 
     void setup(gsv::LabKit& kit) override {
