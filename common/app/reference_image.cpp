@@ -2,10 +2,9 @@
 
 #include "common/app/subprocess.h"
 #include "common/core/error.h"
+#include "common/io/temporary_folder.h"
 
 #include <fstream>
-#include <random>
-#include <sstream>
 #include <system_error>
 
 namespace fs = std::filesystem;
@@ -43,31 +42,6 @@ std::string last_line(const fs::path& file) {
     return last;
 }
 
-// A fresh folder for the solution's files, removed when done.
-class TemporaryFolder {
-public:
-    TemporaryFolder() {
-        std::random_device random;
-        for (int attempt = 0; attempt < 16; ++attempt) {
-            std::ostringstream name;
-            name << "gsv-reference-" << std::hex << random() << random();
-            path_ = fs::temp_directory_path() / name.str();
-            std::error_code ec;
-            if (fs::create_directory(path_, ec)) return;
-        }
-        throw Error("cannot make a folder for the reference's image in " + fs::temp_directory_path().string());
-    }
-    ~TemporaryFolder() {
-        std::error_code ec;
-        fs::remove_all(path_, ec);
-    }
-    TemporaryFolder(const TemporaryFolder&) = delete;
-    TemporaryFolder& operator=(const TemporaryFolder&) = delete;
-    const fs::path& path() const { return path_; }
-
-private:
-    fs::path path_;
-};
 
 }  // namespace
 
@@ -130,7 +104,7 @@ std::vector<std::string> reference_render_arguments(Session& s, const fs::path& 
 
 Image reference_image(Session& s, const ReferenceSource& source, int width, int height) {
     if (source.kind == ReferenceSource::Kind::Golden) return read_png(source.path);
-    const TemporaryFolder folder;
+    const TemporaryFolder folder("gsv-reference-");
     const fs::path png = folder.path() / "reference.png", log = folder.path() / "reference.log";
     std::vector<std::string> argv{source.path.string()};
     const std::vector<std::string> args = reference_render_arguments(s, png, width, height);

@@ -8,7 +8,6 @@
 
 #include <chrono>
 #include <cstdio>
-#include <random>
 
 namespace gsv {
 namespace fs = std::filesystem;
@@ -23,15 +22,8 @@ PictureView next_view(PictureView view) {
     return PictureView::Yours;
 }
 
-LiveReference::LiveReference() {
-    std::random_device random;
-    folder_ = fs::temp_directory_path() / ("gsv-live-reference-" + std::to_string(random()));
-}
-
 LiveReference::~LiveReference() {
-    if (job_.valid()) job_.wait();
-    std::error_code ec;
-    fs::remove_all(folder_, ec);
+    if (job_.valid()) job_.wait();  // before the folder it writes into goes
 }
 
 const Image* LiveReference::get(Session& s, int width, int height) {
@@ -53,7 +45,7 @@ const Image* LiveReference::get(Session& s, int width, int height) {
     }
     // The settings as the solution's command line: the same line twice is the same picture.
     std::string key;
-    for (const auto& arg : reference_render_arguments(s, folder_ / "reference.png", width, height)) key += arg + '\n';
+    for (const auto& arg : reference_render_arguments(s, folder_.path() / "reference.png", width, height)) key += arg + '\n';
     if (job_.valid() && job_.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
         try {
             image_ = job_.get();
@@ -64,8 +56,7 @@ const Image* LiveReference::get(Session& s, int width, int height) {
         }
     }
     if (key != ready_key_ && key != failed_key_ && !job_.valid()) {
-        fs::create_directories(folder_);
-        const fs::path png = folder_ / ("reference-" + std::to_string(renders_++) + ".png");
+        const fs::path png = folder_.path() / ("reference-" + std::to_string(renders_++) + ".png");
         std::vector<std::string> argv{source.path.string()};
         for (const auto& arg : reference_render_arguments(s, png, width, height)) argv.push_back(arg);
         const fs::path log = fs::path(png).replace_extension(".log");

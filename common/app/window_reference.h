@@ -4,6 +4,7 @@
 // drawing while it comes, or is the case's golden image where the kit has no solution.
 #include "common/app/app_session.h"
 #include "common/image/image.h"
+#include "common/io/temporary_folder.h"
 
 #include <filesystem>
 #include <future>
@@ -17,7 +18,7 @@ PictureView next_view(PictureView view);
 
 class LiveReference {
 public:
-    LiveReference();
+    LiveReference() = default;
     ~LiveReference();
     LiveReference(const LiveReference&) = delete;
     LiveReference& operator=(const LiveReference&) = delete;
@@ -29,7 +30,7 @@ public:
     bool pending() const { return job_.valid(); }
 
 private:
-    std::filesystem::path folder_;
+    TemporaryFolder folder_{"gsv-live-reference-"};  // the solution's renders
     std::string ready_key_, running_key_, failed_key_;
     std::future<Image> job_;
     std::optional<Image> image_;
