@@ -92,6 +92,13 @@ GradeCase case_from(const Json& c, const std::string& file) {
             if (!std::regex_match(gc.needs.back(), todo_pattern))
                 throw Error(file + ": case '" + gc.name + "' needs '" + gc.needs.back() + "', expected an id like L01-T2");
         }
+    if (const Json* es = c.find("es"); es && !es->is_null()) {
+        try {
+            gc.es_version = parse_gl_version(es->as_string(), Profile::Es);
+        } catch (const Error& e) {
+            throw Error(file + ": case '" + gc.name + "': \"es\": " + e.what());
+        }
+    }
     if (const Json* arrays = c.find("arrays"); arrays && !arrays->is_null()) {
         gc.arrays.emplace();
         for (const Json& a : arrays->as_array()) gc.arrays->push_back(a.as_string());

@@ -2,6 +2,7 @@
 // A lab's grading cases, declared as data: the public ones in grader/cases/<lab>.json (shipped to
 // students, with golden images), the hidden ones in grader/hidden/<lab>.json (instructors only), whose
 // parameters are drawn from the seed given at grading time.
+#include "common/gl/gl_version.h"
 #include "common/image/image_compare.h"
 #include "grader/array_compare.h"
 
@@ -30,6 +31,9 @@ struct GradeCase {
     std::optional<ImageTolerance> live_tolerance, golden_tolerance;
     // "needs": the other TODOs this case cannot pass without (its own "todo" aside).
     std::vector<std::string> needs;
+    // "es": "3.2": the OpenGL ES version this case needs where it is above the lab's lowest (a setting that uses
+    // what ES 3.0 lacks); graded on --profile es at that version.
+    std::optional<GlVersion> es_version;
 };
 
 struct LabCases {

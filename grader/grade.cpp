@@ -35,7 +35,7 @@ double median(std::vector<double> v) {
 }
 
 // A result row for a case, before anything ran.
-CaseResult result_for(const LabCases& lab, const GradeCase& c) {
+CaseResult result_for(const LabCases& lab, const GradeCase& c, Profile profile) {
     CaseResult r;
     r.lab = lab.lab;
     r.name = c.name;
@@ -51,6 +51,8 @@ CaseResult result_for(const LabCases& lab, const GradeCase& c) {
     } else {
         for (const auto& s : c.settings) r.reproduce += " --set " + s;
     }
+    if (profile != Profile::Core) r.reproduce += std::string(" --profile ") + profile_name(profile);
+    if (profile == Profile::Es && c.es_version) r.reproduce += " --gl " + c.es_version->str();
     r.reproduce += " --out " + c.name + ".png";
     return r;
 }
@@ -105,7 +107,8 @@ private:
 
 LabRun Grading::reference_render(const LabCases& lab, const GradeCase& c) {
     if (!options_.reference_cache) return reference_.render(lab.lab + "_solution", lab, c, false, limits(lab, false));
-    std::string key = lab.lab + "|" + std::to_string(lab.width) + "x" + std::to_string(lab.height) + "|" + bin_.string();
+    std::string key = lab.lab + "|" + std::to_string(lab.width) + "x" + std::to_string(lab.height) + "|" + bin_.string() +
+                      "|" + profile_name(options_.profile);
     for (const auto& s : c.settings) key += "|" + s;
     auto& runs = options_.reference_cache->runs;
     if (auto it = runs.find(key); it != runs.end()) return it->second;
@@ -275,6 +278,7 @@ GradeReport Grading::run() {
     load_labs();
     const bool any_live = std::find(live_.begin(), live_.end(), true) != live_.end();
     report_.mode = options_.update_goldens ? "update goldens" : any_live ? "instructor" : "self-check";
+    report_.profile = profile_name(options_.profile);
     fs::create_directories(out_);
 
     fs::path student_bin = bin_, student_root = kit_;
@@ -303,8 +307,8 @@ GradeReport Grading::run() {
     }
     // The kit's own labs find their files as they would when a student runs them (GSV_ROOT included).
     const bool own_labs = options_.submission.empty() && options_.student_bin_dir.empty();
-    student_ = LabRunner{student_bin, own_labs ? fs::path() : student_root, true};
-    reference_ = LabRunner{bin_, "", false};
+    student_ = LabRunner{student_bin, own_labs ? fs::path() : student_root, true, options_.profile};
+    reference_ = LabRunner{bin_, "", false, options_.profile};
     for (std::size_t i = 0; i < labs_.size(); ++i) {
         const LabBuild* build = nullptr;
         for (const auto& b : report_.builds)
@@ -331,7 +335,7 @@ void Grading::grade_lab(const LabCases& lab, bool live, const LabBuild* build) {
             grade_case(lab, c, live, build);
         } catch (const std::exception& e) {
             // One case's trouble never stops the rest.
-            CaseResult r = result_for(lab, c);
+            CaseResult r = result_for(lab, c, options_.profile);
             r.status = CaseStatus::Error;
             r.detail = std::string("grader: ") + e.what();
             record(r);
@@ -382,7 +386,7 @@ std::string Grading::as_student_sees(std::string text) const {
 }
 
 void Grading::update_golden(const LabCases& lab, const GradeCase& c) {
-    CaseResult r = result_for(lab, c);
+    CaseResult r = result_for(lab, c, options_.profile);
     const LabRun ref = reference_.render(lab.lab + "_solution", lab, c, false, limits(lab, false));
     r.status = ref.status;
     r.output = ref.process.output;
@@ -421,7 +425,7 @@ void Grading::update_golden_arrays(const LabCases& lab, const GradeCase& c, cons
 }
 
 void Grading::grade_case(const LabCases& lab, const GradeCase& c, bool live, const LabBuild* build) {
-    CaseResult r = result_for(lab, c);
+    CaseResult r = result_for(lab, c, options_.profile);
     r.reference = live ? "live" : "golden";
     const bool timed = live && options_.timing && c.timing.points > 0;
     auto timing_row_like = [&](const CaseResult& image_row) {

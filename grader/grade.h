@@ -48,6 +48,9 @@ struct GradeOptions {
     std::shared_ptr<ReferenceCache> reference_cache;  // shared between runs in one process; none: no cache
     std::optional<std::uint64_t> seed;  // hidden cases; none: a fresh seed, recorded in the report
     double timeout_s = 0;               // per student process; 0: the case file's timeout_s (always the reference's)
+    // The profile both the student's lab and the reference run on. On ES each lab runs at its lowest ES version
+    // (a case's "es" lifts it); the self-check compares with the goldens, which are core-profile images.
+    Profile profile = Profile::Core;
 };
 
 struct GradeProgress {

@@ -1,6 +1,7 @@
 // gsv-grade: grades a submission (or the kit's own labs/) headless, prints the score table and writes the
 // reports; or grades a folder of submissions with N workers.
 #include "common/app/assets.h"
+#include "common/context/context.h"
 #include "common/core/error.h"
 #include "common/core/progress.h"
 #include "common/core/version.h"
@@ -30,7 +31,7 @@ const char* kUsage =
     "usage: gsv-grade [--kit DIR] [--bin DIR] [--submission DIR | --batch DIR [--workers N] [--shard K/N] [--roster FILE]]\n"
     "                 [--out DIR]"
     " [--labs lab01,lab02] [--cases gyre,wrap] [--todo L02-T3] [--seed N] [--self-check] [--no-timing]\n"
-    "                 [--public-only]"
+    "                 [--public-only] [--profile core|es]"
     " [--timeout S] [--fail-under F] [--update-goldens] [--allow-readable-kit] [--no-namespaces]\n"
     "                 [--no-sandbox] [--quiet] [--help] [--version]\n"
     "  --kit DIR         the kit (cases, goldens, hidden cases, solutions); default: the one this was built from\n"
@@ -47,6 +48,8 @@ const char* kUsage =
     "  --seed N          draws the hidden cases; the same seed gives the same cases (default: a fresh one, printed)\n"
     "  --self-check      golden images and public cases only, even where the solutions are built\n"
     "  --no-timing       skip the frame-time checks\n"
+    "  --profile P       core (default), compat or es: the profile the student's labs and the references run on; es runs\n"
+    "                    each lab at its lowest OpenGL ES version (the self-check still compares with the core goldens)\n"
     "  --public-only     skip the hidden cases\n"
     "  --timeout S       wall-clock limit per student lab process (default: the case file's)\n"
     "  --fail-under F    exit 1 when the score is below F (0..1) of the maximum: a CI gate\n"
@@ -196,6 +199,10 @@ int main(int argc, char** argv) {
             else if (a == "--sandbox-uid") options.sandbox_uid = static_cast<unsigned>(number(1000, 4000000000.0));
             else if (a == "--timeout") { options.timeout_s = number(0.1, 3600); pass_through.insert(pass_through.end(), {a, std::to_string(options.timeout_s)}); }
             else if (a == "--update-goldens") options.update_goldens = true;
+            else if (a == "--profile") {
+                options.profile = gsv::parse_profile(value());
+                pass_through.insert(pass_through.end(), {a, gsv::profile_name(options.profile)});
+            }
             else if (a == "--fail-under") fail_under = number(0, 1);
             else if (a == "--quiet") quiet = true;
             else if (a == "-h" || a == "--help") {
@@ -207,6 +214,9 @@ int main(int argc, char** argv) {
             } else throw gsv::Error("unknown option '" + a + "' (see --help)");
         }
         if (const char* seed = std::getenv(gsv::kSeedVariable); seed && !options.seed) options.seed = parse_seed(seed);
+        if (options.update_goldens && options.profile != gsv::Profile::Core)
+            throw gsv::Error("--update-goldens renders the goldens on the core profile; drop --profile " +
+                             std::string(gsv::profile_name(options.profile)));
         if (batch.empty() && !shard.empty()) throw gsv::Error("--shard " + shard + " needs --batch DIR");
         if (batch.empty() && !roster.empty()) throw gsv::Error("--roster needs --batch DIR");
         // Before any build or lab runs: a grading that cannot write its reports says so first (a batch once its

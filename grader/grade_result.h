@@ -94,6 +94,7 @@ struct LabBuild {
 struct GradeReport {
     std::string submission;   // what was graded: a folder, or the kit's own labs/
     std::string mode;         // "instructor" (live reference, hidden cases, timing) or "self-check"
+    std::string profile = "core";  // the GL profile the labs ran on: core, compat or es
     std::uint64_t seed = 0;   // hidden cases were drawn from it
     bool hidden_included = false, timing_included = false;
     std::string sandbox;      // which isolation the platform allowed, in words

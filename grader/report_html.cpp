@@ -221,6 +221,7 @@ std::string html_report(const GradeReport& report, const fs::path& out_dir) {
     if (report.hidden_included) out << ", hidden cases";
     if (report.timing_included) out << ", timing";
     out << "</td></tr>\n";
+    out << "<tr><th>profile</th><td>" << html(report.profile) << "</td></tr>\n";
     if (report.hidden_included) {
         char seed[32];
         std::snprintf(seed, sizeof seed, "%" PRIu64, report.seed);

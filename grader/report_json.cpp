@@ -193,6 +193,7 @@ std::string report_json(const GradeReport& report) {
     Json root = Json::object();
     root["submission"] = text(report.submission);
     root["mode"] = text(report.mode);
+    root["profile"] = text(report.profile);
     root["seed"] = seed_text(report.seed);
     root["hidden_included"] = report.hidden_included;
     root["timing_included"] = report.timing_included;

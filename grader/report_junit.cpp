@@ -68,6 +68,7 @@ std::string junit_xml(const GradeReport& report) {
         out << "  <testsuite name=\"" << xml(lab) << "\" " << counts_attributes(counts, counts.seconds) << ">\n";
         out << "    <properties>\n";
         property(out, "mode", report.mode);
+        property(out, "profile", report.profile);
         if (report.hidden_included) {
             char seed[32];
             std::snprintf(seed, sizeof seed, "%" PRIu64, report.seed);

@@ -129,6 +129,7 @@ std::string score_table(const GradeReport& report) {
     if (report.hidden_included) mode += ", hidden cases";
     if (report.timing_included) mode += ", timing";
     out << "mode     " << one_line(mode, 200) << "\n";
+    if (report.profile != "core") out << "profile  " << one_line(report.profile, 40) << " (the labs and the references ran on it)\n";
     if (report.hidden_included) {
         char seed[32];
         std::snprintf(seed, sizeof seed, "%" PRIu64, report.seed);

@@ -122,6 +122,8 @@ LabRun LabRunner::render(const std::string& binary, const LabCases& lab, const G
                                   "--out", png.string(), "--json", json.string(),
                                   "--frames", std::to_string(frames), "--warmup", std::to_string(warmup)};
     if (lab.checks_arrays() && !timed) argv.push_back("--arrays");
+    if (profile != Profile::Core) argv.insert(argv.end(), {"--profile", profile_name(profile)});
+    if (profile == Profile::Es && c.es_version) argv.insert(argv.end(), {"--gl", c.es_version->str()});
     for (const auto& s : c.settings) {
         argv.push_back("--set");
         argv.push_back(s);

@@ -2,6 +2,7 @@
 // Runs a lab binary headless on one case, in a working folder of its own, and reads back only what it
 // may hand in: a PNG (decoded and size-checked), its JSON report's frame time (validated) and, for a lab
 // whose cases check arrays, the arrays the report lists (grader/lab_arrays.h).
+#include "common/gl/gl_version.h"
 #include "common/image/image.h"
 #include "common/io/data_array.h"
 #include "grader/cases.h"
@@ -27,6 +28,9 @@ struct LabRunner {
     std::filesystem::path bin_dir;
     std::filesystem::path root;  // GSV_ROOT for the lab (a submission's kit view); empty: the binary's own
     bool student = false;        // its working folder is handed to the sandbox user
+    // The GL profile the lab runs on (--profile); on ES a case that declares "es" runs at that version (--gl),
+    // the others at the lab's own lowest ES version.
+    Profile profile = Profile::Core;
 
     // The case's image at the lab's size (one frame), and its arrays where the lab checks them; or `timed`:
     // frames at the lab's timing size.

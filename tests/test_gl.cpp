@@ -5,6 +5,7 @@
 
 #include "common/core/error.h"
 #include "common/gl/buffer.h"
+#include "common/gl/buffer_texture.h"
 #include "common/gl/framebuffer.h"
 #include "common/gl/gl.h"
 #include "common/gl/gpu_mesh.h"
@@ -122,10 +123,109 @@ TEST_CASE("context: the run holds to the requested version and refuses what it l
 
 TEST_CASE("context: bad backend, profile and version names are refused with the value named", "[unit]") {
     CHECK_THROWS_WITH(parse_backend("vulkan"), Catch::Matchers::Contains("'vulkan'"));
-    CHECK_THROWS_WITH(parse_profile("es"), Catch::Matchers::Contains("'es'"));
+    CHECK_THROWS_WITH(parse_profile("metal"), Catch::Matchers::Contains("'metal'"));
+    CHECK(parse_profile("es") == Profile::Es);
+    CHECK(parse_profile("gles") == Profile::Es);
     CHECK_THROWS_WITH(parse_gl_version("5.0"), Catch::Matchers::Contains("out of range"));
+    // A version is read against its profile: ES ends at 3.2, desktop starts at 3.3, and each points at the other.
+    CHECK(parse_gl_version("3.0", Profile::Es) == GlVersion{3, 0});
+    CHECK(parse_gl_version("3.2", Profile::Es) == GlVersion{3, 2});
+    CHECK_THROWS_WITH(parse_gl_version("3.0"), Catch::Matchers::Contains("out of range [3.3, 4.6] for the core profile (OpenGL ES versions go with --profile es)"));
+    CHECK_THROWS_WITH(parse_gl_version("4.1", Profile::Es), Catch::Matchers::Contains("out of range [3.0, 3.2] for the es profile (desktop versions go with --profile core)"));
+    CHECK_THROWS_WITH(parse_gl_version("2.0", Profile::Es), Catch::Matchers::Contains("out of range [3.0, 3.2]"));
     CHECK_THROWS_WITH(parse_gl_version("four"), Catch::Matchers::Contains("'four'"));
     CHECK(parse_gl_version("4.3") == GlVersion{4, 3});
+}
+
+TEST_CASE("es: an OpenGL ES 3.0 context draws the known triangle from the core profile's shader files", "[gl][es]") {
+    Image core;
+    {
+        auto context = test::headless_context(Profile::Core);
+        core = render_triangle(*context, Profile::Core, "triangle.vert");
+    }
+    auto context = test::headless_context(Profile::Es, {3, 0});
+    INFO(context->describe());
+    CHECK(context->info().profile == Profile::Es);
+    CHECK(context->effective_version() == GlVersion{3, 0});  // held to 3.0 however much more the driver offers
+    CHECK(context->describe().find("OpenGL ES") != std::string::npos);
+    CHECK(context->has_extension("GL_EXT_color_buffer_float"));  // llvmpipe's ES: what the float targets need
+    const Image es = render_triangle(*context, Profile::Es, "triangle.vert");
+    check_known_triangle(es);
+    CHECK(compare_images(es, core, {}).max_channel_diff == 0);
+}
+
+TEST_CASE("es: a rule GLSL ES keeps and desktop GLSL waives is told at the file and line", "[gl][es]") {
+    {
+        auto context = test::headless_context(Profile::Core);
+        CHECK(test::test_program(*context, Profile::Core, {"quad.vert", "implicit_int.frag"}));
+    }
+    auto context = test::headless_context(Profile::Es, {3, 0});
+    const std::string message =
+        test::gsv_error_message([&] { test::test_program(*context, Profile::Es, {"quad.vert", "implicit_int.frag"}); });
+    INFO(message);
+    CHECK(message.find("implicit_int.frag:5: error") != std::string::npos);
+    CHECK(message.find("float level = 1;") != std::string::npos);
+}
+
+TEST_CASE("es: compute shaders are refused on ES 3.0 naming the version that has them, and build on 3.1", "[gl][es]") {
+    {
+        auto context = test::headless_context(Profile::Es, {3, 0});
+        try {
+            test::test_program(*context, Profile::Es, {"fill.comp"});
+            FAIL("a compute shader must not build on an ES 3.0 run");
+        } catch (const UnsupportedError& e) {
+            const std::string message = e.what();
+            CHECK(message.find("fill.comp needs compute shaders and storage buffers, which OpenGL ES has from 3.1; "
+                               "this run holds to 3.0") != std::string::npos);
+            CHECK(message.find('\n') == std::string::npos);
+        }
+    }
+    auto context = test::headless_context(Profile::Es, {3, 1});
+    CHECK(test::test_program(*context, Profile::Es, {"fill.comp"}));
+}
+
+TEST_CASE("es: a buffer texture and its ES 3.0 stand-in, rows of a 2D texture, read the same texels", "[gl][es]") {
+    // 5000 values: three rows of the stand-in, the last one short, so the row arithmetic and the padding both show.
+    std::vector<float> values(5000);
+    for (std::size_t i = 0; i < values.size(); ++i) values[i] = static_cast<float>(i) * 0.25f - 100.0f;
+    const auto read_all = [&](Profile profile, GlVersion version, BufferTextureStorage storage) {
+        auto context = test::headless_context(profile, version);
+        ShaderProgram program = test::test_program(*context, profile, {"quad.vert", "buffer_fetch.frag"});
+        const BufferTexture texture = BufferTexture::create_r32f(values.data(), values.size(), storage);
+        CHECK(texture.storage() == storage);
+        GpuMesh quad(make_fullscreen_quad(), profile);
+        Framebuffer target(64, 80, ColorFormat::RGBA32F, false);  // 64 x 80 = 5120 fetches: all 5000 and beyond
+        target.bind();
+        program.use();
+        program.bind("uValues", texture);
+        program.set("uRow", 0);
+        quad.draw();
+        check_gl_error("fetching a buffer texture");
+        const ImageF image = target.read_rgba32f();
+        std::vector<float> fetched;
+        for (int y = image.height - 1; y >= 0; --y)  // row 0 of the readback is the top: GL's last row
+            for (int x = 0; x < image.width && fetched.size() < values.size(); ++x) fetched.push_back(image.at(x, y)[0]);
+        return fetched;
+    };
+    CHECK(read_all(Profile::Es, {3, 0}, BufferTextureStorage::Rows) == values);
+    CHECK(read_all(Profile::Es, {3, 2}, BufferTextureStorage::Buffer) == values);
+    CHECK(read_all(Profile::Core, {4, 1}, BufferTextureStorage::Buffer) == values);
+}
+
+TEST_CASE("es: a float target keeps NaN on ES too (GL_EXT_color_buffer_float), and depth is read through colour", "[gl][es]") {
+    auto context = test::headless_context(Profile::Es, {3, 0});
+    REQUIRE(Framebuffer::float_renderable());
+    ShaderProgram program = test::test_program(*context, Profile::Es, {"quad.vert", "nan.frag"});
+    GpuMesh quad(make_fullscreen_quad(), Profile::Es);
+    Framebuffer float_target(8, 8, ColorFormat::RGBA32F);
+    float_target.bind();
+    program.use();
+    program.set("uZero", 0.0f);
+    quad.draw();
+    const FloatStats stats = float_stats(float_target.read_rgba32f());
+    CHECK(stats.nan_count + stats.inf_count == 64);
+    // ES reads back colour only; the framebuffer says where to go instead of failing with a bare GL error.
+    CHECK_THROWS_WITH(float_target.read_depth(), Catch::Matchers::Contains("read it through LabKit::read_depth"));
 }
 
 TEST_CASE("framebuffer: float readback keeps NaN that an 8-bit target would hide", "[gl]") {

@@ -237,7 +237,9 @@ TEST_CASE("lab01: bad command lines give one line naming the culprit and status 
         {{"render", "--set", "scale=1,2"}, "needs three comma-separated numbers"},
         {{"render", "--case", "nope"}, "unknown case 'nope'"},
         {{"render", "--size", "0x10"}, "--size = 0 is out of range"},
-        {{"render", "--profile", "es"}, "unknown profile 'es'"},
+        {{"render", "--profile", "metal"}, "unknown profile 'metal'"},
+        {{"render", "--profile", "es", "--gl", "4.1"}, "GL version '4.1' is out of range [3.0, 3.2] for the es profile"},
+        {{"render", "--gl", "3.0"}, "(OpenGL ES versions go with --profile es)"},
         {{"paint"}, "unknown mode 'paint'"},
     };
     for (const auto& b : bad) {

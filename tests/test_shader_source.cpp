@@ -1,10 +1,12 @@
 #include "catch.hpp"
+#include "gl_fixture.h"
 #include "test_support.h"
 
 #include "common/core/error.h"
 #include "common/shader/reference_compiler.h"
 #include "common/shader/shader_source.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdlib>
@@ -103,12 +105,17 @@ TEST_CASE("shader_source: version line and built-in defines follow profile, vers
         // Before GLSL 1.50 there is no profile word to write.
         {{3, 1}, Profile::Compat, "#version 140\n", "#define GSV_PROFILE_COMPAT 1\n", "#define GSV_GLSL_VERSION 140\n"},
         {{3, 0}, Profile::Core, "#version 130\n", "#define GSV_PROFILE_CORE 1\n", "#define GSV_GLSL_VERSION 130\n"},
+        // GLSL ES follows its API's number and says "es"; its #line numbers the next line N, as GLSL 3.30 does.
+        {{3, 0}, Profile::Es, "#version 300 es\n", "#define GSV_PROFILE_ES 1\n", "#define GSV_GLSL_VERSION 300\n"},
+        {{3, 1}, Profile::Es, "#version 310 es\n", "#define GSV_PROFILE_ES 1\n", "#define GSV_GLSL_VERSION 310\n"},
+        {{3, 2}, Profile::Es, "#version 320 es\n", "#define GSV_PROFILE_ES 1\n", "#define GSV_GLSL_VERSION 320\n"},
     };
     for (const Case& c : cases) {
         INFO("GL " << c.version.str() << " " << gsv::profile_name(c.profile));
         const auto source = gsv::preprocess_shader(main, bare_options(c.version, c.profile));
         // Before GLSL 3.30, "#line N" numbers the line after it N + 1.
-        const std::string header_lines = c.version.glsl() >= 330 ? "#line 100003 0\n" : "#line 100002 0\n";
+        const std::string header_lines =
+            c.profile == Profile::Es || c.version.glsl() >= 330 ? "#line 100003 0\n" : "#line 100002 0\n";
         CHECK(source.text.rfind(c.version_line + header_lines + c.profile_define + "#define GSV_STAGE_FRAGMENT 1\n" + c.glsl_define, 0) ==
               0);
     }
@@ -524,4 +531,36 @@ TEST_CASE("shader_source: one vertex/fragment pair builds against both preludes 
             CHECK(source.dependencies.size() == 2);
         }
     }
+}
+
+// The kit's own ES prelude, as a lab shader gets it: precision for every type GLSL ES leaves without a default in
+// some stage, the shared names as uniforms and attributes, and the defines that name what ES 3.0 and 3.1 lack.
+TEST_CASE("shader_source: on OpenGL ES the kit's prelude brings the precision statements and names what 3.0 lacks", "[unit]") {
+    TempDir dir;
+    const fs::path main = dir.write("main.frag", "out vec4 fColor;\nvoid main() { fColor = vec4(1.0); }\n");
+    const auto with_kit_prelude = [&](GlVersion version, ShaderStage stage) {
+        PreprocessOptions options = bare_options(version, Profile::Es);
+        options.stage = stage;
+        options.with_prelude = true;
+        options.include_dirs = {gsv::test::source_root() / "shaders"};
+        return gsv::preprocess_shader(main, options);
+    };
+    const auto es30 = with_kit_prelude({3, 0}, ShaderStage::Fragment);
+    INFO(es30.text);
+    CHECK(es30.text.rfind("#version 300 es\n", 0) == 0);
+    CHECK(std::find(es30.files.begin(), es30.files.end(), (gsv::test::source_root() / "shaders/gsv/prelude_es.glsl").lexically_normal().string()) !=
+          es30.files.end());
+    for (const char* statement : {"precision highp float;", "precision highp int;", "precision highp sampler3D;",
+                                  "precision highp sampler2DArray;"})
+        CHECK(es30.text.find(statement) != std::string::npos);
+    CHECK(es30.text.find("uniform mat4 uModelViewProjectionMatrix;") != std::string::npos);
+    // The preprocessor keeps #if blocks: which stand-ins apply is the GLSL compiler's to decide, from GSV_GLSL_VERSION.
+    CHECK(es30.text.find("#define GSV_NO_BUFFER_TEXTURES 1") != std::string::npos);
+    CHECK(es30.text.find("#define GSV_NO_PRIMITIVE_ID 1") != std::string::npos);
+    // Attributes only where they can be: the vertex stage.
+    CHECK(es30.text.find("in vec4 aVertex;") < es30.text.find("#endif", es30.text.find("in vec4 aVertex;")));
+    // A shader that writes #version itself is refused in every profile, ES included.
+    const fs::path versioned = dir.write("versioned.frag", "#version 300 es\nvoid main() {}\n");
+    CHECK_THROWS_WITH(gsv::preprocess_shader(versioned, bare_options({3, 0}, Profile::Es)),
+                      Catch::Matchers::Contains("remove '#version'"));
 }

@@ -21,6 +21,11 @@ LabKit::LabKit(Context& context, Params& params, const Assets& assets, Profile p
           return options;
       }()) {}
 
+void LabKit::require(const GlFeature& feature, const std::string& asked_by) const {
+    if (!allows(feature))
+        throw UnsupportedError(asked_by + " " + missing_feature_message(feature, profile_, gl_version()));
+}
+
 const ShaderLibrary::Entry& LabKit::program(const std::string& name, const std::vector<std::string>& files) {
     ProgramSpec spec;
     spec.name = name;
@@ -59,18 +64,22 @@ void Session::open(Backend backend, int extra_width) {
     ContextOptions context_options;
     context_options.backend = backend;
     context_options.profile = options.profile;
-    context_options.version = options.gl.value_or(info.needs < GlVersion{4, 1} ? GlVersion{4, 1} : info.needs);
+    const GlVersion needs = info.needs_in(options.profile);
+    const std::string& needs_why = info.needs_why_in(options.profile);
+    // Desktop: at least macOS's 4.1; ES: the lab's own lowest version, so a lab that says 3.0 is held to 3.0.
+    const GlVersion least = options.profile == Profile::Es ? GlVersion{3, 0} : GlVersion{4, 1};
+    context_options.version = options.gl.value_or(needs < least ? least : needs);
     context_options.width = options.width + extra_width;
     context_options.height = options.height;
     context_options.title = title();
     try {
         context = create_context(context_options);
     } catch (const UnsupportedError& e) {
-        throw UnsupportedError(std::string(e.what()) + "; " + info.id + " needs OpenGL " + info.needs.str() + " (" +
-                               info.needs_why + ")");
+        throw UnsupportedError(std::string(e.what()) + "; " + info.id + " needs " +
+                               api_name(options.profile, needs) + " (" + needs_why + ")");
     }
     std::fprintf(stderr, "%s: %s\n", info.id.c_str(), context->describe().c_str());
-    context->require(info.needs, info.needs_why);
+    context->require(needs, needs_why);
     kit = std::make_unique<LabKit>(*context, params, *assets, options.profile);
     lab->setup(*kit);
     compiled_defines_ = params.defines();
@@ -137,8 +146,9 @@ std::optional<std::string> Session::sync_params() {
 
 static void print_list(Session& s) {
     const std::vector<RenderCase>& cases = s.named_cases();
-    std::printf("%s: %s (%s), needs OpenGL %s\nparameters:\n%s", s.info.id.c_str(), s.info.title.c_str(),
-                s.variant.c_str(), s.info.needs.str().c_str(), s.params.describe().c_str());
+    std::printf("%s: %s (%s), needs OpenGL %s (%s) or OpenGL ES %s (%s)\nparameters:\n%s", s.info.id.c_str(),
+                s.info.title.c_str(), s.variant.c_str(), s.info.needs.str().c_str(), s.info.needs_why.c_str(),
+                s.info.needs_es.str().c_str(), s.info.needs_es_why.c_str(), s.params.describe().c_str());
     std::printf("cases (%s; graded ones name their TODO):\n", s.case_file().lexically_normal().string().c_str());
     for (const auto& c : cases) {
         std::printf("  %-18s %s%s\n", c.name.c_str(), c.todo.empty() ? "(demo) " : ("(" + c.todo + ") ").c_str(), c.description.c_str());

@@ -5,6 +5,7 @@
 // one line: return gsv::run_lab<MyLab>(argc, argv);
 #include "common/app/assets.h"
 #include "common/app/case_file.h"
+#include "common/app/depth_readback.h"
 #include "common/app/inspect_stage.h"
 #include "common/app/params.h"
 #include "common/context/context.h"
@@ -12,6 +13,7 @@
 #include "common/image/legend.h"
 #include "common/io/data_array.h"
 #include "common/scene/transforms.h"
+#include "common/gl/gl_features.h"
 #include "common/shader/shader_library.h"
 
 #include <filesystem>
@@ -31,6 +33,12 @@ struct LabInfo {
     std::string needs_why = "the kit's baseline";
     // Its named cases, relative to the kit's root; empty: the public case file (KitLayout::case_file).
     std::string case_file;
+    // The lowest OpenGL ES version it runs on with --profile es: 3.0 is WebGL 2's feature set.
+    GlVersion needs_es{3, 0};
+    std::string needs_es_why = "WebGL 2's feature set";
+
+    GlVersion needs_in(Profile profile) const { return profile == Profile::Es ? needs_es : needs; }
+    const std::string& needs_why_in(Profile profile) const { return profile == Profile::Es ? needs_es_why : needs_why; }
 };
 
 struct Frame {
@@ -99,6 +107,10 @@ public:
     const Params& params() const { return params_; }
     Profile profile() const { return profile_; }
     GlVersion gl_version() const { return context_.effective_version(); }
+    // Whether this run's profile and version have the feature (common/gl/gl_features.h); require() stops the
+    // run (exit 3) where it does not, naming what asked for it and the version that has it.
+    bool allows(const GlFeature& feature) const { return gsv::allows(feature, profile_, gl_version()); }
+    void require(const GlFeature& feature, const std::string& asked_by) const;
     const Assets& assets() const { return assets_; }
     Context& context() { return context_; }
 
@@ -113,12 +125,16 @@ public:
 
     ShaderLibrary& shaders() { return shaders_; }
 
+    // A target's depth buffer, width * height values in [0, 1], row 0 = top, in every profile (common/app/depth_readback.h).
+    std::vector<float> read_depth(const Framebuffer& target) { return depth_readback_.read(*this, target); }
+
 private:
     Context& context_;
     Params& params_;
     const Assets& assets_;
     Profile profile_;
     ShaderLibrary shaders_;
+    DepthReadback depth_readback_;
 };
 
 // Declares the camera parameters (camera_yaw, camera_pitch, camera_distance) that window mode drives with

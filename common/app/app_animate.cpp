@@ -47,8 +47,7 @@ int run_animate(Session& s) {
     prepare_output_folder(dir, "--out-dir");
     s.open(s.options.backend.value_or(Backend::Egl));
     const int width = s.options.width, height = s.options.height, count = s.options.count;
-    // Float target so NaN and Inf survive to the readback, as in render mode.
-    Framebuffer target(width, height, ColorFormat::RGBA32F);
+    Framebuffer target = frame_target(s, width, height);
     const Frame frame{width, height, 0.0};
 
     std::vector<Image> frames;

@@ -34,7 +34,7 @@ int run_compare(Session& s) {
 
     s.open(s.options.backend.value_or(Backend::Egl));
     if (auto error = s.sync_params()) throw Error(*error);
-    Framebuffer target(width, height, ColorFormat::RGBA32F);
+    Framebuffer target = frame_target(s, width, height);
     target.bind();
     s.render_frame(Frame{width, height, 0.0});
     check_gl_error("rendering the frame");

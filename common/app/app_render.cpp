@@ -66,9 +66,20 @@ Json write_arrays(const std::vector<DataArray>& arrays, const std::string& png) 
     return listed;
 }
 
-Readback read_back(const Framebuffer& float_target) {
-    const ImageF pixels = float_target.read_rgba32f();
+Readback read_back(const Framebuffer& target) {
+    if (target.format() == ColorFormat::RGBA8) return {target.read_rgba8(), {}};
+    const ImageF pixels = target.read_rgba32f();
     return {to_rgba8(pixels), float_stats(pixels)};
+}
+
+Framebuffer frame_target(const Session& s, int width, int height) {
+    if (Framebuffer::float_renderable()) return Framebuffer(width, height, ColorFormat::RGBA32F);
+    static bool said = false;  // once a process, however many frames or sweep points
+    if (!said)
+        std::fprintf(stderr, "%s: this OpenGL ES driver lacks GL_EXT_color_buffer_float: frames render into RGBA8, so NaN "
+                             "and Inf pixels are not detected (exit 4) and read back as black\n", s.info.id.c_str());
+    said = true;
+    return Framebuffer(width, height, ColorFormat::RGBA8);
 }
 
 int run_render(Session& s) {
@@ -83,8 +94,7 @@ int run_render(Session& s) {
     if (auto error = s.sync_params()) throw Error(*error);
 
     const int width = s.options.width, height = s.options.height;
-    // Float target so NaN and Inf survive to the readback instead of silently turning black.
-    Framebuffer target(width, height, ColorFormat::RGBA32F);
+    Framebuffer target = frame_target(s, width, height);
     const Frame frame{width, height, 0.0};
     const int warmup = s.options.warmup >= 0 ? s.options.warmup : 1;
     const int frames = s.options.frames > 0 ? s.options.frames : 3;
@@ -121,6 +131,7 @@ int run_render(Session& s) {
     report["params"] = params_json(s.params);
     report["timing"] = timing_json(timing, warmup);
     report["gl"] = gl_json(*s.context);
+    report["float_target"] = target.format() == ColorFormat::RGBA32F;  // false: NaN and Inf could not be counted
     report["nan_pixels"] = static_cast<double>(stats.nan_count);
     report["inf_pixels"] = static_cast<double>(stats.inf_count);
     report["blank"] = is_blank(image);

@@ -61,7 +61,12 @@ struct Readback {
     FloatStats stats;
     bool non_finite() const { return stats.nan_count > 0 || stats.inf_count > 0; }
 };
-Readback read_back(const Framebuffer& float_target);
+// The image and, from a float target, its NaN and Inf counts (an RGBA8 target has none to give).
+Readback read_back(const Framebuffer& target);
+// A frame's target: float, so NaN and Inf survive to the readback instead of silently turning black. An OpenGL ES
+// driver without GL_EXT_color_buffer_float cannot draw into float: RGBA8 then, and stderr says once that NaN cannot
+// be told from black there.
+Framebuffer frame_target(const Session& session, int width, int height);
 
 // The image with the lab's legend beside it (--legend). Throws gsv::Error when the lab's colours, with these
 // settings, stand for no value.

@@ -262,7 +262,7 @@ int run_window(Session& s) {
     s.open(Backend::Window, default_panel_width());
     if (auto error = s.sync_params()) throw Error(*error);
     GLFWwindow* window = s.context->window();
-    auto panel = make_window_panel(window, s.context->effective_version());
+    auto panel = make_window_panel(window, s.kit->profile(), s.context->effective_version());
     if (panel->width() != default_panel_width()) glfwSetWindowSize(window, s.options.width + panel->width(), s.options.height);
 
     WindowInput input;
@@ -276,7 +276,11 @@ int run_window(Session& s) {
     std::printf("%s", kControls);
     std::fflush(stdout);
 
-    PanelState panel_state{s.params, input.selected, 0, 0, s.title(), s.context->describe(), "", "", {}, "", std::nullopt};
+    // "OpenGL ES 3.0 on llvmpipe": the version the kit holds the lab to, which a room comparing profiles reads first.
+    const std::string& renderer = s.context->info().renderer;
+    const std::string gl_line = api_name(s.context->info().profile, s.context->effective_version()) + " on " +
+                                renderer.substr(0, renderer.find(" ("));
+    PanelState panel_state{s.params, input.selected, 0, 0, s.title(), gl_line, "", "", {}, "", std::nullopt};
     input.panel_state = &panel_state;
     ImageView image_view;
     LiveReference live_reference;

@@ -46,6 +46,7 @@ CliOptions parse_cli(int argc, const char* const* argv) {
         if (i + 1 >= argc) throw Error("option " + option + " needs a value");
         return argv[++i];
     };
+    std::optional<std::string> gl_text;  // read against --profile, which may come after it
     for (; i < argc; ++i) {
         std::string arg = argv[i];
         std::string inline_value;
@@ -62,7 +63,7 @@ CliOptions parse_cli(int argc, const char* const* argv) {
         else if (arg == "--version") o.version = true;
         else if (arg == "--backend") o.backend = parse_backend(next());
         else if (arg == "--profile") o.profile = parse_profile(next());
-        else if (arg == "--gl") o.gl = parse_gl_version(next());
+        else if (arg == "--gl") gl_text = next();
         else if (arg == "--case") o.case_name = next();
         else if (arg == "--set" || arg == "-s") o.assignments.push_back(next());
         else if (arg == "--size") {
@@ -115,6 +116,7 @@ CliOptions parse_cli(int argc, const char* const* argv) {
         }
         else throw Error("unknown option '" + arg + "' (see --help)");
     }
+    if (gl_text) o.gl = parse_gl_version(*gl_text, o.profile);
     parse_scripted_keys(o.presses);  // a bad key is a bad command line, refused before any window opens
     if (o.legend && o.mode != RunMode::Render && o.mode != RunMode::Animate)
         throw Error("--legend is for render and animate (a window's panel shows the legend by itself)");
@@ -156,8 +158,10 @@ std::string cli_usage(const std::string& program) {
            "  --debug-images      render: also the lab's intermediate images into <png stem>-debug/ (lab 06: every\n"
            "                      port of its network); in a window, S writes them beside each screenshot\n"
            "  --backend B         egl (headless default), osmesa (where built), window\n"
-           "  --profile P         core (default) or compat: the seeds' gl_ModelViewProjectionMatrix, gl_Vertex...\n"
-           "  --gl X.Y            the OpenGL version to hold to (default: what the lab needs, at least 4.1)\n"
+           "  --profile P         core (default), compat (the seeds' gl_ModelViewProjectionMatrix, gl_Vertex...)\n"
+           "                      or es (OpenGL ES 3.x, whose 3.0 is WebGL 2's feature set); the same shader files\n"
+           "  --gl X.Y            the version to hold to: core/compat 3.3-4.6 (default: what the lab needs, at\n"
+           "                      least 4.1); es 3.0-3.2 (default: the lowest ES version the lab runs on)\n"
            "  --screenshot-after N, --quit-after N|Ns   window: save a screenshot / quit after N frames or N seconds\n"
            "                      (a screenshot is the picture, FILE, and the whole window, FILE-window.png)\n"
            "  --press KEY@N       window: press KEY before frame N (repeatable; U@5 hides the panel): scripted demos\n"

@@ -3,40 +3,13 @@
 #include "common/core/error.h"
 #include "common/gl/framebuffer.h"
 #include "common/gl/gl.h"
+#include "common/gl/saved_draw_state.h"
 #include "common/gl/texture.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace gsv {
-namespace {
-
-// What the probe changes, put back afterwards: the lab draws its next frame into the target it had bound.
-class SavedDrawState {
-public:
-    SavedDrawState() {
-        glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer_);
-        glGetIntegerv(GL_VIEWPORT, viewport_);
-        depth_ = glIsEnabled(GL_DEPTH_TEST);
-        blend_ = glIsEnabled(GL_BLEND);
-    }
-    ~SavedDrawState() {
-        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(framebuffer_));
-        glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
-        depth_ ? glEnable(GL_DEPTH_TEST) : glDisable(GL_DEPTH_TEST);
-        blend_ ? glEnable(GL_BLEND) : glDisable(GL_BLEND);
-    }
-    SavedDrawState(const SavedDrawState&) = delete;
-    SavedDrawState& operator=(const SavedDrawState&) = delete;
-
-private:
-    GLint framebuffer_ = 0;
-    GLint viewport_[4] = {0, 0, 0, 0};
-    GLboolean depth_ = GL_FALSE, blend_ = GL_FALSE;
-};
-
-}  // namespace
-
 std::vector<LegendColor> LegendProbe::colors(LabKit& kit, const std::vector<double>& values,
                                              const std::function<void(const ShaderProgram&)>& set_uniforms) {
     if (values.empty()) return {};

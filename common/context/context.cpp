@@ -4,7 +4,9 @@
 #include "common/core/error.h"
 #include "common/gl/gl.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <regex>
 
 namespace gsv {
@@ -51,8 +53,11 @@ namespace {
 // "glfw" is an alias of "window": read, never printed.
 constexpr EnumName<Backend> kBackendNames[] = {
     {Backend::Window, "window"}, {Backend::Egl, "egl"}, {Backend::OSMesa, "osmesa"}, {Backend::Window, "glfw"}};
-constexpr EnumName<Profile> kProfileNames[] = {
-    {Profile::Core, "core"}, {Profile::Compat, "compat"}, {Profile::Compat, "compatibility"}};
+constexpr EnumName<Profile> kProfileNames[] = {{Profile::Core, "core"},
+                                               {Profile::Compat, "compat"},
+                                               {Profile::Es, "es"},
+                                               {Profile::Compat, "compatibility"},
+                                               {Profile::Es, "gles"}};
 }  // namespace
 
 const char* backend_name(Backend backend) { return name_of(kBackendNames, backend); }
@@ -61,14 +66,22 @@ Backend parse_backend(const std::string& text) { return parse_enum(kBackendNames
 
 Profile parse_profile(const std::string& text) { return parse_enum(kProfileNames, "profile", text); }
 
-GlVersion parse_gl_version(const std::string& text) {
+GlVersion parse_gl_version(const std::string& text, Profile profile) {
     std::smatch m;
     static const std::regex pattern(R"(^([0-9])\.([0-9])$)");
     if (!std::regex_match(text, m, pattern))
         throw Error("bad GL version '" + text + "' (expected MAJOR.MINOR, e.g. 4.1)");
     GlVersion v{std::stoi(m[1]), std::stoi(m[2])};
-    if (v < GlVersion{3, 3} || GlVersion{4, 6} < v)
-        throw Error("GL version '" + text + "' is out of range [3.3, 4.6]");
+    const bool es = profile == Profile::Es;
+    const GlVersion lowest = es ? GlVersion{3, 0} : GlVersion{3, 3};
+    const GlVersion highest = es ? GlVersion{3, 2} : GlVersion{4, 6};
+    if (v < lowest || highest < v) {
+        std::string hint;
+        if (es && !(v < GlVersion{3, 3})) hint = " (desktop versions go with --profile core)";
+        if (!es && v < lowest && !(v < GlVersion{3, 0})) hint = " (OpenGL ES versions go with --profile es)";
+        throw Error("GL version '" + text + "' is out of range [" + lowest.str() + ", " + highest.str() + "] for the " +
+                    profile_name(profile) + " profile" + hint);
+    }
     return v;
 }
 
@@ -79,7 +92,8 @@ GlVersion Context::effective_version() const {
 void Context::require(GlVersion needed, const std::string& what_for) const {
     const GlVersion have = effective_version();
     if (have < needed) {
-        std::string why = "needs OpenGL " + needed.str() + " (" + what_for + ") but this run has " + have.str();
+        const Profile p = info_.profile;
+        std::string why = "needs " + api_name(p, needed) + " (" + what_for + ") but this run has " + have.str();
         if (info_.obtained < info_.requested || info_.obtained < needed)
             why += " (the driver offers " + info_.obtained.str() + ": " + info_.renderer + ")";
         else
@@ -89,8 +103,15 @@ void Context::require(GlVersion needed, const std::string& what_for) const {
 }
 
 std::string Context::describe() const {
-    return info_.renderer + ", OpenGL " + info_.version_string + ", " + profile_name(info_.profile) +
-           " profile, " + backend_name(info_.backend) + " backend";
+    // GL_VERSION of an ES context already begins "OpenGL ES".
+    const std::string version = info_.version_string.rfind("OpenGL", 0) == 0 ? info_.version_string
+                                                                            : "OpenGL " + info_.version_string;
+    return info_.renderer + ", " + version + ", " + profile_name(info_.profile) + " profile, " +
+           backend_name(info_.backend) + " backend";
+}
+
+bool Context::has_extension(const std::string& name) const {
+    return std::find(info_.extensions.begin(), info_.extensions.end(), name) != info_.extensions.end();
 }
 
 static std::string gl_string(GLenum name) {
@@ -99,9 +120,13 @@ static std::string gl_string(GLenum name) {
 }
 
 void Context::load_gl(void* (*get_proc)(const char*), const ContextOptions& options) {
-    const int loaded = gladLoadGL(reinterpret_cast<GLADloadfunc>(get_proc));
-    if (loaded == 0) throw Error(std::string("could not load OpenGL functions through the ") +
-                                 backend_name(options.backend) + " backend");
+    // One set of entry points, loaded for the API the context speaks: an ES context has no glPolygonMode,
+    // and glad's desktop loader would read "OpenGL ES 3.2" as desktop 3.2 and skip compute and storage.
+    const bool es = options.profile == Profile::Es;
+    const int loaded = es ? gladLoadGLES2(reinterpret_cast<GLADloadfunc>(get_proc))
+                          : gladLoadGL(reinterpret_cast<GLADloadfunc>(get_proc));
+    if (loaded == 0) throw Error(std::string("could not load ") + (es ? "OpenGL ES" : "OpenGL") +
+                                 " functions through the " + backend_name(options.backend) + " backend");
     info_.backend = options.backend;
     info_.requested = options.version;
     info_.obtained = GlVersion{GLAD_VERSION_MAJOR(loaded), GLAD_VERSION_MINOR(loaded)};
@@ -109,14 +134,40 @@ void Context::load_gl(void* (*get_proc)(const char*), const ContextOptions& opti
     info_.vendor = gl_string(GL_VENDOR);
     info_.version_string = gl_string(GL_VERSION);
     info_.glsl_version_string = gl_string(GL_SHADING_LANGUAGE_VERSION);
-    GLint mask = 0;
-    glGetIntegerv(GL_CONTEXT_PROFILE_MASK, &mask);
-    info_.profile = (mask & GL_CONTEXT_CORE_PROFILE_BIT) ? Profile::Core : Profile::Compat;
+    GLint count = 0;
+    glGetIntegerv(GL_NUM_EXTENSIONS, &count);
+    for (GLint i = 0; i < count; ++i)
+        if (const auto* name = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(i))))
+            info_.extensions.emplace_back(name);
+    if (info_.version_string.rfind("OpenGL ES", 0) == 0) {
+        info_.profile = Profile::Es;
+    } else {
+        GLint mask = 0;
+        glGetIntegerv(GL_CONTEXT_PROFILE_MASK, &mask);
+        info_.profile = (mask & GL_CONTEXT_CORE_PROFILE_BIT) ? Profile::Core : Profile::Compat;
+    }
     if (info_.profile != options.profile)
         throw UnsupportedError(std::string("asked for a ") + profile_name(options.profile) +
                                " profile context but the driver gave " + profile_name(info_.profile) +
-                               " (" + info_.version_string + "); macOS offers only core: use --profile core");
+                               " (" + info_.version_string + ")" +
+                               (options.profile == Profile::Es ? "" : "; macOS offers only core: use --profile core"));
     glGetError();  // some drivers leave an error from context creation
+}
+
+// Asked of the current context, not of glad's flags: a process that made an ES context and then a desktop one
+// (the tests do) still has the ES flags set from the first.
+bool gl_is_es() {
+    const auto* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+    return version && std::strncmp(version, "OpenGL ES", 9) == 0;
+}
+
+bool gl_has_extension(const char* name) {
+    GLint count = 0;
+    glGetIntegerv(GL_NUM_EXTENSIONS, &count);
+    for (GLint i = 0; i < count; ++i)
+        if (const auto* e = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(i))); e && std::strcmp(e, name) == 0)
+            return true;
+    return false;
 }
 
 void check_gl_error(const char* what) {

@@ -29,6 +29,7 @@ struct ContextInfo {
     GlVersion requested;
     GlVersion obtained;  // what the driver reports; drivers may give more than was asked for
     std::string renderer, vendor, version_string, glsl_version_string;
+    std::vector<std::string> extensions;  // GL_EXTENSIONS, one name each
 };
 
 class Context {
@@ -43,7 +44,8 @@ public:
     GlVersion effective_version() const;
     // Stops the run with one line when the context cannot do what a lab needs.
     void require(GlVersion needed, const std::string& what_for) const;
-    std::string describe() const;  // "llvmpipe (LLVM 15.0.6, 256 bits), OpenGL 4.5 (Core Profile) Mesa 22.3.6, core, EGL"
+    std::string describe() const;
+    bool has_extension(const std::string& name) const;  // "GL_EXT_color_buffer_float"  // "llvmpipe (LLVM 15.0.6, 256 bits), OpenGL 4.5 (Core Profile) Mesa 22.3.6, core, EGL"
 
     virtual GLFWwindow* window() { return nullptr; }
     virtual void swap_buffers() {}
@@ -61,7 +63,8 @@ std::unique_ptr<Context> create_context(const ContextOptions& options);
 std::vector<Backend> compiled_backends();
 const char* backend_name(Backend backend);
 Backend parse_backend(const std::string& text);   // "window" | "egl" | "osmesa"; throws naming the value
-Profile parse_profile(const std::string& text);   // "core" | "compat"
-GlVersion parse_gl_version(const std::string& text);  // "4.1", "4.5"; 3.3..4.6
+Profile parse_profile(const std::string& text);   // "core" | "compat" | "es"
+// "4.1", "4.5": 3.3..4.6 for the desktop profiles; "3.0".."3.2" for ES. Throws naming the value and the range.
+GlVersion parse_gl_version(const std::string& text, Profile profile = Profile::Core);
 
 }  // namespace gsv

@@ -13,7 +13,7 @@
 namespace gsv {
 namespace {
 
-bool has_extension(const char* list, const char* name) {
+bool in_extension_list(const char* list, const char* name) {
     if (!list) return false;
     const std::size_t n = std::strlen(name);
     for (const char* p = list; (p = std::strstr(p, name)) != nullptr; p += n)
@@ -39,11 +39,11 @@ EGLDisplay open_headless_display() {
         reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
     if (!get_platform_display) throw UnsupportedError("EGL has no eglGetPlatformDisplayEXT: cannot render headless");
     // eglGetDisplay(EGL_DEFAULT_DISPLAY) would try X11 and fail without a display, so ask for a platform.
-    if (has_extension(client_extensions, "EGL_MESA_platform_surfaceless")) {
+    if (in_extension_list(client_extensions, "EGL_MESA_platform_surfaceless")) {
         EGLDisplay display = get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
         if (display != EGL_NO_DISPLAY && eglInitialize(display, nullptr, nullptr)) return display;
     }
-    if (has_extension(client_extensions, "EGL_EXT_platform_device")) {
+    if (in_extension_list(client_extensions, "EGL_EXT_platform_device")) {
         auto query_devices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
         EGLDeviceEXT devices[8];
         EGLint count = 0;
@@ -60,35 +60,37 @@ public:
     explicit EglContext(const ContextOptions& options) {
         display_ = open_headless_display();
         const char* extensions = eglQueryString(display_, EGL_EXTENSIONS);
-        if (!has_extension(extensions, "EGL_KHR_surfaceless_context")) {
+        if (!in_extension_list(extensions, "EGL_KHR_surfaceless_context")) {
             eglTerminate(display_);
             throw UnsupportedError("EGL display lacks EGL_KHR_surfaceless_context");
         }
-        if (!eglBindAPI(EGL_OPENGL_API)) {
+        const bool es = options.profile == Profile::Es;
+        if (!eglBindAPI(es ? EGL_OPENGL_ES_API : EGL_OPENGL_API)) {
             eglTerminate(display_);
-            throw UnsupportedError("EGL cannot bind the desktop OpenGL API");
+            throw UnsupportedError(std::string("EGL cannot bind the ") + (es ? "OpenGL ES" : "desktop OpenGL") + " API");
         }
         EGLConfig config = EGL_NO_CONFIG_KHR;
-        if (!has_extension(extensions, "EGL_KHR_no_config_context")) {
-            const EGLint config_attributes[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+        if (!in_extension_list(extensions, "EGL_KHR_no_config_context")) {
+            const EGLint config_attributes[] = {EGL_RENDERABLE_TYPE, es ? EGL_OPENGL_ES3_BIT : EGL_OPENGL_BIT, EGL_NONE};
             EGLint count = 0;
             if (!eglChooseConfig(display_, config_attributes, &config, 1, &count) || count == 0) {
                 eglTerminate(display_);
-                throw UnsupportedError("EGL has no config for desktop OpenGL");
+                throw UnsupportedError(std::string("EGL has no config for ") + (es ? "OpenGL ES 3" : "desktop OpenGL"));
             }
         }
+        // ES has no profiles: its attribute list stops after the version.
+        const EGLint profile_bit = options.profile == Profile::Core ? EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT
+                                                                    : EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT;
         const EGLint context_attributes[] = {
             EGL_CONTEXT_MAJOR_VERSION, options.version.major,
             EGL_CONTEXT_MINOR_VERSION, options.version.minor,
-            EGL_CONTEXT_OPENGL_PROFILE_MASK,
-            options.profile == Profile::Core ? EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT
-                                             : EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT,
+            es ? EGL_NONE : EGL_CONTEXT_OPENGL_PROFILE_MASK, profile_bit,
             EGL_NONE};
         context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, context_attributes);
         if (context_ == EGL_NO_CONTEXT) {
             const EGLint error = eglGetError();
             eglTerminate(display_);
-            throw UnsupportedError(std::string("EGL cannot create an OpenGL ") + options.version.str() + " " +
+            throw UnsupportedError("EGL cannot create an " + api_name(options.profile, options.version) + " " +
                                    profile_name(options.profile) + " context (" + egl_error_name(error) + ")");
         }
         if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_)) {

@@ -23,7 +23,9 @@ public:
                                    " (no display? headless runs use --backend egl)");
         glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, options.version.major);
         glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, options.version.minor);
-        if (options.profile == Profile::Core) {
+        if (options.profile == Profile::Es) {
+            glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_ES_API);
+        } else if (options.profile == Profile::Core) {
             glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
             glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);  // macOS refuses core contexts without it
         } else {
@@ -33,11 +35,19 @@ public:
         glfwWindowHint(GLFW_SAMPLES, 0);
         glfwWindowHint(GLFW_DEPTH_BITS, 24);
         window_ = glfwCreateWindow(options.width, options.height, options.title.c_str(), nullptr, nullptr);
+        if (!window_ && options.profile == Profile::Es) {
+            // GLX and WGL make ES contexts only through an extension; EGL is the other way in on Linux.
+            glfwWindowHint(GLFW_CONTEXT_CREATION_API, GLFW_EGL_CONTEXT_API);
+            window_ = glfwCreateWindow(options.width, options.height, options.title.c_str(), nullptr, nullptr);
+        }
         if (!window_) {
             const std::string why = last_glfw_error();
             glfwTerminate();
-            throw UnsupportedError(std::string("cannot create a window with an OpenGL ") + options.version.str() + " " +
-                                   profile_name(options.profile) + " context: " + why);
+            throw UnsupportedError("cannot create a window with an " + api_name(options.profile, options.version) +
+                                   " " + profile_name(options.profile) + " context: " + why +
+                                   (options.profile == Profile::Es ? " (macOS has no OpenGL ES; render headless "
+                                                                     "with --backend egl on Linux)"
+                                                                   : ""));
         }
         glfwMakeContextCurrent(window_);
         glfwSwapInterval(options.vsync ? 1 : 0);

@@ -12,6 +12,8 @@ namespace {
 class OSMesaContextHolder final : public Context {
 public:
     explicit OSMesaContextHolder(const ContextOptions& options) {
+        if (options.profile == Profile::Es)
+            throw UnsupportedError("OSMesa makes desktop OpenGL contexts only: OpenGL ES runs headless on --backend egl");
         const int attributes[] = {
             OSMESA_FORMAT, OSMESA_RGBA,
             OSMESA_DEPTH_BITS, 24,

@@ -7,8 +7,8 @@
 namespace gsv {
 
 Buffer Buffer::create(GLenum target, std::size_t bytes, const void* data, GLenum usage) {
-    if (target == GL_SHADER_STORAGE_BUFFER && !GLAD_GL_VERSION_4_3)
-        throw UnsupportedError("shader storage buffers need OpenGL 4.3");
+    if (target == GL_SHADER_STORAGE_BUFFER && !(gl_is_es() ? GLAD_GL_ES_VERSION_3_1 : GLAD_GL_VERSION_4_3))
+        throw UnsupportedError("shader storage buffers need OpenGL 4.3 or OpenGL ES 3.1");
     Buffer buffer;
     GLuint name = 0;
     glGenBuffers(1, &name);

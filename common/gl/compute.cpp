@@ -8,7 +8,7 @@
 namespace gsv {
 
 ComputeLimits compute_limits() {
-    if (!GLAD_GL_VERSION_4_3) throw UnsupportedError("compute shaders need OpenGL 4.3");
+    if (!(gl_is_es() ? GLAD_GL_ES_VERSION_3_1 : GLAD_GL_VERSION_4_3)) throw UnsupportedError("compute shaders need OpenGL 4.3 or OpenGL ES 3.1");
     ComputeLimits l;
     for (GLuint axis = 0; axis < 3; ++axis) {
         GLint value = 0;

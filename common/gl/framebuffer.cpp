@@ -10,6 +10,9 @@ namespace gsv {
 Framebuffer::Framebuffer(int width, int height, ColorFormat format, bool with_depth)
     : width_(width), height_(height), format_(format) {
     Sampling nearest{GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE};
+    if (format == ColorFormat::RGBA32F && !float_renderable())
+        throw UnsupportedError("a float (RGBA32F) render target on OpenGL ES needs GL_EXT_color_buffer_float, which this "
+                               "driver lacks");
     color_ = Texture::create_2d(width, height, format == ColorFormat::RGBA8 ? TexelFormat::RGBA8 : TexelFormat::RGBA32F,
                                 nullptr, nearest);
     GLuint fbo = 0;
@@ -19,12 +22,9 @@ Framebuffer::Framebuffer(int width, int height, ColorFormat format, bool with_de
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_.id(), 0);
     with_depth_ = with_depth;
     if (with_depth) {
-        GLuint rbo = 0;
-        glGenRenderbuffers(1, &rbo);
-        depth_ = RenderbufferName(rbo);
-        glBindRenderbuffer(GL_RENDERBUFFER, rbo);
-        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, rbo);
+        depth_ = Texture::create_2d(width, height, TexelFormat::Depth24, nullptr, nearest);
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth_.id(), 0);
     }
     const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE)
@@ -62,6 +62,8 @@ ImageF Framebuffer::read_rgba32f() const {
 
 std::vector<float> Framebuffer::read_depth() const {
     if (!with_depth_) throw Error("this framebuffer has no depth buffer to read");
+    if (gl_is_es())
+        throw UnsupportedError("OpenGL ES reads back colour only, not a depth buffer: read it through LabKit::read_depth");
     glBindFramebuffer(GL_READ_FRAMEBUFFER, name_.get());
     std::vector<float> depth(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_));
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
@@ -72,6 +74,8 @@ std::vector<float> Framebuffer::read_depth() const {
         std::swap_ranges(depth.begin() + y * row, depth.begin() + (y + 1) * row, depth.begin() + (height_ - 1 - y) * row);
     return depth;
 }
+
+bool Framebuffer::float_renderable() { return !gl_is_es() || gl_has_extension("GL_EXT_color_buffer_float"); }
 
 Image read_current_framebuffer(int width, int height) {
     Image image(width, height);

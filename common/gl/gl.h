@@ -7,5 +7,8 @@
 namespace gsv {
 // Throws gsv::Error "GL error GL_INVALID_VALUE after <what>" if the GL error flag is set; clears it.
 void check_gl_error(const char* what);
+// About the current context: whether it is OpenGL ES, and whether it has an extension ("GL_EXT_color_buffer_float").
+bool gl_is_es();
+bool gl_has_extension(const char* name);
 const char* gl_error_name(unsigned error);
 }  // namespace gsv

@@ -35,7 +35,7 @@ GpuMesh::GpuMesh(const MeshData& mesh, Profile profile) {
     indices_ = Buffer::create(GL_ELEMENT_ARRAY_BUFFER, mesh.indices.size() * sizeof(std::uint32_t), mesh.indices.data());
     vertices_.bind();
     const GLsizei stride = sizeof(Vertex);
-    if (profile == Profile::Core) {
+    if (!has_fixed_function(profile)) {
         glEnableVertexAttribArray(kVertexSlot);
         glVertexAttribPointer(kVertexSlot, 3, GL_FLOAT, GL_FALSE, stride, offset_of(offsetof(Vertex, position)));
         glEnableVertexAttribArray(kNormalSlot);

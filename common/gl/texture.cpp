@@ -22,6 +22,7 @@ GlFormat gl_format(TexelFormat format) {
     case TexelFormat::RG32F: return {GL_RG32F, GL_RG, GL_FLOAT};
     case TexelFormat::RGB32F: return {GL_RGB32F, GL_RGB, GL_FLOAT};
     case TexelFormat::RGBA32F: return {GL_RGBA32F, GL_RGBA, GL_FLOAT};
+    case TexelFormat::Depth24: return {GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT};
     }
     return {GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE};
 }
@@ -35,7 +36,7 @@ bool uses_mipmaps(GLenum min_filter) {
 
 int channel_count(TexelFormat format) {
     switch (format) {
-    case TexelFormat::R8: case TexelFormat::R32F: return 1;
+    case TexelFormat::R8: case TexelFormat::R32F: case TexelFormat::Depth24: return 1;
     case TexelFormat::RG8: case TexelFormat::RG32F: return 2;
     case TexelFormat::RGB32F: return 3;
     case TexelFormat::RGBA8: case TexelFormat::RGBA32F: return 4;
@@ -110,6 +111,12 @@ void Texture::bind(int unit) const {
 }
 
 void Texture::set_sampling(const Sampling& sampling) {
+    const bool linear = sampling.mag_filter == GL_LINEAR || sampling.min_filter != GL_NEAREST;
+    // ES filters 32-bit float textures only with this extension; without it a linear lookup reads an incomplete
+    // texture (black), which must not pass for a picture.
+    if (is_float(format_) && linear && gl_is_es() && !gl_has_extension("GL_OES_texture_float_linear"))
+        throw UnsupportedError("linear filtering of a float texture on OpenGL ES needs GL_OES_texture_float_linear, "
+                               "which this driver lacks");
     glBindTexture(target_, name_.get());
     glTexParameteri(target_, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(sampling.min_filter));
     glTexParameteri(target_, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(sampling.mag_filter));

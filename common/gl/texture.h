@@ -5,7 +5,7 @@
 
 namespace gsv {
 
-enum class TexelFormat { R8, RG8, RGBA8, R32F, RG32F, RGB32F, RGBA32F };
+enum class TexelFormat { R8, RG8, RGBA8, R32F, RG32F, RGB32F, RGBA32F, Depth24 };  // Depth24: a depth attachment
 
 struct Sampling {
     GLenum min_filter = GL_LINEAR;   // GL_LINEAR_MIPMAP_LINEAR etc. builds the mipmap chain

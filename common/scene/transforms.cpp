@@ -28,7 +28,7 @@ glm::mat4 OrbitCamera::projection(float aspect) const {
 
 void apply_transforms(const ShaderProgram& program, const Transforms& t, Profile profile) {
     const glm::mat4 model_view = t.view * t.model;
-    if (profile == Profile::Core) {
+    if (!has_fixed_function(profile)) {
         program.set("uModelViewProjectionMatrix", t.projection * model_view);
         program.set("uModelViewMatrix", model_view);
         program.set("uProjectionMatrix", t.projection);

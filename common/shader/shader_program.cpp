@@ -1,6 +1,7 @@
 #include "common/shader/shader_program.h"
 
 #include "common/core/error.h"
+#include "common/gl/gl_features.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -45,9 +46,9 @@ ShaderProgram ShaderProgram::build(const ProgramSpec& spec, const PreprocessOpti
         options.stage = stage_from_extension(file);
         options.defines.insert(options.defines.end(), spec.defines.begin(), spec.defines.end());
         options.generated.insert(options.generated.end(), spec.generated.begin(), spec.generated.end());
-        if (options.stage == ShaderStage::Compute && options.version < GlVersion{4, 3})
-            throw UnsupportedError(file.string() + ": compute shaders need OpenGL 4.3 (this run has " +
-                                   options.version.str() + ")");
+        if (options.stage == ShaderStage::Compute && !allows(gl_feature::kCompute, options.profile, options.version))
+            throw UnsupportedError(file.string() + " " +
+                                   missing_feature_message(gl_feature::kCompute, options.profile, options.version));
         const ShaderSource source = preprocess_shader(file, options);
         program.dependencies_.insert(program.dependencies_.end(), source.dependencies.begin(), source.dependencies.end());
         program.compiled_sources_.push_back(source.text);
@@ -66,7 +67,7 @@ ShaderProgram ShaderProgram::build(const ProgramSpec& spec, const PreprocessOpti
     }
     program.name_ = ProgramName(glCreateProgram());
     for (const auto& shader : shaders) glAttachShader(program.name_.get(), shader.get());
-    if (base_options.profile == Profile::Core) {
+    if (!has_fixed_function(base_options.profile)) {
         glBindAttribLocation(program.name_.get(), kVertexSlot, "aVertex");
         glBindAttribLocation(program.name_.get(), kNormalSlot, "aNormal");
         glBindAttribLocation(program.name_.get(), kTexCoord0Slot, "aTexCoord0");

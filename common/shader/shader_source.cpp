@@ -164,21 +164,32 @@ public:
     }
 
 private:
-    // GLSL 3.30 changed '#line N' to number the line after it N; earlier versions number it N + 1.
+    // GLSL 3.30 (and GLSL ES 3.00) changed '#line N' to number the line after it N; earlier versions number it N + 1.
     std::string line_directive(int next_line, int source_string) const {
-        const int number = options_.version.glsl() >= 330 ? next_line : next_line - 1;
+        const bool next_is_n = options_.profile == Profile::Es || options_.version.glsl() >= 330;
+        const int number = next_is_n ? next_line : next_line - 1;
         return "#line " + std::to_string(number) + " " + std::to_string(source_string) + "\n";
     }
 
+    static const char* profile_macro(Profile profile) {
+        switch (profile) {
+        case Profile::Core: return "GSV_PROFILE_CORE";
+        case Profile::Compat: return "GSV_PROFILE_COMPAT";
+        case Profile::Es: return "GSV_PROFILE_ES";
+        }
+        return "GSV_PROFILE_UNKNOWN";
+    }
+
     void write_header() {
-        const int glsl = options_.version.glsl();
+        const int glsl = options_.version.glsl(options_.profile);
         std::string header = "#version " + std::to_string(glsl);
         // Profiles arrived with GLSL 1.50; older compilers reject the word.
-        if (glsl >= 150) header += options_.profile == Profile::Core ? " core" : " compatibility";
+        if (options_.profile == Profile::Es) header += " es";
+        else if (glsl >= 150) header += options_.profile == Profile::Core ? " core" : " compatibility";
         header += "\n";
         // Line 3 of the header on is numbered kGeneratedHeaderLineOffset + 3 on: see the constant.
         header += line_directive(kGeneratedHeaderLineOffset + 3, 0);
-        header += options_.profile == Profile::Core ? "#define GSV_PROFILE_CORE 1\n" : "#define GSV_PROFILE_COMPAT 1\n";
+        header += std::string("#define ") + profile_macro(options_.profile) + " 1\n";
         header += "#define " + stage_macro(options_.stage) + " 1\n";
         header += "#define GSV_GLSL_VERSION " + std::to_string(glsl) + "\n";
         for (const auto& define : options_.defines) {
@@ -245,8 +256,9 @@ private:
     }
 
     void include_prelude() {
-        const fs::path name =
-            options_.profile == Profile::Core ? "gsv/prelude_core.glsl" : "gsv/prelude_compat.glsl";
+        const fs::path name = options_.profile == Profile::Core     ? "gsv/prelude_core.glsl"
+                              : options_.profile == Profile::Compat ? "gsv/prelude_compat.glsl"
+                                                                    : "gsv/prelude_es.glsl";
         for (const auto& dir : options_.include_dirs) {
             if (const int index = load(dir / name); index >= 0) {
                 expand(index);

@@ -22,7 +22,7 @@ struct PanelState {
     double frame_ms = 0;     // wall time between frames
     double render_ms = 0;    // lab render time, bracketed by glFinish
     std::string heading;     // "lab01 (solution)"
-    std::string gl;          // renderer and version
+    std::string gl;          // version and renderer: "OpenGL ES 3.0 on llvmpipe"
     std::string status;      // last shader error or reload message
     std::string view;        // what the picture shows, where not the lab's own render ("reference", "difference x4")
     std::vector<InspectStage> stages;  // the lab's pipeline, for visual debugging (none: no inspector)
@@ -46,7 +46,7 @@ public:
     virtual bool wants_keyboard() const { return false; }
 };
 
-std::unique_ptr<WindowPanel> make_window_panel(GLFWwindow* window, GlVersion version);
+std::unique_ptr<WindowPanel> make_window_panel(GLFWwindow* window, Profile profile, GlVersion version);
 // The panel's column at a content scale of 1, before a window exists to measure: the window opens this much wider.
 int default_panel_width();
 

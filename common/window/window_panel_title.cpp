@@ -34,7 +34,7 @@ private:
 #if !GSV_HAVE_IMGUI
 int default_panel_width() { return 0; }
 
-std::unique_ptr<WindowPanel> make_window_panel(GLFWwindow* window, GlVersion) {
+std::unique_ptr<WindowPanel> make_window_panel(GLFWwindow* window, Profile, GlVersion) {
     return std::make_unique<TitlePanel>(window);
 }
 #endif

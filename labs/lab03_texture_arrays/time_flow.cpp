@@ -85,7 +85,8 @@ std::vector<double> slice_times(int slices) {
 
 gsv::FlowSequence make_time_flow(gsv::LabKit& kit) { return flow_at_times(kit, slice_times(kit.params().get_int("slices"))); }
 
-void check_storage_limits(const gsv::Params& p) {
+void check_storage_limits(const gsv::LabKit& kit) {
+    const gsv::Params& p = kit.params();
     const int slices = p.get_int("slices");
     const int grid = p.get_int("grid");
     const double bytes = 8.0 * slices * grid * std::max(1, grid / 2);
@@ -99,6 +100,10 @@ void check_storage_limits(const gsv::Params& p) {
     if (storage == "volume" && slices > gl_limit(GL_MAX_3D_TEXTURE_SIZE))
         throw gsv::UnsupportedError("slices=" + std::to_string(slices) + " exceeds GL_MAX_3D_TEXTURE_SIZE = " +
                                     std::to_string(gl_limit(GL_MAX_3D_TEXTURE_SIZE)) + " on this GPU");
+    // OpenGL ES 3.0 and 3.1 (and so WebGL 2) index an array of samplers only with a constant: the lesson of
+    // texture arrays, met head on.
+    if (storage == "separate")
+        kit.require(gsv::gl_feature::kSamplerArrayIndexing, "storage=separate (slice k is read from uFlowSlices[k])");
     // Unit 0 holds the noise.
     const int free_units = gl_limit(GL_MAX_TEXTURE_IMAGE_UNITS) - 1;
     if (storage == "separate" && slices > free_units)

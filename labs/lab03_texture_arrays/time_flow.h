@@ -18,8 +18,9 @@ gsv::FlowSequence make_time_flow(gsv::LabKit& kit);
 
 // One line and gsv::UnsupportedError when this context cannot hold the slices in the chosen storage:
 // more layers than GL_MAX_ARRAY_TEXTURE_LAYERS, a depth over GL_MAX_3D_TEXTURE_SIZE, more separate
-// textures than free texture units; gsv::Error over 1 GiB of slices.
-void check_storage_limits(const gsv::Params& params);
+// textures than free texture units, separate textures where a sampler array cannot be indexed by a uniform
+// (OpenGL ES before 3.2); gsv::Error over 1 GiB of slices.
+void check_storage_limits(const gsv::LabKit& kit);
 
 // The sweep's columns: the largest difference between the flow the GPU sampled at the playhead and the
 // CPU's (double precision) mix of the same slices ("sample err": exactly 0 for an array; a 3D

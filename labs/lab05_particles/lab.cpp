@@ -31,7 +31,11 @@ constexpr long kMaxStepsPerFrame = 32;
 class ParticleLab final : public gsv::Lab {
 public:
     gsv::LabInfo info() const override {
-        return {"lab05", "SSBOs and compute-shader particle advection", {4, 3}, "compute shaders and storage buffers"};
+        gsv::LabInfo info{"lab05", "SSBOs and compute-shader particle advection", {4, 3},
+                          "compute shaders and storage buffers"};
+        info.needs_es = {3, 1};
+        info.needs_es_why = "compute shaders and storage buffers";
+        return info;
     }
 
     void declare(gsv::Params& p) override {
@@ -91,7 +95,7 @@ public:
         glClearColor(0.04f, 0.04f, 0.07f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         glEnable(GL_DEPTH_TEST);
-        glPointSize(p.get_float("point_size"));
+        if (kit.profile() != gsv::Profile::Es) glEnable(GL_PROGRAM_POINT_SIZE);  // an unknown enum on ES: always on there
         // The vertex stage reads what the last step wrote, through the vertex-array path.
         glMemoryBarrier(GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
         const gsv::ShaderProgram& program = kit.use(*draw_);

@@ -21,7 +21,7 @@ void GeometryRenderer::process() {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-    glClearDepth(1.0);
+    glClearDepthf(1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     program.use();
     set_transforms(program, geometry->box.model_from_texture_matrix());
@@ -50,7 +50,7 @@ void Canvas::process() {
     fit(image_, v);
     image_->bind();
     glDisable(GL_DEPTH_TEST);
-    glClearDepth(1.0);
+    glClearDepthf(1.0f);
     glClear(GL_DEPTH_BUFFER_BIT);  // a picture, not a scene: no depth
     program.use();
     program.bind("uImage", volume->color());

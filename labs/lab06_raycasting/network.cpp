@@ -40,7 +40,7 @@ gsv::Image scalar_image(int width, int height, const std::vector<float>& values,
 }
 
 // Alpha as it is; depth, which crowds near 1 under a perspective projection, stretched over what the image covers.
-gsv::Image port_view(const ImageData& target, PortView view) {
+gsv::Image port_view(gsv::LabKit& kit, const ImageData& target, PortView view) {
     const gsv::ImageF color = target.read_rgba32f();
     if (view == PortView::Color) return gsv::to_rgba8(color);
     const std::size_t n = static_cast<std::size_t>(target.width()) * target.height();
@@ -49,7 +49,7 @@ gsv::Image port_view(const ImageData& target, PortView view) {
         for (std::size_t i = 0; i < n; ++i) alpha[i] = color.rgba[4 * i + 3];
         return scalar_image(target.width(), target.height(), alpha, 0.0f, 1.0f, std::vector<bool>(n, true));
     }
-    const std::vector<float> depth = target.read_depth();
+    const std::vector<float> depth = kit.read_depth(target);
     std::vector<bool> covered(n);
     float lo = 1.0f, hi = 0.0f;
     for (std::size_t i = 0; i < n; ++i) {
@@ -62,12 +62,13 @@ gsv::Image port_view(const ImageData& target, PortView view) {
     return scalar_image(target.width(), target.height(), depth, lo, hi, covered);
 }
 
-void write_image_port(const ImageData& target, const std::filesystem::path& file, std::vector<std::filesystem::path>& written) {
+void write_image_port(gsv::LabKit& kit, const ImageData& target, const std::filesystem::path& file,
+                      std::vector<std::filesystem::path>& written) {
     std::filesystem::path stem = file;
     stem.replace_extension();
     for (const auto& [view, name] : {std::pair{PortView::Color, file.string()}, std::pair{PortView::Alpha, stem.string() + ".alpha.png"},
                                      std::pair{PortView::Depth, stem.string() + ".depth.png"}}) {
-        gsv::write_png(name, port_view(target, view));
+        gsv::write_png(name, port_view(kit, target, view));
         written.push_back(name);
     }
 }
@@ -133,23 +134,24 @@ std::vector<gsv::InspectStage> inspect_stages(const gsv::Network& network) {
     return stages;
 }
 
-std::optional<gsv::Image> inspect_image(const gsv::Network& network, const std::string& name) {
+std::optional<gsv::Image> inspect_image(gsv::LabKit& kit, const gsv::Network& network, const std::string& name) {
     const auto dot = name.find('.'), space = name.find(' ');
     const gsv::Processor* processor = network.find(name.substr(0, dot));
     const gsv::Port* port = processor && dot != std::string::npos ? processor->find_output(name.substr(dot + 1, space - dot - 1)) : nullptr;
     const auto target = port ? port->data.as<ImageData>() : nullptr;
     if (!target || processor->state() != gsv::RunState::Ran) return std::nullopt;
     const std::string view = space == std::string::npos ? "" : name.substr(space + 1);
-    return port_view(*target, view == "alpha" ? PortView::Alpha : view == "depth" ? PortView::Depth : PortView::Color);
+    return port_view(kit, *target, view == "alpha" ? PortView::Alpha : view == "depth" ? PortView::Depth : PortView::Color);
 }
 
-std::vector<std::filesystem::path> write_port_images(const gsv::Network& network, const std::filesystem::path& folder) {
+std::vector<std::filesystem::path> write_port_images(gsv::LabKit& kit, const gsv::Network& network,
+                                                     const std::filesystem::path& folder) {
     std::error_code ec;
     std::filesystem::create_directories(folder, ec);
     if (ec) throw gsv::Error("cannot create '" + folder.string() + "': " + ec.message());
     std::vector<std::filesystem::path> written;
     network.write_port_images(folder, [&](const gsv::Processor&, const gsv::Port& port, const std::filesystem::path& file) {
-        if (auto target = port.data.as<ImageData>()) write_image_port(*target, file, written);
+        if (auto target = port.data.as<ImageData>()) write_image_port(kit, *target, file, written);
     });
     return written;
 }

@@ -21,7 +21,8 @@ glm::dvec3 unproject(const glm::dmat4& inverse, double x, double y, double z) {
 
 }  // namespace
 
-gsv::SweepMetrics measure_hits(const gsv::Params& p, const RayTraversal& raycaster, const FrameView& view) {
+gsv::SweepMetrics measure_hits(gsv::LabKit& kit, const RayTraversal& raycaster, const FrameView& view) {
+    const gsv::Params& p = kit.params();
     const std::string& compositing = p.get_choice("compositing");
     if (p.get_choice("volume") != "marschner_lobb" || compositing != "iso" ||
         p.get_bool("probe") || !p.get_file("network").empty() || p.get_vec3("clip_normal") != glm::vec3(0.0f) ||
@@ -32,7 +33,7 @@ gsv::SweepMetrics measure_hits(const gsv::Params& p, const RayTraversal& raycast
     const bool normals = gradient == "forward" || gradient == "central";
     const double iso = p.get_float("iso_value");
     const ImageData& image = *raycaster.image();
-    const std::vector<float> depth = image.read_depth();
+    const std::vector<float> depth = kit.read_depth(image);
     const glm::dmat4 inverse = glm::inverse(glm::dmat4(view.projection) * glm::dmat4(view.view));
     const glm::dvec3 eye(view.eye);
 

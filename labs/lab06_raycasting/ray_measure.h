@@ -15,7 +15,7 @@ namespace lab06 {
 // With forward or central gradients also normal_err_deg: the angle between that scheme's gradient, in
 // double on the volume's texels at the GPU's hit points on the isosurface (not on the box's faces, where a
 // ray enters the object already inside), and the exact gradient there. Empty otherwise.
-gsv::SweepMetrics measure_hits(const gsv::Params& params, const RayTraversal& raycaster, const FrameView& view);
+gsv::SweepMetrics measure_hits(gsv::LabKit& kit, const RayTraversal& raycaster, const FrameView& view);
 
 // The ray caster alone, timed (glFinish and a steady clock, median of 5 after 1 warm-up) with each shader
 // at the current configuration: specialised_ms, uber_ms and uber_over_specialised, and for DVR with

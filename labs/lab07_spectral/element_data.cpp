@@ -13,9 +13,15 @@ void ElementData::bind(const gsv::ShaderProgram& program) const {
     glUniform1fv(program.location("uWeights[0]"), static_cast<GLsizei>(w.size()), w.data());
     program.bind("uValues", value_texture);
     program.set("uTrianglesPerElement", 2 * subdivisions * subdivisions);
+    program.set("uVerticesPerElement", (subdivisions + 1) * (subdivisions + 1));
 }
 
-void update_element_data(ElementData& data, const gsv::Params& p, gsv::Profile profile) {
+void update_element_data(ElementData& data, const gsv::LabKit& kit) {
+    const gsv::Params& p = kit.params();
+    const gsv::Profile profile = kit.profile();
+    const gsv::BufferTextureStorage storage = kit.allows(gsv::gl_feature::kBufferTextures)
+                                                  ? gsv::BufferTextureStorage::Buffer
+                                                  : gsv::BufferTextureStorage::Rows;
     data.mesh_made.run_if_changed(p, [&] {
         gsv::ElementMesh mesh;
         mesh.shape = p.get_choice("mesh") == "grid" ? gsv::ElementMesh::Shape::Grid : gsv::ElementMesh::Shape::Annulus;
@@ -38,7 +44,7 @@ void update_element_data(ElementData& data, const gsv::Params& p, gsv::Profile p
         data.field = gsv::parse_spectral_field(p.get_choice("field"));
         data.time = p.get_float("time");
         data.values = gsv::sample_element_values(data.mesh, data.field, data.nodes, data.time);
-        data.value_texture = gsv::BufferTexture::create_r32f(data.values.data(), data.values.size());
+        data.value_texture = gsv::BufferTexture::create_r32f(data.values.data(), data.values.size(), storage);
         const auto [lo, hi] = std::minmax_element(data.values.begin(), data.values.end());
         data.min_value = *lo;
         data.max_value = *hi;

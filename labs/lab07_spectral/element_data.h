@@ -37,7 +37,9 @@ struct ElementData {
 };
 
 // The mesh, field, nodes and values the parameters describe, uploaded; what has not changed is kept. Throws
-// gsv::Error naming a bad mesh, gsv::UnsupportedError for more values than a buffer texture holds.
-void update_element_data(ElementData& data, const gsv::Params& params, gsv::Profile profile);
+// gsv::Error naming a bad mesh, gsv::UnsupportedError for more values than a buffer texture holds. The values
+// go into a buffer texture where the run has them, else into its stand-in (OpenGL ES 3.0, 3.1: rows of a 2D
+// texture, gsv/buffer_fetch.glsl).
+void update_element_data(ElementData& data, const gsv::LabKit& kit);
 
 }  // namespace lab07

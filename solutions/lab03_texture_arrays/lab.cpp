@@ -85,7 +85,7 @@ public:
     }
 
 private:
-    void check_limits(gsv::LabKit& kit) const { lab03::check_storage_limits(kit.params()); }
+    void check_limits(gsv::LabKit& kit) const { lab03::check_storage_limits(kit); }
 
     static gsv::Texture make_noise(const gsv::Params& p, const gsv::Frame& frame) {
         const std::vector<float> noise = gsv::white_noise(frame.width, frame.height, static_cast<std::uint64_t>(p.get_int("seed")));

@@ -3,10 +3,13 @@
 layout(location = 3) in vec4 aColor;  // particle_buffers.h: kColorSlot
 #endif
 
+uniform float uPointSize;
+
 out vec3 vColor;
 
 void main() {
     gl_Position = uModelViewProjectionMatrix * vec4(aVertex.xyz, 1.0);
+    gl_PointSize = uPointSize;  // ES takes a point's size only from here; desktop GL once GL_PROGRAM_POINT_SIZE is on
 #ifdef EFFECT_COLOR_BY_SPEED
     vColor = aColor.rgb;
 #else

@@ -29,7 +29,7 @@ void EntryExitPoints::process() {
 
     // Exit points: the farthest back faces.
     exit_->bind();
-    glClearDepth(0.0);
+    glClearDepthf(0.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glDepthFunc(GL_GREATER);
     glCullFace(GL_FRONT);
@@ -42,7 +42,7 @@ void EntryExitPoints::process() {
     // Entry points: the nearest front faces, and where the near plane cuts the proxy (the camera inside),
     // the cut itself, so those rays start at the near plane rather than not at all.
     entry_->bind();
-    glClearDepth(1.0);
+    glClearDepthf(1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     proxy->draw();
     if (proxy->proxy) {

@@ -117,7 +117,7 @@ public:
     gsv::SweepMetrics sweep_metrics(gsv::LabKit& kit, const gsv::Frame&) override {
         auto* raycaster = dynamic_cast<lab06::RayTraversal*>(network_ ? network_->find("raycaster") : nullptr);
         if (!raycaster) return {};
-        gsv::SweepMetrics metrics = lab06::measure_hits(kit.params(), *raycaster, view_);
+        gsv::SweepMetrics metrics = lab06::measure_hits(kit, *raycaster, view_);
         if (kit.params().get_bool("compare_shaders")) {
             const gsv::SweepMetrics times = lab06::compare_shaders(*raycaster);
             metrics.insert(metrics.end(), times.begin(), times.end());
@@ -157,15 +157,15 @@ public:
         return legend;
     }
 
-    std::vector<std::filesystem::path> write_debug_images(gsv::LabKit&, const std::filesystem::path& folder) override {
+    std::vector<std::filesystem::path> write_debug_images(gsv::LabKit& kit, const std::filesystem::path& folder) override {
         if (!network_) return {};
-        return lab06::write_port_images(*network_, folder);
+        return lab06::write_port_images(kit, *network_, folder);
     }
     std::vector<gsv::InspectStage> inspect_stages() const override {
         return network_ ? lab06::inspect_stages(*network_) : std::vector<gsv::InspectStage>{};
     }
-    std::optional<gsv::Image> inspect_image(gsv::LabKit&, const std::string& name) override {
-        return network_ ? lab06::inspect_image(*network_, name) : std::nullopt;
+    std::optional<gsv::Image> inspect_image(gsv::LabKit& kit, const std::string& name) override {
+        return network_ ? lab06::inspect_image(kit, *network_, name) : std::nullopt;
     }
 
 private:

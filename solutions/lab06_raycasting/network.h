@@ -25,10 +25,11 @@ void set_view(gsv::Network& network, const FrameView* view);
 // Visual debugging: for every image output, <processor>.<port>.png (the colour: entry and exit points are
 // texture coordinates as RGB), <processor>.<port>.alpha.png and <processor>.<port>.depth.png (alpha and
 // depth as pseudo-colour; depth stretched over the range the image covers). Returns the files written.
-std::vector<std::filesystem::path> write_port_images(const gsv::Network& network, const std::filesystem::path& folder);
+std::vector<std::filesystem::path> write_port_images(gsv::LabKit& kit, const gsv::Network& network,
+                                                     const std::filesystem::path& folder);
 // The same live, for the window's inspector: each processor with how its last run went and its images'
 // names ("raycaster.image", "raycaster.image alpha", "raycaster.image depth"), and one of them read back now.
 std::vector<gsv::InspectStage> inspect_stages(const gsv::Network& network);
-std::optional<gsv::Image> inspect_image(const gsv::Network& network, const std::string& name);
+std::optional<gsv::Image> inspect_image(gsv::LabKit& kit, const gsv::Network& network, const std::string& name);
 
 }  // namespace lab06

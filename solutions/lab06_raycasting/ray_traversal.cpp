@@ -111,7 +111,7 @@ void RayTraversal::process() {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_ALWAYS);  // every pixel writes its hit's depth (gl_FragDepth)
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-    glClearDepth(1.0);
+    glClearDepthf(1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     program.use();
     // Each module's component sets what the module's file declares; the program gave every sampler its own unit.

@@ -54,7 +54,7 @@ public:
     }
 
     void render(gsv::LabKit& kit, const gsv::Frame& frame) override {
-        lab07::update_element_data(data_, kit.params(), kit.profile());
+        lab07::update_element_data(data_, kit);
         glDisable(GL_DEPTH_TEST);
         glClearColor(0.12f, 0.12f, 0.14f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT);
@@ -71,7 +71,7 @@ public:
     // The field's colours as color_map.glsl gives them over the range drawn, and its colours outside that range.
     std::optional<gsv::Legend> legend(gsv::LabKit& kit) override {
         const gsv::Params& p = kit.params();
-        lab07::update_element_data(data_, p, kit.profile());
+        lab07::update_element_data(data_, kit);
         const bool automatic = p.get_bool("auto_range");
         const float low = automatic ? data_.min_value : p.get_float("range_min");
         const float high = automatic ? data_.max_value : p.get_float("range_max");

@@ -1,6 +1,7 @@
 // Lab 07: a spectral element's field at one point of its reference square, from the element's node values.
 // DEGREE (a compile-time parameter) fixes the number of nodes per axis, so every loop has a constant bound.
 #pragma once
+#include "gsv/buffer_fetch.glsl"
 #include "gsv/not_done.glsl"
 
 const int kNodes = DEGREE + 1;
@@ -10,7 +11,7 @@ const int kNodes = DEGREE + 1;
 uniform float uNodes[kNodes];
 uniform float uWeights[kNodes];
 // Every element's (DEGREE + 1)^2 values, element by element, then rows of nodes (eta), xi fastest.
-uniform samplerBuffer uValues;
+uniform BUFFER_SAMPLER uValues;
 
 // l_i(x) for i = 0 .. DEGREE, the Lagrange basis on the nodes.
 void lagrangeBasis(float x, out float l[kNodes]) {
@@ -35,7 +36,7 @@ void lagrangeBasis(float x, out float l[kNodes]) {
 }
 
 float nodeValue(int element, int i, int j) {
-    return texelFetch(uValues, (element * kNodes + j) * kNodes + i).r;
+    return bufferFetch(uValues, (element * kNodes + j) * kNodes + i).r;
 }
 
 // The field at reference point r = (xi, eta) of the element.
@@ -70,7 +71,15 @@ float elementValue(int element, vec2 r) {
 #endif
 }
 
+#ifdef GSV_NO_PRIMITIVE_ID
+// OpenGL ES before 3.2 has no gl_PrimitiveID here: element.vert sends the element, flat (every vertex of an
+// element's triangles is that element's own, so whichever vertex GL takes it from names the same element).
+flat in int vElement;
+
+int currentElement() { return vElement; }
+#else
 // Each element is drawn as the same number of triangles, in element order.
 uniform int uTrianglesPerElement;
 
 int currentElement() { return gl_PrimitiveID / max(uTrianglesPerElement, 1); }
+#endif

@@ -1,0 +1,43 @@
+// Kit prelude for OpenGL ES 3.x (and so WebGL 2), spliced in before every lab shader.
+// GLSL ES gives no default precision to floats in fragment shaders, to 3D and array samplers anywhere, or
+// to images: the kit asks for highp everywhere, so a lab's numbers mean what they mean on the desktop
+// (mediump is 16-bit on phones; llvmpipe computes everything at 32 bits either way).
+precision highp float;
+precision highp int;
+precision highp sampler2D;
+precision highp sampler3D;
+precision highp samplerCube;
+precision highp sampler2DArray;
+precision highp sampler2DShadow;
+precision highp isampler2D;
+precision highp isampler3D;
+precision highp usampler2D;
+precision highp usampler3D;
+#if GSV_GLSL_VERSION >= 310
+precision highp image2D;
+precision highp image3D;
+precision highp iimage2D;
+precision highp uimage2D;
+#endif
+#if GSV_GLSL_VERSION >= 320
+precision highp samplerBuffer;
+precision highp isamplerBuffer;
+precision highp usamplerBuffer;
+#else
+// What ES 3.0 and 3.1 lack and a lab uses; each names its stand-in (common/gl/gl_features.h has the table).
+#define GSV_NO_BUFFER_TEXTURES 1  // samplerBuffer: rows of a 2D texture, read through gsv/buffer_fetch.glsl
+#define GSV_NO_PRIMITIVE_ID 1     // gl_PrimitiveID in fragment shaders: the lab passes its own id, flat
+#endif
+
+// The names the kit's shaders share, declared as in the core prelude (prelude_core.glsl): ES has no
+// fixed-function built-ins either.
+uniform mat4 uModelViewProjectionMatrix;
+uniform mat4 uModelViewMatrix;
+uniform mat4 uProjectionMatrix;
+uniform mat3 uNormalMatrix;
+
+#ifdef GSV_STAGE_VERTEX
+in vec4 aVertex;
+in vec3 aNormal;
+in vec4 aTexCoord0;
+#endif
