@@ -384,7 +384,7 @@ TEST_CASE("timing: median of glFinish-bracketed frames after warm-up", "[gl]") {
     CHECK(summarize({3, 1, 2, 10}).median_ms == 2.5);
 }
 
-TEST_CASE("timing: interleaved rounds, quartiles, ratios with the rounds' spread, short frames in batches", "[gl]") {
+TEST_CASE("timing: interleaved rounds, quartiles, ratios with the rounds' spread, short frames in batches", "[gl][timing]") {
     auto context = test::headless_context();
     std::vector<std::string> order;
     int prepared_a = 0, frames_a = 0, frames_b = 0;
