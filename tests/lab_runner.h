@@ -5,6 +5,7 @@
 #include "common/io/json.h"
 #include "grader/process.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -12,6 +13,18 @@
 namespace gsv::test {
 
 inline std::filesystem::path bin_dir() { return std::filesystem::path(GSV_BINARY_DIR) / "bin"; }
+
+// Every lab the build has ("lab01", ...), from CMake's list.
+inline std::vector<std::string> all_labs() {
+    std::vector<std::string> labs;
+    std::string list = GSV_LABS;
+    for (std::size_t start = 0; start < list.size();) {
+        const std::size_t comma = std::min(list.find(',', start), list.size());
+        if (comma > start) labs.push_back(list.substr(start, comma - start));
+        start = comma + 1;
+    }
+    return labs;
+}
 
 struct LabRun {
     ProcessResult process;

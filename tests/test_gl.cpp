@@ -69,6 +69,18 @@ void check_known_triangle(const Image& image) {
     CHECK(int(image.at(8, 30)[2]) > int(image.at(8, 55)[2]));
 }
 
+// 0/0 over an 8x8 float target: every pixel NaN or Inf, if the target keeps them.
+Framebuffer draw_nan_quad(const Context& context, Profile profile) {
+    ShaderProgram program = test::test_program(context, profile, {"quad.vert", "nan.frag"});
+    GpuMesh quad(make_fullscreen_quad(), profile);
+    Framebuffer float_target(8, 8, ColorFormat::RGBA32F);
+    float_target.bind();
+    program.use();
+    program.set("uZero", 0.0f);
+    quad.draw();
+    return float_target;
+}
+
 }  // namespace
 
 TEST_CASE("context: EGL surfaceless renders a known triangle", "[gl]") {
@@ -215,13 +227,7 @@ TEST_CASE("es: a buffer texture and its ES 3.0 stand-in, rows of a 2D texture, r
 TEST_CASE("es: a float target keeps NaN on ES too (GL_EXT_color_buffer_float), and depth is read through colour", "[gl][es]") {
     auto context = test::headless_context(Profile::Es, {3, 0});
     REQUIRE(Framebuffer::float_renderable());
-    ShaderProgram program = test::test_program(*context, Profile::Es, {"quad.vert", "nan.frag"});
-    GpuMesh quad(make_fullscreen_quad(), Profile::Es);
-    Framebuffer float_target(8, 8, ColorFormat::RGBA32F);
-    float_target.bind();
-    program.use();
-    program.set("uZero", 0.0f);
-    quad.draw();
+    const Framebuffer float_target = draw_nan_quad(*context, Profile::Es);
     const FloatStats stats = float_stats(float_target.read_rgba32f());
     CHECK(stats.nan_count + stats.inf_count == 64);
     // ES reads back colour only; the framebuffer says where to go instead of failing with a bare GL error.
@@ -230,13 +236,7 @@ TEST_CASE("es: a float target keeps NaN on ES too (GL_EXT_color_buffer_float), a
 
 TEST_CASE("framebuffer: float readback keeps NaN that an 8-bit target would hide", "[gl]") {
     auto context = test::headless_context();
-    ShaderProgram program = test::test_program(*context, Profile::Core, {"quad.vert", "nan.frag"});
-    GpuMesh quad(make_fullscreen_quad(), Profile::Core);
-    Framebuffer float_target(8, 8, ColorFormat::RGBA32F);
-    float_target.bind();
-    program.use();
-    program.set("uZero", 0.0f);
-    quad.draw();
+    const Framebuffer float_target = draw_nan_quad(*context, Profile::Core);
     const FloatStats stats = float_stats(float_target.read_rgba32f());
     CHECK(stats.nan_count + stats.inf_count == 64);
     // The kit's PNG conversion paints NaN magenta instead of black.

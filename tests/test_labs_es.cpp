@@ -19,13 +19,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::vector<std::string> all_labs() {
-    std::vector<std::string> labs;
-    std::stringstream list(GSV_LABS);
-    for (std::string lab; std::getline(list, lab, ',');)
-        if (!lab.empty()) labs.push_back(lab);
-    return labs;
-}
+using test::all_labs;
 
 // The lowest ES version each lab declares (LabInfo::needs_es): the WebGL 2 feature set but for compute.
 std::string declared_es_version(const std::string& lab) { return lab == "lab05" ? "3.1" : "3.0"; }

@@ -29,15 +29,5 @@ precision highp usamplerBuffer;
 #define GSV_NO_PRIMITIVE_ID 1     // gl_PrimitiveID in fragment shaders: the lab passes its own id, flat
 #endif
 
-// The names the kit's shaders share, declared as in the core prelude (prelude_core.glsl): ES has no
-// fixed-function built-ins either.
-uniform mat4 uModelViewProjectionMatrix;
-uniform mat4 uModelViewMatrix;
-uniform mat4 uProjectionMatrix;
-uniform mat3 uNormalMatrix;
-
-#ifdef GSV_STAGE_VERTEX
-in vec4 aVertex;
-in vec3 aNormal;
-in vec4 aTexCoord0;
-#endif
+// The names the kit's shaders share, as uniforms and attributes: ES has no fixed-function built-ins either.
+#include "gsv/prelude_core.glsl"
