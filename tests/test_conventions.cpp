@@ -181,3 +181,24 @@ TEST_CASE("gsv-grade: an --out that cannot be written is one line naming it befo
     CHECK(!contains(batch.output, "internal error"));
     CHECK(!contains(batch.output, "[1/1]"));
 }
+
+TEST_CASE("gsv-grade: a bad --profile, or goldens asked for on ES, is one line and status 2 before anything runs", "[grader]") {
+    test::TempDir dir;
+    ProcessLimits limits;
+    limits.timeout = std::chrono::seconds(60);
+    const auto grade = [&](const std::vector<std::string>& args) {
+        std::vector<std::string> argv{(test::bin_dir() / "gsv-grade").string()};
+        argv.insert(argv.end(), args.begin(), args.end());
+        argv.insert(argv.end(), {"--out", dir.path("out").string()});
+        return run_process(argv, dir.path(), limits);
+    };
+    const ProcessResult metal = grade({"--profile", "metal"});
+    CHECK(metal.exit_code == 2);
+    CHECK(contains(metal.output, "unknown profile 'metal'"));
+    CHECK(test::count_of(metal.output, "\n") == 1);
+    const ProcessResult goldens = grade({"--profile", "es", "--update-goldens"});
+    CHECK(goldens.exit_code == 2);
+    CHECK(contains(goldens.output, "--update-goldens renders the goldens on the core profile; drop --profile es"));
+    CHECK(test::count_of(goldens.output, "\n") == 1);
+    CHECK(!std::filesystem::exists(dir.path("out")));
+}

@@ -114,6 +114,17 @@ TEST_CASE("cases: a malformed spec or case file names the file and what is wrong
     const auto bad_todo = dir.write("c.json", R"({"lab": "lab01", "size": "8x8", "tolerance": {"live": {"max_channel_diff": 2, "max_differing_fraction": 0},
         "golden": {"max_channel_diff": 2, "max_differing_fraction": 0}}, "cases": [{"name": "a", "todo": "T1", "settings": []}]})");
     CHECK(test::gsv_error_message([&] { load_lab_cases(bad_todo); }).find("expected an id like L01-T2") != std::string::npos);
+    // A case's "es" is an OpenGL ES version: 3.0 to 3.2, read as one, or the file and case are named.
+    const std::string tolerance = R"("tolerance": {"live": {"max_channel_diff": 2, "max_differing_fraction": 0},
+        "golden": {"max_channel_diff": 2, "max_differing_fraction": 0}})";
+    const auto es_case = [&](const std::string& name, const std::string& es) {
+        return dir.write(name, R"({"lab": "lab01", "size": "8x8", )" + tolerance +
+                                   R"(, "cases": [{"name": "a", "todo": "L01-T1", "settings": [], "es": ")" + es + R"("}]})");
+    };
+    CHECK(load_lab_cases(es_case("es-ok.json", "3.2")).cases.at(0).es_version == GlVersion{3, 2});
+    CHECK(test::gsv_error_message([&] { load_lab_cases(es_case("es-desktop.json", "4.1")); })
+              .find("es-desktop.json: case 'a': \"es\": GL version '4.1' is out of range [3.0, 3.2] for the es profile") !=
+          std::string::npos);
 
     // Through grade(): a broken case file and a lab with no cases stop the run with one clear line.
     GradeOptions options;

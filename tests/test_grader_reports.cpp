@@ -223,6 +223,12 @@ TEST_CASE("grader reports: report.json carries every measurement", "[grader]") {
     const GradeReport report = sample_report(dir.path());
     const Json json = parse_json(report_json(report), "report.json");
     CHECK(json.string_at("mode") == "instructor");
+    CHECK(json.string_at("profile") == "core");
+    GradeReport on_es = report;
+    on_es.profile = "es";
+    CHECK(parse_json(report_json(on_es), "report.json").string_at("profile") == "es");
+    CHECK(contains(score_table(on_es), "profile  es (the labs and the references ran on it)"));
+    CHECK(!contains(score_table(report), "profile "));
     CHECK(json.string_at("seed") == "12345678901234567890");
     CHECK(json.string_at("sandbox") == "user namespaces, no network");
     CHECK(json.number_at("seconds") == 12.5);
