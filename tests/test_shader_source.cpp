@@ -315,6 +315,9 @@ TEST_CASE("shader_source: #line directives map every line back to its file", "[u
                              "#define GSV_PROFILE_COMPAT 1\n"
                              "#define GSV_STAGE_FRAGMENT 1\n"
                              "#define GSV_GLSL_VERSION 130\n"
+                             // GL 3.0 has neither (common/gl/gl_features.h): the stand-ins' defines.
+                             "#define GSV_NO_BUFFER_TEXTURES 1\n"
+                             "#define GSV_NO_PRIMITIVE_ID 1\n"
                              "#line 0 1\n"
                              "// main line 1\n"
                              "#line 0 2\n"
@@ -554,9 +557,14 @@ TEST_CASE("shader_source: on OpenGL ES the kit's prelude brings the precision st
                                   "precision highp sampler2DArray;"})
         CHECK(es30.text.find(statement) != std::string::npos);
     CHECK(es30.text.find("uniform mat4 uModelViewProjectionMatrix;") != std::string::npos);
-    // The preprocessor keeps #if blocks: which stand-ins apply is the GLSL compiler's to decide, from GSV_GLSL_VERSION.
+    // The stand-ins a version needs are defined in the header, from the feature table; ES 3.2 and desktop need none.
     CHECK(es30.text.find("#define GSV_NO_BUFFER_TEXTURES 1") != std::string::npos);
     CHECK(es30.text.find("#define GSV_NO_PRIMITIVE_ID 1") != std::string::npos);
+    const auto es32 = with_kit_prelude({3, 2}, ShaderStage::Fragment);
+    CHECK(es32.text.rfind("#version 320 es\n", 0) == 0);
+    CHECK(es32.text.find("#define GSV_NO_") == std::string::npos);
+    CHECK(es32.text.find("precision highp samplerBuffer;") != std::string::npos);
+    CHECK(gsv::preprocess_shader(main, bare_options({4, 1}, Profile::Core)).text.find("#define GSV_NO_") == std::string::npos);
     // Attributes only where they can be: the vertex stage.
     CHECK(es30.text.find("in vec4 aVertex;") < es30.text.find("#endif", es30.text.find("in vec4 aVertex;")));
     // A shader that writes #version itself is refused in every profile, ES included.

@@ -9,11 +9,11 @@
 #include "common/app/inspect_stage.h"
 #include "common/app/params.h"
 #include "common/context/context.h"
+#include "common/gl/gl_features.h"
 #include "common/image/image.h"
 #include "common/image/legend.h"
 #include "common/io/data_array.h"
 #include "common/scene/transforms.h"
-#include "common/gl/gl_features.h"
 #include "common/shader/shader_library.h"
 
 #include <filesystem>

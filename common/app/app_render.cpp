@@ -72,13 +72,12 @@ Readback read_back(const Framebuffer& target) {
     return {to_rgba8(pixels), float_stats(pixels)};
 }
 
-Framebuffer frame_target(const Session& s, int width, int height) {
+Framebuffer frame_target(Session& s, int width, int height) {
     if (Framebuffer::float_renderable()) return Framebuffer(width, height, ColorFormat::RGBA32F);
-    static bool said = false;  // once a process, however many frames or sweep points
-    if (!said)
+    if (!s.told_no_float_target)
         std::fprintf(stderr, "%s: this OpenGL ES driver lacks GL_EXT_color_buffer_float: frames render into RGBA8, so NaN "
                              "and Inf pixels are not detected (exit 4) and read back as black\n", s.info.id.c_str());
-    said = true;
+    s.told_no_float_target = true;
     return Framebuffer(width, height, ColorFormat::RGBA8);
 }
 

@@ -30,6 +30,7 @@ struct Session {
     std::unique_ptr<Assets> assets;
     std::unique_ptr<Context> context;
     std::unique_ptr<LabKit> kit;
+    bool told_no_float_target = false;  // frame_target said once that frames render into RGBA8
 
     // Creates the context, checks the lab's GL needs, builds the kit and runs lab->setup. A window is
     // `extra_width` wider than --size says (the panel's column beside the picture).
@@ -66,7 +67,7 @@ Readback read_back(const Framebuffer& target);
 // A frame's target: float, so NaN and Inf survive to the readback instead of silently turning black. An OpenGL ES
 // driver without GL_EXT_color_buffer_float cannot draw into float: RGBA8 then, and stderr says once that NaN cannot
 // be told from black there.
-Framebuffer frame_target(const Session& session, int width, int height);
+Framebuffer frame_target(Session& session, int width, int height);
 
 // The image with the lab's legend beside it (--legend). Throws gsv::Error when the lab's colours, with these
 // settings, stand for no value.

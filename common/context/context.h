@@ -44,8 +44,8 @@ public:
     GlVersion effective_version() const;
     // Stops the run with one line when the context cannot do what a lab needs.
     void require(GlVersion needed, const std::string& what_for) const;
-    std::string describe() const;
-    bool has_extension(const std::string& name) const;  // "GL_EXT_color_buffer_float"  // "llvmpipe (LLVM 15.0.6, 256 bits), OpenGL 4.5 (Core Profile) Mesa 22.3.6, core, EGL"
+    std::string describe() const;  // "llvmpipe (LLVM 15.0.6, 256 bits), OpenGL 4.5 (Core Profile) Mesa 22.3.6, core profile, egl backend"
+    bool has_extension(const std::string& name) const;  // "GL_EXT_color_buffer_float"
 
     virtual GLFWwindow* window() { return nullptr; }
     virtual void swap_buffers() {}

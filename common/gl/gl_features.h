@@ -12,15 +12,21 @@ struct GlFeature {
     const char* name;
     GlVersion desktop;
     GlVersion es;
+    // Where a shader can take a stand-in: the kit defines this (to 1) in every shader of a run that lacks the
+    // feature, so the GLSL and the C++ (LabKit::allows) decide from the same row. Null: no stand-in, refuse.
+    const char* missing_define = nullptr;
 };
 
 namespace gl_feature {
 inline constexpr GlFeature kCompute{"compute shaders and storage buffers", {4, 3}, {3, 1}};
-inline constexpr GlFeature kBufferTextures{"buffer textures (samplerBuffer)", {3, 1}, {3, 2}};
-inline constexpr GlFeature kFragmentPrimitiveId{"gl_PrimitiveID in a fragment shader", {3, 2}, {3, 2}};
+inline constexpr GlFeature kBufferTextures{"buffer textures (samplerBuffer)", {3, 1}, {3, 2}, "GSV_NO_BUFFER_TEXTURES"};
+inline constexpr GlFeature kFragmentPrimitiveId{"gl_PrimitiveID in a fragment shader", {3, 2}, {3, 2},
+                                                "GSV_NO_PRIMITIVE_ID"};
 // GLSL 4.00 and GLSL ES 3.20 index an array of samplers with any dynamically uniform expression; before
 // them only a constant may index it (which is why texture arrays exist).
 inline constexpr GlFeature kSamplerArrayIndexing{"an array of samplers indexed by a uniform", {4, 0}, {3, 2}};
+
+inline constexpr const GlFeature* kAll[] = {&kCompute, &kBufferTextures, &kFragmentPrimitiveId, &kSamplerArrayIndexing};
 }  // namespace gl_feature
 
 inline GlVersion first_version_with(const GlFeature& feature, Profile profile) {

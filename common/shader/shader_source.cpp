@@ -3,6 +3,7 @@
 #include "common/core/enum_names.h"
 #include "common/core/error.h"
 #include "common/core/not_done.h"
+#include "common/gl/gl_features.h"
 #include "common/shader/reference_compiler.h"
 
 #include <algorithm>
@@ -192,6 +193,9 @@ private:
         header += std::string("#define ") + profile_macro(options_.profile) + " 1\n";
         header += "#define " + stage_macro(options_.stage) + " 1\n";
         header += "#define GSV_GLSL_VERSION " + std::to_string(glsl) + "\n";
+        for (const GlFeature* feature : gl_feature::kAll)
+            if (feature->missing_define && !allows(*feature, options_.profile, options_.version))
+                header += std::string("#define ") + feature->missing_define + " 1\n";
         for (const auto& define : options_.defines) {
             check_define(define);
             header += "#define " + define.name + (define.value.empty() ? "" : " " + define.value) + "\n";

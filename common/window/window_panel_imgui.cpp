@@ -40,8 +40,10 @@ public:
         style.Colors[ImGuiCol_SliderGrabActive].w = 0.6f;
         style.ScaleAllSizes(ui_scale_);
         ImGui_ImplGlfw_InitForOpenGL(window, true);
-        const std::string glsl = es_ ? "#version 300 es" : "#version " + std::to_string(std::min(version.glsl(), 410));
-        ImGui_ImplOpenGL3_Init(glsl.c_str());
+        // ImGui's backend has shaders for GLSL 1.30 to 4.10 and for GLSL ES 3.00; it picks one by this line.
+        const int glsl = es_ ? 300 : std::min(version.glsl(), 410);
+        const std::string version_line = "#version " + std::to_string(glsl) + (es_ ? " es" : "");
+        ImGui_ImplOpenGL3_Init(version_line.c_str());
     }
     ~ImGuiPanel() override {
         ImGui_ImplOpenGL3_Shutdown();

@@ -23,11 +23,10 @@ precision highp uimage2D;
 precision highp samplerBuffer;
 precision highp isamplerBuffer;
 precision highp usamplerBuffer;
-#else
-// What ES 3.0 and 3.1 lack and a lab uses; each names its stand-in (common/gl/gl_features.h has the table).
-#define GSV_NO_BUFFER_TEXTURES 1  // samplerBuffer: rows of a 2D texture, read through gsv/buffer_fetch.glsl
-#define GSV_NO_PRIMITIVE_ID 1     // gl_PrimitiveID in fragment shaders: the lab passes its own id, flat
 #endif
+// What a version lacks and a lab can stand in for, the kit's header defines from common/gl/gl_features.h:
+// GSV_NO_BUFFER_TEXTURES (ES 3.0, 3.1: rows of a 2D texture, read through gsv/buffer_fetch.glsl) and
+// GSV_NO_PRIMITIVE_ID (no gl_PrimitiveID in fragment shaders: the lab passes its own id, flat).
 
 // The names the kit's shaders share, as uniforms and attributes: ES has no fixed-function built-ins either.
 #include "gsv/prelude_core.glsl"
