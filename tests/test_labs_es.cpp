@@ -160,23 +160,29 @@ TEST_CASE("es: each lab holds to its declared ES version, and what needs more is
 
 TEST_CASE("es: without float render targets or float filtering the kit says what is lost, and lab 06 reads depth through colour", "[lab][es]") {
     const auto dir = test::temp_dir("es-extensions");
-    // Mesa drops an extension from the list on request: a driver without GL_EXT_color_buffer_float, as on some phones.
-    const test::LabRun no_float = test::render("lab01_solution", {}, dir, "no-float", {"--profile", "es"},
-                                               {"MESA_EXTENSION_OVERRIDE=-GL_EXT_color_buffer_float"});
-    const Image rgba8 = must_render(no_float);
-    CHECK(test::count_of(no_float.process.output, "lacks GL_EXT_color_buffer_float: frames render into RGBA8, so NaN and Inf "
-                                                  "pixels are not detected") == 1);
-    CHECK_FALSE(read_json_file(no_float.json).bool_at("float_target"));
     const Image core = must_render(test::render("lab01_solution", {}, dir, "core"));
-    CHECK(compare_images(rgba8, core, {}).max_channel_diff == 0);
     CHECK(read_json_file(dir / "core.json").bool_at("float_target"));
-    // A lab that filters a float texture cannot draw right without GL_OES_texture_float_linear: refused, not black.
-    const test::LabRun no_linear = test::render("lab02_solution", {}, dir, "no-linear", {"--profile", "es"},
-                                                {"MESA_EXTENSION_OVERRIDE=-GL_OES_texture_float_linear"});
-    INFO(no_linear.process.output);
-    CHECK(no_linear.exit_code() == 3);
-    CHECK(no_linear.process.output.find("linear filtering of a float texture on OpenGL ES needs "
-                                        "GL_OES_texture_float_linear, which this driver lacks") != std::string::npos);
+    // Mesa drops an extension from the list on request: a driver without GL_EXT_color_buffer_float, as on some phones.
+    // Other drivers (a student's GPU) ignore the variable, and there is nothing to pretend with.
+    const bool mesa = read_json_file(dir / "core.json").object_at("gl").string_at("version").find("Mesa") != std::string::npos;
+    if (!mesa) {
+        WARN("not Mesa: the missing-extension half is skipped (MESA_EXTENSION_OVERRIDE is Mesa's)");
+    } else {
+        const test::LabRun no_float = test::render("lab01_solution", {}, dir, "no-float", {"--profile", "es"},
+                                                   {"MESA_EXTENSION_OVERRIDE=-GL_EXT_color_buffer_float"});
+        const Image rgba8 = must_render(no_float);
+        CHECK(test::count_of(no_float.process.output, "lacks GL_EXT_color_buffer_float: frames render into RGBA8, so NaN and Inf "
+                                                      "pixels are not detected") == 1);
+        CHECK_FALSE(read_json_file(no_float.json).bool_at("float_target"));
+        CHECK(compare_images(rgba8, core, {}).max_channel_diff == 0);
+        // A lab that filters a float texture cannot draw right without GL_OES_texture_float_linear: refused, not black.
+        const test::LabRun no_linear = test::render("lab02_solution", {}, dir, "no-linear", {"--profile", "es"},
+                                                    {"MESA_EXTENSION_OVERRIDE=-GL_OES_texture_float_linear"});
+        INFO(no_linear.process.output);
+        CHECK(no_linear.exit_code() == 3);
+        CHECK(no_linear.process.output.find("linear filtering of a float texture on OpenGL ES needs "
+                                            "GL_OES_texture_float_linear, which this driver lacks") != std::string::npos);
+    }
     // Lab 06's debug images include each port's depth, which ES cannot read back directly.
     for (const std::string profile : {"core", "es"}) {
         const test::LabRun run = test::render("lab06_solution", {}, dir, "lab06-" + profile, {"--profile", profile, "--debug-images"});
