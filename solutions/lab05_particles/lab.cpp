@@ -65,6 +65,8 @@ public:
         advect_ = &kit.program("advect", {"advect.comp"});
         draw_ = &kit.program("particles", {"particles.vert", "particles.frag"});
         limits_ = gsv::compute_limits();
+        // The point size comes from gl_PointSize (particles.vert): always so on ES, where this enum is unknown.
+        if (kit.profile() != gsv::Profile::Es) glEnable(GL_PROGRAM_POINT_SIZE);
     }
 
     // Refuses what cannot run before the shaders rebuild, so the user reads the reason, not a link error.
@@ -95,7 +97,6 @@ public:
         glClearColor(0.04f, 0.04f, 0.07f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         glEnable(GL_DEPTH_TEST);
-        if (kit.profile() != gsv::Profile::Es) glEnable(GL_PROGRAM_POINT_SIZE);  // an unknown enum on ES: always on there
         // The vertex stage reads what the last step wrote, through the vertex-array path.
         glMemoryBarrier(GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
         const gsv::ShaderProgram& program = kit.use(*draw_);
