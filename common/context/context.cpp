@@ -4,7 +4,6 @@
 #include "common/core/error.h"
 #include "common/gl/gl.h"
 
-#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <regex>
@@ -110,10 +109,6 @@ std::string Context::describe() const {
            backend_name(info_.backend) + " backend";
 }
 
-bool Context::has_extension(const std::string& name) const {
-    return std::find(info_.extensions.begin(), info_.extensions.end(), name) != info_.extensions.end();
-}
-
 static std::string gl_string(GLenum name) {
     const auto* s = reinterpret_cast<const char*>(glGetString(name));
     return s ? s : "";
@@ -134,11 +129,6 @@ void Context::load_gl(void* (*get_proc)(const char*), const ContextOptions& opti
     info_.vendor = gl_string(GL_VENDOR);
     info_.version_string = gl_string(GL_VERSION);
     info_.glsl_version_string = gl_string(GL_SHADING_LANGUAGE_VERSION);
-    GLint count = 0;
-    glGetIntegerv(GL_NUM_EXTENSIONS, &count);
-    for (GLint i = 0; i < count; ++i)
-        if (const auto* name = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(i))))
-            info_.extensions.emplace_back(name);
     if (info_.version_string.rfind("OpenGL ES", 0) == 0) {
         info_.profile = Profile::Es;
     } else {

@@ -29,7 +29,6 @@ struct ContextInfo {
     GlVersion requested;
     GlVersion obtained;  // what the driver reports; drivers may give more than was asked for
     std::string renderer, vendor, version_string, glsl_version_string;
-    std::vector<std::string> extensions;  // GL_EXTENSIONS, one name each
 };
 
 class Context {
@@ -45,7 +44,6 @@ public:
     // Stops the run with one line when the context cannot do what a lab needs.
     void require(GlVersion needed, const std::string& what_for) const;
     std::string describe() const;  // "llvmpipe (LLVM 15.0.6, 256 bits), OpenGL 4.5 (Core Profile) Mesa 22.3.6, core profile, egl backend"
-    bool has_extension(const std::string& name) const;  // "GL_EXT_color_buffer_float"
 
     virtual GLFWwindow* window() { return nullptr; }
     virtual void swap_buffers() {}
