@@ -84,9 +84,6 @@ std::vector<BatchEntry> grade_batch(const BatchOptions& options, void (*progress
             entry.name = names[i];
             const fs::path folder = options.submissions / entry.name;
             const fs::path out = fs::absolute(options.out_dir) / entry.name;
-            // The uid follows the place in the whole class, so shards on one machine never share one.
-            const std::size_t place = static_cast<std::size_t>(
-                std::lower_bound(roster.begin(), roster.end(), entry.name) - roster.begin());
             if (!fs::is_directory(folder)) {
                 entry.problem = "nothing submitted (no folder '" + entry.name + "')";
                 std::lock_guard<std::mutex> lock(report_mutex);
@@ -94,11 +91,11 @@ std::vector<BatchEntry> grade_batch(const BatchOptions& options, void (*progress
                 if (progress) progress(entry, done, static_cast<int>(names.size()));
                 continue;
             }
-            // The seed goes through the environment, not the command line that /proc shows every process; each
-            // submission runs as a uid of its own, so one cannot read or signal another's files or processes.
+            // The seed goes through the environment, not the command line that /proc shows every process. Each run
+            // leases a uid of its own for its student code (grader/uid_lease.h), from the same locks as every other
+            // grader on the machine, so no two submissions, shards or batches share one.
             std::vector<std::string> argv{options.grader.string(), "--submission", fs::absolute(folder).string(),
-                                          "--out", out.string(), "--quiet",
-                                          "--sandbox-uid", std::to_string(kSandboxUidBase + 1 + place)};
+                                          "--out", out.string(), "--quiet"};
             argv.insert(argv.end(), options.pass_through.begin(), options.pass_through.end());
             ProcessLimits limits;
             limits.timeout = std::chrono::hours(1);

@@ -81,6 +81,17 @@ GradeCase case_from(const Json& c, const std::string& file) {
         gc.timing.max_ratio = timing->number_or("max_ratio", 2);
         if (gc.timing.points < 0 || gc.timing.max_ratio < 1)
             throw Error(file + ": case '" + gc.name + "': timing needs points >= 0 and max_ratio >= 1");
+        const Json* vary = timing->find("vary");
+        if (gc.timing.points > 0 && (!vary || !vary->is_object() || vary->as_object().empty()))
+            throw Error(file + ":" + std::to_string(timing->line()) + ": case '" + gc.name +
+                        "': a timed case needs \"vary\", the settings drawn afresh for each timed frame (e.g. "
+                        "{\"camera_yaw\": {\"range\": [-30, 30]}}): without them a frame could be drawn before the grader asks for it");
+        if (vary && vary->is_object()) {
+            // Malformed draws are refused here, not when the first timed frame is asked for.
+            SeededDraw trial(0, "check");
+            (void)draw_settings(*vary, trial, gc.settings);
+            gc.timing.vary = *vary;
+        }
     }
     if (const Json* tolerance = c.find("tolerance"); tolerance && !tolerance->is_null()) {
         if (const Json* live = tolerance->find("live")) gc.live_tolerance = tolerance_from(*live);

@@ -4,6 +4,7 @@
 // parameters are drawn from the seed given at grading time.
 #include "common/gl/gl_version.h"
 #include "common/image/image_compare.h"
+#include "common/io/json.h"
 #include "grader/array_compare.h"
 
 #include <cstdint>
@@ -17,6 +18,9 @@ namespace gsv {
 struct TimingSpec {
     double points = 0;      // 0: not timed
     double max_ratio = 2;   // student median frame time over the reference's
+    // "vary": what changes from timed frame to timed frame, drawn afresh for each (grader/draw.h's language, e.g.
+    // {"camera_yaw": {"range": [-30, 30]}}): the grader's challenge, which a frame cannot be drawn without.
+    std::optional<Json> vary;
 };
 
 struct GradeCase {

@@ -13,6 +13,7 @@
 #include "grader/report_format.h"
 #include "grader/run_lab.h"
 #include "grader/submission.h"
+#include "grader/uid_lease.h"
 
 #include <algorithm>
 #include <chrono>
@@ -21,18 +22,14 @@
 #include <map>
 #include <optional>
 #include <regex>
+#include <random>
 #include <set>
+#include <unistd.h>
 
 namespace fs = std::filesystem;
 
 namespace gsv {
 namespace {
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n == 0 ? 0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 // A result row for a case, before anything ran.
 CaseResult result_for(const LabCases& lab, const GradeCase& c, Profile profile) {
@@ -100,19 +97,20 @@ private:
     SandboxPolicy policy_;        // running a student's lab
     SandboxPolicy build_policy_;  // building a submission's labs
     SandboxSupport support_;
+    std::optional<UidLease> uid_lease_;  // a root grader's uid for student code, held until grading ends
     LabRunner student_, reference_;
     std::map<std::string, std::map<std::string, Image>> goldens_;  // lab -> case -> image
     int total_ = 0;
 };
 
 LabRun Grading::reference_render(const LabCases& lab, const GradeCase& c) {
-    if (!options_.reference_cache) return reference_.render(lab.lab + "_solution", lab, c, false, limits(lab, false));
+    if (!options_.reference_cache) return reference_.render(lab.lab + "_solution", lab, c, limits(lab, false));
     std::string key = lab.lab + "|" + std::to_string(lab.width) + "x" + std::to_string(lab.height) + "|" + bin_.string() +
                       "|" + profile_name(options_.profile);
     for (const auto& s : c.settings) key += "|" + s;
     auto& runs = options_.reference_cache->runs;
     if (auto it = runs.find(key); it != runs.end()) return it->second;
-    LabRun run = reference_.render(lab.lab + "_solution", lab, c, false, limits(lab, false));
+    LabRun run = reference_.render(lab.lab + "_solution", lab, c, limits(lab, false));
     if (run.status == CaseStatus::Passed) runs.emplace(key, run);
     return run;
 }
@@ -175,6 +173,15 @@ void Grading::check_cases() const {
             if (c.visibility != "public")
                 if (const std::string why = refused(c.settings); !why.empty())
                     throw Error(hidden_case_file(kit_, lab.lab).string() + ": case '" + c.name + "' (as drawn): " + why);
+        // A timed case's "vary", drawn once as the timed frames will be: a setting the lab refuses stops grading here.
+        for (const auto& c : lab.cases)
+            if (c.timing.vary) {
+                SeededDraw trial(report_.seed, lab.lab + "/" + c.name + "/check");
+                std::vector<std::string> settings = c.settings;
+                for (auto& s : draw_settings(*c.timing.vary, trial, c.settings)) settings.push_back(std::move(s));
+                if (const std::string why = refused(settings); !why.empty())
+                    throw Error(file.string() + ": case '" + c.name + "': timing \"vary\" (as drawn): " + why);
+            }
     }
 }
 
@@ -244,9 +251,15 @@ void Grading::set_up_sandbox(const fs::path& student_bin, const fs::path& studen
                                kit.submission_project(), kit.shaders(), kit.data(),
                                kit_build / "gsv-targets.cmake", kit_build / "gsv-build-settings.cmake",
                                kit_build / "common", kit_build / "support", kit_build / "third_party"};
-    if (!build_dir.empty()) build_policy_.read_write = {build_dir};
-    const uid_t uid = options_.sandbox_uid ? options_.sandbox_uid : kSandboxUidBase;
-    policy_.uid = build_policy_.uid = uid;
+    // The build writes only its build folder; the submission's labs/ (the grader's copy) it may only read.
+    if (!build_dir.empty()) {
+        build_policy_.read_only.push_back(student_root);
+        build_policy_.read_write = {build_dir / "build"};
+    }
+    // A root grader runs student code as a uid leased to this run alone (grader/uid_lease.h).
+    if (geteuid() == 0 && options_.sandbox)
+        uid_lease_.emplace(options_.sandbox_uid ? UidLease::exactly(options_.sandbox_uid) : UidLease::any());
+    policy_.uid = build_policy_.uid = uid_lease_ ? uid_lease_->uid() : kSandboxUidBase;
 #if defined(__SANITIZE_ADDRESS__)
     // The labs of a sanitizer build reserve terabytes of shadow memory.
     policy_.address_space_bytes = build_policy_.address_space_bytes = 0;
@@ -370,7 +383,8 @@ std::string Grading::picture_in_submission(const Image& image) const {
     const fs::path labs = KitLayout{student_.root.empty() ? kit_ : student_.root}.labs();
     std::error_code ec;
     for (auto it = fs::recursive_directory_iterator(labs, ec); !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
-        if (!it->is_regular_file(ec) || it->path().extension() != ".png" || it->file_size(ec) > (16u << 20)) continue;
+        // Plain files only (the copy holds nothing else; never follow a link).
+        if (!fs::is_regular_file(it->symlink_status(ec)) || it->path().extension() != ".png" || it->file_size(ec) > (16u << 20)) continue;
         try {
             if (read_png(it->path()).rgba == image.rgba) return as_student_sees(it->path().string());
         } catch (const Error&) {
@@ -387,7 +401,7 @@ std::string Grading::as_student_sees(std::string text) const {
 
 void Grading::update_golden(const LabCases& lab, const GradeCase& c) {
     CaseResult r = result_for(lab, c, options_.profile);
-    const LabRun ref = reference_.render(lab.lab + "_solution", lab, c, false, limits(lab, false));
+    const LabRun ref = reference_.render(lab.lab + "_solution", lab, c, limits(lab, false));
     r.status = ref.status;
     r.output = ref.process.output;
     r.detail = ref.detail;
@@ -439,8 +453,11 @@ void Grading::grade_case(const LabCases& lab, const GradeCase& c, bool live, con
         record(t);
     };
     const fs::path dir = out_ / lab.lab / c.name;
-    fs::remove_all(dir);
+    remove_folder(dir);
     fs::create_directories(dir);
+    // What the grader writes here (expected.png, a hidden case's reference) is the grader's alone: a student
+    // process running as another uid, where no namespace hides this folder, cannot read it.
+    if (geteuid() == 0) fs::permissions(out_ / lab.lab, fs::perms::owner_all);
 
     if (build && !build->ok) {
         r.status = CaseStatus::BuildError;
@@ -451,9 +468,9 @@ void Grading::grade_case(const LabCases& lab, const GradeCase& c, bool live, con
         return;
     }
     // The student first: this case's expected image does not exist yet while student code runs.
-    const LabRun student = student_.render(lab.lab, lab, c, false, limits(lab, true));
+    const LabRun student = student_.render(lab.lab, lab, c, limits(lab, true));
     r.seconds = student.process.seconds;
-    r.frame_ms = student.median_ms;
+    r.frame_ms = student.reported_ms;
     r.output = as_student_sees(student.process.output);
     r.status = student.status;
     r.detail = as_student_sees(student.detail);
@@ -557,7 +574,7 @@ void Grading::check_image(const LabCases& lab, const GradeCase& c, const LabRun&
         // copy when the submission holds the picture, or when its own lab does not draw it for that case.
         const std::string file = picture_in_submission(actual);
         const auto other = std::find_if(lab.cases.begin(), lab.cases.end(), [&](const GradeCase& x) { return x.name == copied; });
-        const LabRun own = file.empty() && other != lab.cases.end() ? student_.render(lab.lab, lab, *other, false, limits(lab, true)) : LabRun{};
+        const LabRun own = file.empty() && other != lab.cases.end() ? student_.render(lab.lab, lab, *other, limits(lab, true)) : LabRun{};
         if (file.empty() && own.status == CaseStatus::Passed && own.image && own.image->rgba == actual.rgba) {
             r.status = CaseStatus::WrongImage;
             r.detail = "draws exactly what case '" + copied + "' draws: this case's settings seem to change nothing (" + r.detail + ")";
@@ -595,27 +612,36 @@ CaseResult Grading::check_timing(const LabCases& lab, const GradeCase& c, const 
     t.seconds = 0;
     std::vector<double> s, ref;
     std::optional<LabRun> failure;
-    // Interleaved, so a machine that slows down slows both alike.
+    // The settings of every timed frame are drawn afresh, from entropy no one else sees: a frame cannot be drawn
+    // (or copied from an earlier one) before the grader asks for it.
+    std::random_device entropy;
+    SeededDraw fresh((std::uint64_t(entropy()) << 32) ^ entropy(), lab.lab + "/" + c.name + "/timing");
+    // Interleaved, so a machine that slows down slows both alike; the reference draws the same frames.
     auto measure = [&](int rounds) {
         for (int i = 0; i < rounds && !failure; ++i) {
-            const LabRun a = student_.render(lab.lab, lab, c, true, limits(lab, true));
+            std::vector<std::vector<std::string>> challenges;
+            for (int f = 0; f < lab.timing_frames; ++f) challenges.push_back(draw_settings(*c.timing.vary, fresh, c.settings));
+            const LabRun a = student_.render(lab.lab, lab, c, limits(lab, true), &challenges);
             t.seconds += a.process.seconds;
             if (a.status != CaseStatus::Passed) {
                 failure = a;
                 return;
             }
-            const LabRun b = reference_.render(lab.lab + "_solution", lab, c, true, limits(lab, false));
+            const LabRun b = reference_.render(lab.lab + "_solution", lab, c, limits(lab, false), &challenges);
             if (b.status != CaseStatus::Passed) continue;
-            // What was timed must be what is graded: the last timed frame (each starts from a cleared target)
-            // against the reference's, so frames that skip their work cannot pass for fast ones.
-            if (a.image && b.image) {
-                const ImageDiff diff = compare_images(*a.image, *b.image, lab.tolerance(c, true));
-                if (!diff.within(lab.tolerance(c, true))) {
-                    failure = a;
-                    failure->status = CaseStatus::WrongImage;
-                    failure->detail = "the timed frames drew another image than the reference's: " + diff.summary();
-                    return;
-                }
+            // What was timed must be what was asked for: each timed frame against the reference's frame drawn with the
+            // same settings, so a frame that skips its work, or an answer made before its challenge, is refused.
+            for (std::size_t k = 0; k < a.frames.size() && k < b.frames.size(); ++k) {
+                const ImageDiff diff = compare_images(a.frames[k], b.frames[k], lab.tolerance(c, true));
+                if (diff.within(lab.tolerance(c, true))) continue;
+                std::string asked;
+                for (const auto& setting : challenges[k]) asked += (asked.empty() ? "" : " ") + setting;
+                failure = a;
+                failure->status = CaseStatus::Refused;
+                failure->detail = "timed frame " + std::to_string(k + 1) + " of " + std::to_string(a.frames.size()) + " (" + asked +
+                                  ") is not the frame the reference draws with those settings: " + diff.summary() +
+                                  " (each timed frame must be the frame the grader asked for)";
+                return;
             }
             s.push_back(a.median_ms);
             ref.push_back(b.median_ms);

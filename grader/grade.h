@@ -43,7 +43,7 @@ struct GradeOptions {
     // code could read the kit. This grades them anyway, and the report says the kit was readable.
     bool allow_readable_kit = false;
     bool namespaces = true;             // false: every wall but the namespaces, as where unshare is refused
-    unsigned sandbox_uid = 0;           // a root grader runs student code as this uid; 0: kSandboxUidBase
+    unsigned sandbox_uid = 0;           // a root grader runs student code as this uid; 0: the first one free (grader/uid_lease.h)
     std::string todo;                   // only the cases of this TODO ("L02-T3"); empty: all
     std::shared_ptr<ReferenceCache> reference_cache;  // shared between runs in one process; none: no cache
     std::optional<std::uint64_t> seed;  // hidden cases; none: a fresh seed, recorded in the report

@@ -25,6 +25,8 @@ const char* status_name(CaseStatus status) {
     case CaseStatus::ReferenceFailed: return "reference failed";
     case CaseStatus::NotDone: return "not done";
     case CaseStatus::NeedsFirst: return "needs another TODO first";
+    case CaseStatus::Refused: return "refused";
+    case CaseStatus::WroteTooMuch: return "wrote too much";
     }
     // Only reachable with a value cast from an out-of-range integer.
     return "unknown";

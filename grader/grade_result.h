@@ -34,6 +34,9 @@ enum class CaseStatus {
     ReferenceFailed,     // the reference itself failed: not the student's fault, scored 0 and flagged
     NotDone,             // the starter's not-done colour where the reference draws: the TODO is still open
     NeedsFirst,          // fails, and a TODO it depends on ("needs") fails its own cases: that one first
+    Refused,             // what it handed in breaks the hand-in's rules: a message over its limit or malformed, a timed
+                         // frame before its challenge, or one that is not the frame drawn with the challenge's settings
+    WroteTooMuch,        // filled its working folder (size or number of files) to the limit
 };
 const char* status_name(CaseStatus status);
 

@@ -1,7 +1,9 @@
 #pragma once
-// Runs a lab binary headless on one case, in a working folder of its own, and reads back only what it
-// may hand in: a PNG (decoded and size-checked), its JSON report's frame time (validated) and, for a lab
-// whose cases check arrays, the arrays the report lists (grader/lab_arrays.h).
+// Runs a lab binary headless on one case, in a working folder of its own, and takes only what it hands in over
+// the hand-in socket (common/io/handin.h): its image (size-checked), its JSON report and, for a lab whose cases
+// check arrays, the arrays. Nothing is read from the folder the lab wrote into. A timed run also answers the
+// grader's challenges: each timed frame drawn with settings drawn afresh, timed from the challenge to the last
+// byte of the answer, and kept for checking against the reference's frame with the same settings.
 #include "common/gl/gl_version.h"
 #include "common/image/image.h"
 #include "common/io/data_array.h"
@@ -20,8 +22,14 @@ struct LabRun {
     CaseStatus status = CaseStatus::Error;  // Passed: it ran, and image is set
     std::string detail;
     std::optional<Image> image;
-    double median_ms = 0;  // by the grader's clock: the median time between the lab's frame marks
-    std::vector<DataArray> arrays;  // read only for a lab that checks arrays, and not for timed runs
+    std::vector<DataArray> arrays;  // only for a lab that checks arrays, and not for timed runs
+    // A timed run: each challenge's settings, the frame that answered it, and the time from challenge to answer
+    // by the grader's clock (ms); median_ms is their median.
+    std::vector<std::vector<std::string>> challenges;
+    std::vector<Image> frames;
+    std::vector<double> frame_ms;
+    double median_ms = 0;
+    double reported_ms = 0;  // the lab's own claim of its frame time: shown in benchmarks, never graded
 };
 
 struct LabRunner {
@@ -32,15 +40,13 @@ struct LabRunner {
     // the others at the lab's own lowest ES version.
     Profile profile = Profile::Core;
 
-    // The case's image at the lab's size (one frame), and its arrays where the lab checks them; or `timed`:
-    // frames at the lab's timing size.
-    LabRun render(const std::string& binary, const LabCases& lab, const GradeCase& c, bool timed,
-                  const ProcessLimits& limits) const;
+    // The case's image at the lab's size (one frame), and its arrays where the lab checks them; or with
+    // `challenges` (one list of settings each), a timed run at the lab's timing size: one frame per challenge.
+    LabRun render(const std::string& binary, const LabCases& lab, const GradeCase& c, const ProcessLimits& limits,
+                  const std::vector<std::vector<std::string>>* challenges = nullptr) const;
 };
 
-// The median of the times between consecutive frame marks (seconds, by the grader's clock), in ms. Throws
-// gsv::Error unless there is one mark before the timed frames and one after each of `frames`.
-double median_frame_ms(const std::vector<double>& marks, int frames);
+double median(std::vector<double> values);  // 0 for none
 
 // Tells the failure classes apart from how the process ended and the exit status the lab framework
 // gives each (common/app/app.h); Passed when it exited 0.

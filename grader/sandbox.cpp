@@ -1,5 +1,7 @@
 #include "grader/sandbox.h"
 
+#include "grader/uid_lease.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <csignal>
@@ -17,6 +19,7 @@
 #include <sys/stat.h>
 #include <sys/statvfs.h>
 #include <sys/syscall.h>
+#include <sys/utsname.h>
 #include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
@@ -74,6 +77,45 @@ unsigned long kept_flags(const char* path) {
     return flags;
 }
 
+// Makes the mount at `path` and every mount below it read-only. A bind with MS_REC takes the mounts below along
+// (under /sys: cgroups, debugfs, bpf, ...), but a remount changes only the top one: mount_setattr (Linux 5.12)
+// sets the flag on the whole tree; before it, each mount below is remounted by itself, found in mountinfo.
+bool read_only_tree(const char* path, std::string& why) {
+#ifdef SYS_mount_setattr
+    struct {
+        std::uint64_t attr_set, attr_clr, propagation, userns_fd;
+    } attr{0x00000001 /* MOUNT_ATTR_RDONLY */, 0, 0, 0};
+    if (syscall(SYS_mount_setattr, AT_FDCWD, path, 0x8000 /* AT_RECURSIVE */, &attr, sizeof attr) == 0) return true;
+    if (errno != ENOSYS) return fail(why, std::string("cannot make ") + path + " read-only");
+#endif
+    if (mount(nullptr, path, nullptr, MS_BIND | MS_REMOUNT | MS_RDONLY | kept_flags(path), nullptr) != 0)
+        return fail(why, std::string("cannot make ") + path + " read-only");
+    // The mounts below: field 5 of each mountinfo line is its mount point (spaces escaped as \040).
+    static char info[1 << 16];
+    const int fd = open("/proc/self/mountinfo", O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return fail(why, "cannot read /proc/self/mountinfo");
+    ssize_t n = 0, got;
+    while (n < static_cast<ssize_t>(sizeof info) - 1 && (got = read(fd, info + n, sizeof info - 1 - n)) > 0) n += got;
+    close(fd);
+    info[n] = '\0';
+    const std::size_t length = std::strlen(path);
+    for (char* line = info; line && *line;) {
+        char* end = std::strchr(line, '\n');
+        if (end) *end = '\0';
+        char* field = line;
+        for (int i = 0; i < 4 && field; ++i) field = std::strchr(field + 1, ' ');
+        if (field) {
+            char* point = field + 1;
+            if (char* stop = std::strchr(point, ' ')) *stop = '\0';
+            if (std::strncmp(point, path, length) == 0 && point[length] == '/' &&
+                mount(nullptr, point, nullptr, MS_BIND | MS_REMOUNT | MS_RDONLY | kept_flags(point), nullptr) != 0)
+                return fail(why, std::string("cannot make ") + point + " read-only");
+        }
+        line = end ? end + 1 : nullptr;
+    }
+    return true;
+}
+
 // Binds the host's `path` at the same path in the new root; a symlink is recreated, a missing path left out.
 bool bind(const std::string& path, bool read_only, std::string& why) {
     const std::string from = std::string(kOld) + path, to = std::string(kNew) + path;
@@ -97,9 +139,7 @@ bool bind(const std::string& path, bool read_only, std::string& why) {
         if (fd >= 0) close(fd);
     }
     if (mount(from.c_str(), to.c_str(), nullptr, MS_BIND | MS_REC, nullptr) != 0) return fail(why, "cannot bind " + path);
-    if (read_only && mount(nullptr, to.c_str(), nullptr, MS_BIND | MS_REMOUNT | MS_RDONLY | kept_flags(to.c_str()), nullptr) != 0)
-        return fail(why, "cannot make " + path + " read-only");
-    return true;
+    return !read_only || read_only_tree(to.c_str(), why);
 }
 
 bool tmpfs(const std::string& path, const std::string& options, std::string& why) {
@@ -135,9 +175,10 @@ bool build_root(const SandboxPlan& plan, std::string& why) {
     if (!make_dev(plan, why)) return false;
     if (!tmpfs(std::string(kNew) + "/tmp", plan.tmp_options, why) || !tmpfs(std::string(kNew) + "/var/tmp", plan.tmp_options, why))
         return false;
-    // After the private /tmp, so what is allowed under /tmp (a case's working folder) is bound on top of it.
+    // After the private /tmp, so what is allowed under /tmp (a build's working folder) is bound on top of it.
     for (const auto& b : plan.binds)
         if (!bind(b.path, b.read_only, why)) return false;
+    if (!plan.folder_options.empty() && !tmpfs(std::string(kNew) + plan.working_dir, plan.folder_options, why)) return false;
     const std::string proc = std::string(kNew) + "/proc";
     if (!make_dirs(proc)) return fail(why, "cannot make /proc");
     // Only this namespace's processes. Where the kernel refuses (a /proc with masked paths, as in Docker), /proc
@@ -221,27 +262,6 @@ int wait_for(pid_t pid) {
     return status;
 }
 
-// Tasks (threads count, as RLIMIT_NPROC counts them) that this uid runs now.
-long tasks_of_user(uid_t uid) {
-    long count = 0;
-    DIR* proc = opendir("/proc");
-    if (!proc) return 0;
-    while (const dirent* e = readdir(proc)) {
-        if (e->d_name[0] < '0' || e->d_name[0] > '9') continue;
-        char path[64];
-        std::snprintf(path, sizeof path, "/proc/%s/task", e->d_name);
-        struct stat st {};
-        if (stat(path, &st) != 0 || st.st_uid != uid) continue;
-        if (DIR* tasks = opendir(path)) {
-            while (const dirent* t = readdir(tasks))
-                if (t->d_name[0] != '.') ++count;
-            closedir(tasks);
-        }
-    }
-    closedir(proc);
-    return count;
-}
-
 // Absolute, with every folder on the way resolved; the last component is kept as it is, so a link stays a link
 // (a submission's view of the kit links to its shaders/ and data/, which are bound too).
 std::string host_path(const fs::path& p) {
@@ -253,8 +273,17 @@ std::string host_path(const fs::path& p) {
 
 }  // namespace
 
+// Linux counts RLIMIT_NPROC per user namespace from 5.14 on; before, per real uid across every namespace.
+static bool processes_counted_per_namespace() {
+    utsname name {};
+    if (uname(&name) != 0) return false;
+    int major = 0, minor = 0;
+    if (std::sscanf(name.release, "%d.%d", &major, &minor) != 2) return false;
+    return major > 5 || (major == 5 && minor >= 14);
+}
+
 SandboxPlan plan_sandbox(const SandboxPolicy& policy, const SandboxSupport& support, const fs::path& working_dir,
-                         double timeout_s) {
+                         double timeout_s, bool private_folder) {
     SandboxPlan plan;
     plan.namespaces = support.namespaces;
     // A user namespace maps only the grader's own uid; elsewhere a root grader runs student code as policy.uid.
@@ -269,7 +298,11 @@ SandboxPlan plan_sandbox(const SandboxPolicy& policy, const SandboxSupport& supp
     };
     for (const auto& p : policy.read_only) add(p, true);
     for (const auto& p : policy.read_write) add(p, false);
-    if (!working_dir.empty()) {
+    if (private_folder && support.allow_list()) {
+        plan.working_dir = kCaseFolder;
+        plan.folder_options = "size=" + std::to_string(policy.folder_bytes) + ",nr_inodes=" + std::to_string(policy.folder_files) +
+                              ",mode=0700" + (plan.as_root ? ",uid=" + std::to_string(plan.uid) + ",gid=" + std::to_string(plan.uid) : "");
+    } else if (!working_dir.empty()) {
         plan.working_dir = fs::weakly_canonical(working_dir).string();
         add(plan.working_dir, false);
     }
@@ -278,12 +311,15 @@ SandboxPlan plan_sandbox(const SandboxPolicy& policy, const SandboxSupport& supp
     if (fs::is_directory("/dev/dri", ec)) plan.devices.emplace_back("dri");
     for (auto it = fs::directory_iterator("/dev", ec); !ec && it != fs::directory_iterator(); it.increment(ec))
         if (it->path().filename().string().rfind("nvidia", 0) == 0) plan.devices.push_back(it->path().filename().string());
-    plan.tmp_options = "size=" + std::to_string(policy.tmp_bytes) + ",mode=1777";
+    plan.tmp_options = "size=" + std::to_string(policy.tmp_bytes) + ",nr_inodes=" + std::to_string(policy.tmp_files) + ",mode=1777";
     const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
     plan.cpu_seconds = static_cast<std::uint64_t>((policy.cpu_seconds > 0 ? policy.cpu_seconds : timeout_s * cores + 5) + 1);
     plan.file_size_bytes = policy.file_size_bytes;
     plan.address_space_bytes = policy.address_space_bytes;
-    plan.processes = static_cast<std::uint64_t>(policy.processes + (plan.as_root ? 0 : tasks_of_user(geteuid())));
+    // A uid of its own (root) or a user namespace of its own counts only the sandbox's processes; an older kernel
+    // counts a user namespace's against every process of the grader's uid, which are added.
+    const bool own_count = plan.as_root || (support.namespaces == SandboxSupport::Namespaces::AsUser && processes_counted_per_namespace());
+    plan.processes = static_cast<std::uint64_t>(policy.processes + (own_count ? 0 : tasks_of_user(geteuid())));
     return plan;
 }
 
@@ -328,6 +364,16 @@ bool enter_sandbox(const SandboxPlan& plan, std::string& why) {
     if (student > 0) {
         const int status = wait_for(student);
         (void)!write(status_pipe[1], &status, sizeof status);
+        // What the working folder holds now, from inside: it goes with the namespace, so only here can it be seen.
+        struct statvfs use {};
+        if (plan.report_fd >= 0 && !plan.folder_options.empty() && statvfs(plan.working_dir.c_str(), &use) == 0) {
+            const unsigned long long bytes = (use.f_blocks - use.f_bfree) * use.f_frsize, files = use.f_files - use.f_ffree;
+            // Full: less room left than one more block, or no entry left.
+            const int full = use.f_bavail == 0 || use.f_favail == 0;
+            char line[96];
+            const int n = std::snprintf(line, sizeof line, "folder %llu %llu %d\n", bytes, files, full);
+            (void)!write(plan.report_fd, line, static_cast<std::size_t>(n));
+        }
         _exit(0);  // every other process of the namespace ends here
     }
     close(status_pipe[1]);
@@ -360,10 +406,10 @@ SandboxSupport probe_sandbox(const SandboxPolicy& policy) {
     }
     for (const N kind : {geteuid() == 0 ? N::AsRoot : N::AsUser, N::AsUser}) {
         support.namespaces = kind;
-        const SandboxPlan plan = plan_sandbox(policy, support, dir, 10);
+        const SandboxPlan plan = plan_sandbox(policy, support, dir, 10, true);
         hand_over(dir, policy, support);
         int out[2];
-        if (pipe(out) != 0) break;
+        if (pipe2(out, O_CLOEXEC) != 0) break;
         const pid_t pid = fork();
         if (pid == 0) {
             dup2(out[1], STDERR_FILENO);
@@ -373,7 +419,12 @@ SandboxSupport probe_sandbox(const SandboxPolicy& policy) {
                 (void)!write(STDERR_FILENO, why.data(), why.size());
                 _exit(1);
             }
-            // Every allowed path that exists on the host must be readable inside.
+            // Every allowed path that exists on the host must be readable inside, and the working folder writable.
+            if (access(".", W_OK) != 0) {
+                const std::string what = "cannot write the working folder inside";
+                (void)!write(STDERR_FILENO, what.data(), what.size());
+                _exit(1);
+            }
             for (const auto& b : plan.binds)
                 if (b.exists && access(b.path.c_str(), R_OK) != 0) {
                     const std::string what = "cannot read " + b.path + " inside";

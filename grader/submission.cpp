@@ -2,6 +2,7 @@
 
 #include "common/app/kit_layout.h"
 #include "common/core/error.h"
+#include "common/io/folder_tree.h"
 
 #include <fstream>
 #include <sstream>
@@ -17,7 +18,12 @@ namespace {
 std::vector<std::string> copy_plain_tree(const fs::path& from, const fs::path& to) {
     std::vector<std::string> refused;
     fs::create_directories(to);
+    std::uintmax_t entries = 0, bytes = 0;
     for (auto it = fs::recursive_directory_iterator(from); it != fs::recursive_directory_iterator(); ++it) {
+        if (++entries > kMaxSubmissionEntries) {
+            refused.push_back("labs/: more than " + std::to_string(kMaxSubmissionEntries) + " files and folders; the rest is not taken");
+            break;
+        }
         const fs::path relative = it->path().lexically_relative(from);  // fs::relative would follow a link
         const fs::path target = to / relative;
         const fs::file_status status = it->symlink_status();
@@ -33,6 +39,8 @@ std::vector<std::string> copy_plain_tree(const fs::path& from, const fs::path& t
         } else if (fs::file_size(it->path()) > kMaxSubmissionFileBytes) {
             refused.push_back(name + ": " + std::to_string(fs::file_size(it->path())) + " bytes, over the " +
                               std::to_string(kMaxSubmissionFileBytes >> 20) + " MiB a file may have");
+        } else if ((bytes += fs::file_size(it->path())) > kMaxSubmissionBytes) {
+            refused.push_back(name + ": over the " + std::to_string(kMaxSubmissionBytes >> 20) + " MiB a submission's labs/ may hold in all");
         } else {
             fs::copy_file(it->path(), target, fs::copy_options::overwrite_existing);
         }
@@ -60,13 +68,14 @@ SubmissionBuild build_submission(const fs::path& submission, const fs::path& kit
     SubmissionBuild result;
     result.root = work_dir / "kit";
     result.bin_dir = work_dir / "build" / "bin";
-    fs::remove_all(work_dir);
+    remove_folder(work_dir);
     const std::vector<std::string> refused = copy_plain_tree(labs_dir, KitLayout{result.root}.labs());
     const KitLayout kit{fs::absolute(kit_root)}, copy{result.root};
     fs::create_directory_symlink(kit.shaders(), copy.shaders());
     fs::create_directory_symlink(kit.data(), copy.data());
     fs::create_directories(work_dir / "build");
-    if (limits.support && limits.sandbox) hand_over(work_dir, *limits.sandbox, *limits.support);
+    // Only the build folder becomes the sandbox user's: the copy of labs/ stays the grader's, read-only to builds and labs.
+    if (limits.support && limits.sandbox) hand_over(work_dir / "build", *limits.sandbox, *limits.support);
 
     std::vector<std::string> configure{GSV_CMAKE_COMMAND, "-S", kit.submission_project().string(),
                                        "-B", (work_dir / "build").string(), "-DGSV_KIT_BUILD=" + fs::absolute(kit_build).string(),
@@ -75,7 +84,7 @@ SubmissionBuild build_submission(const fs::path& submission, const fs::path& kit
         configure.push_back("-G");
         configure.push_back(generator);
     }
-    const ProcessResult configured = run_process(configure, work_dir, limits);
+    const ProcessResult configured = run_process(configure, work_dir / "build", limits);
     for (const auto& lab : labs) {
         LabBuild build;
         build.lab = lab;
@@ -83,7 +92,7 @@ SubmissionBuild build_submission(const fs::path& submission, const fs::path& kit
             build.log = "configuring the submission's build failed:\n" + configured.output;
         } else {
             const ProcessResult made = run_process({GSV_CMAKE_COMMAND, "--build", (work_dir / "build").string(), "--target", lab},
-                                                   work_dir, limits);
+                                                   work_dir / "build", limits);
             build.seconds = made.seconds;
             build.ok = made.exit_code == 0 && fs::exists(result.bin_dir / lab);
             build.log = made.output;

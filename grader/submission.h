@@ -13,8 +13,11 @@
 
 namespace gsv {
 
-// A submission's file may have at most this many bytes; a larger one is refused, named in the build log.
+// A submission's file may have at most this many bytes; a larger one is refused, named in the build log. Its labs/
+// may hold at most kMaxSubmissionEntries files and folders and kMaxSubmissionBytes in all; what is over is refused.
 inline constexpr std::uintmax_t kMaxSubmissionFileBytes = 8ull << 20;
+inline constexpr std::uintmax_t kMaxSubmissionEntries = 20000;
+inline constexpr std::uintmax_t kMaxSubmissionBytes = 256ull << 20;
 
 struct SubmissionBuild {
     std::filesystem::path root;     // GSV_ROOT for the student's binaries: labs/ copied, shaders/ and data/ the kit's

@@ -11,7 +11,8 @@
 #include "grader/array_golden.h"
 #include "grader/data_check.h"
 #include "grader/grade.h"
-#include "grader/lab_arrays.h"
+#include "common/io/handin.h"
+#include "common/io/little_endian.h"
 
 #include <cmath>
 #include <filesystem>
@@ -64,12 +65,6 @@ std::string golden_bytes(std::uint32_t count, std::uint32_t components, std::uin
 }
 
 // A lab's JSON report listing one array.
-Json report_listing(const std::string& name, const std::string& file, int components, long count) {
-    return parse_json("{\"timing\": {\"median_ms\": 1}, \"arrays\": [{\"name\": \"" + name + "\", \"file\": \"" + file +
-                          "\", \"components\": " + std::to_string(components) + ", \"count\": " + std::to_string(count) + "}]}",
-                      "out.json");
-}
-
 LabCases lab_checking_arrays() {
     LabCases lab;
     lab.lab = "lab99";
@@ -267,7 +262,8 @@ TEST_CASE("arrays: a corrupt, truncated or lying golden is one line naming the f
     CHECK(contains(test::gsv_error_message([&] { read_array_golden(dir.path("none.f32s"), "p"); }), "no such file"));
 }
 
-TEST_CASE("arrays: a lab's report and array files are read back strictly", "[grader][arrays]") {
+TEST_CASE("arrays: a lab's array files, and its array messages to the grader, are read back strictly", "[grader][arrays]") {
+    // Render mode outside the grader: a file beside the PNG.
     test::TempDir dir;
     const fs::path png = dir.path("out.png");
     const fs::path file = data_array_path(png, "positions");
@@ -275,57 +271,46 @@ TEST_CASE("arrays: a lab's report and array files are read back strictly", "[gra
     const DataArray positions = ramp("positions", 5);
     write_f32_file(file, positions.values);
     CHECK(fs::file_size(file) == 5 * 4 * 4);
+    CHECK(read_f32_file(file, 20) == positions.values);
 
-    const std::vector<DataArray> read = read_lab_arrays(report_listing("positions", file.string(), 4, 5), dir.path("out.json"), png);
-    REQUIRE(read.size() == 1);
-    CHECK(read[0].name == "positions");
-    CHECK(read[0].components == 4);
-    CHECK(read[0].values == positions.values);
-    CHECK(read_lab_arrays(parse_json(R"({"timing": {}})", "out.json"), dir.path("out.json"), png).empty());
-    // Relative to the lab's working folder, as a lab started there would write it.
-    CHECK(read_lab_arrays(report_listing("positions", "./out.positions.f32", 4, 5), dir.path("out.json"), png).size() == 1);
-
-    auto message = [&](const Json& report) {
-        return test::gsv_error_message([&] { read_lab_arrays(report, dir.path("out.json"), png); });
+    // Under the grader: a message on the hand-in socket, read whole or refused in one line.
+    const std::vector<std::uint8_t> good = array_payload("positions", 4, positions.values);
+    const HandinArray read = read_array_payload(good);
+    CHECK(read.name == "positions");
+    CHECK(read.components == 4);
+    CHECK(read.count == 5);
+    CHECK(read.values == positions.values);
+    auto message = [&](std::vector<std::uint8_t> bytes) { return test::gsv_error_message([&] { read_array_payload(bytes); }); };
+    auto with_u32 = [&](std::size_t at, std::uint32_t value) {
+        std::vector<std::uint8_t> bytes = good;
+        u32_to_le_bytes(value, bytes.data() + at);
+        return bytes;
     };
-    const std::string f = file.string();
-    const std::vector<std::pair<Json, std::string>> lies{
-        {report_listing("positions", f, 4, 6), "array 'positions': array file '" + f + "': 80 bytes, not the 24 float32 values"},
-        {report_listing("positions", f, 2, 10), "<no gsv::Error thrown>"},  // the same bytes, read another way
-        {report_listing("positions", f, 4, 2000000000), "more than the 67108864"},  // refused before the file is read
-        {report_listing("positions", f, 0, 5), "array 'positions' has 0 components, not 1..16"},
-        {report_listing("positions", f, 4, -1), "negative count"},
-        {report_listing("Positions", f, 4, 5), "arrays[0] has no valid name"},
-        {report_listing("../x", f, 4, 5), "arrays[0] has no valid name"},
-        {report_listing("positions", "/etc/passwd", 4, 5), "names file '/etc/passwd', not out.positions.f32 beside the image"},
-        {report_listing("positions", dir.path("../out.positions.f32").string(), 4, 5), "not out.positions.f32"},
-        {report_listing("velocities", f, 4, 5), "names file"},
-        {report_listing("velocities", data_array_path(png, "velocities").string(), 4, 5), "array 'velocities': array file '" + dir.path("out.velocities.f32").string() + "': no such file"},
-        {parse_json(R"({"arrays": {"name": "positions"}})", "out.json"), "out.json"},
-        {parse_json(R"({"arrays": [{"name": "positions", "file": "out.positions.f32", "components": 4}]})", "out.json"), "count"},
+    const std::size_t name_end = 4 + std::string("positions").size();
+    const std::vector<std::pair<std::vector<std::uint8_t>, std::string>> lies{
+        {with_u32(name_end + 4, 6), "6 x 4 floats declared, 80 bytes sent"},
+        {with_u32(name_end + 4, 2000000000), "more than the 67108864"},  // refused before anything is allocated
+        {with_u32(name_end, 0), "array 'positions' has 0 components, not 1..16"},
+        {with_u32(name_end, 17), "17 components"},
+        {with_u32(0, 41), "an array of 41 bytes"},
+        {with_u32(0, 400), "an array of 400 bytes"},
+        {array_payload("Positions", 4, positions.values), "not 1..40 of a-z, 0-9, '_'"},
+        {array_payload("../x", 4, positions.values), "not 1..40 of a-z, 0-9, '_'"},
+        {std::vector<std::uint8_t>(good.begin(), good.begin() + 6), "ends before its content does"},
+        {std::vector<std::uint8_t>(good.begin(), good.end() - 1), "floats declared"},
     };
-    for (const auto& [report, why] : lies) {
-        const std::string m = message(report);
+    for (const auto& [bytes, why] : lies) {
+        const std::string m = message(bytes);
         INFO(m);
         CHECK(contains(m, why));
         CHECK_FALSE(contains(m, "\n"));
-        if (why != "<no gsv::Error thrown>") CHECK(contains(m, "out.json"));
     }
-
-    // Listed twice; more arrays than the grader reads.
-    const Json twice = parse_json("{\"arrays\": [{\"name\": \"positions\", \"file\": \"" + f +
-                                      "\", \"components\": 4, \"count\": 5}, {\"name\": \"positions\", \"file\": \"" + f +
-                                      "\", \"components\": 4, \"count\": 5}]}",
-                                  "out.json");
-    CHECK(contains(message(twice), "array 'positions' is listed twice"));
-    std::string many = "{\"arrays\": [";
-    for (int i = 0; i < 17; ++i) many += std::string(i ? "," : "") + "{\"name\": \"a" + std::to_string(i) + "\"}";
-    CHECK(contains(message(parse_json(many + "]}", "out.json")), "lists 17 arrays, more than the 16"));
-
-    // A link where the file should be could point anywhere: refused.
-    fs::remove(file);
-    fs::create_symlink(dir.write("elsewhere.bin", std::string(80, '\0')), file);
-    CHECK(contains(message(report_listing("positions", f, 4, 5)), "not a plain file"));
+    // The header's size is checked before the payload is read: an array larger than all the grader takes never
+    // arrives, and neither does a message no lab sends.
+    CHECK(contains(test::gsv_error_message([&] { checked_payload_size(kTagArray, 0xffffffffu, 64, kMaxArrayFloats / 4); }),
+                   "over the"));
+    CHECK(contains(test::gsv_error_message([&] { checked_payload_size(HandinTag{'/', 'e', 't', 'c'}, 4, 64, 64); }),
+                   "which is no message of the hand-in"));
 }
 
 TEST_CASE("arrays: render mode's files, and a malformed readback is the lab's own error", "[grader][arrays]") {
@@ -472,38 +457,59 @@ TEST_CASE("arrays: the data check against goldens: the golden tolerance, a sampl
     CHECK(contains(broken.detail, "the golden array is unreadable: golden array '"));
 }
 
-// A "lab" that is a shell script: writes a fixed image, and the arrays of its fixture folder listed in its
-// report, as render mode would. Grades end to end without GL: the runner, the reading, the check, the goldens.
+// A "lab" that is a small Python program: hands a fixed image and the arrays of its fixture folder in over the
+// hand-in socket, as render mode does under the grader (common/io/handin.h), and answers timed frames with the same
+// image. Grades end to end without GL: the runner, the hand-in, the check, the goldens.
 namespace {
 
 struct FakeLab {
     Image image;
     std::map<std::string, DataArray> arrays;
-    std::map<std::string, std::string> listed_counts;  // name -> the count its report claims, where it lies
+    std::map<std::string, std::uint32_t> listed_counts;  // name -> the count its message claims, where it lies
 };
 
+void write_bytes(const fs::path& file, const std::vector<std::uint8_t>& bytes) {
+    std::ofstream(file, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+}
+
 void write_fake_lab(const fs::path& bin, const std::string& binary, const fs::path& fixture, const FakeLab& lab) {
+    fs::remove_all(fixture);
     fs::create_directories(fixture);
-    write_png(fixture / "image.png", lab.image);
-    std::string listing, copies;
+    write_bytes(fixture / "image.msg", image_payload(std::uint32_t(lab.image.width), std::uint32_t(lab.image.height), lab.image.rgba));
     for (const auto& [name, a] : lab.arrays) {
-        write_f32_file(fixture / (name + ".f32"), a.values);
-        const auto lie = lab.listed_counts.find(name);
-        const std::string count = lie != lab.listed_counts.end() ? lie->second : std::to_string(a.count());
-        listing += std::string(listing.empty() ? "" : ", ") + "{\"name\": \"" + name + "\", \"file\": \"$stem." + name +
-                   ".f32\", \"components\": " + std::to_string(a.components) + ", \"count\": " + count + "}";
-        copies += "cp '" + (fixture / (name + ".f32")).string() + "' \"$stem." + name + ".f32\"\n";
+        std::vector<std::uint8_t> payload = array_payload(name, std::uint32_t(a.components), a.values);
+        if (const auto lie = lab.listed_counts.find(name); lie != lab.listed_counts.end())
+            u32_to_le_bytes(lie->second, payload.data() + 4 + name.size() + 4);
+        write_bytes(fixture / (name + ".arr"), payload);
     }
     const fs::path script = bin / binary;
     fs::create_directories(bin);
-    // Like a lab under the grader: a frame mark on fd 3 before the timed frames and one after each.
-    std::ofstream(script) << "#!/bin/sh\n[ \"$1\" = list ] && exit 0\nout=; json=; frames=1\n"
-                          << "while [ $# -gt 0 ]; do case \"$1\" in --out) out=$2; shift;; --json) json=$2; shift;; "
-                             "--frames) frames=$2; shift;; esac; shift; done\n"
-                          << "i=0; while [ $i -le $frames ]; do printf f >&3; i=$((i + 1)); done\n"
-                          << "stem=${out%.png}\ncp '" << (fixture / "image.png").string() << "' \"$out\"\n"
-                          << copies << "cat > \"$json\" <<EOF\n{\"timing\": {\"median_ms\": 1}, \"arrays\": [" << listing
-                          << "]}\nEOF\n";
+    std::ofstream(script) << "#!/usr/bin/env python3\n"
+                             "import os, struct, sys\n"
+                             "if sys.argv[1:2] == ['list']: sys.exit(0)\n"
+                             "fixture = '" << fixture.string() << "'\n"
+                             "fd = int(os.environ['GSV_HANDIN_FD'])\n"
+                             "def send(tag, payload=b''):\n"
+                             "    data = tag + struct.pack('<I', len(payload)) + payload\n"
+                             "    while data: data = data[os.write(fd, data):]\n"
+                             "def read(n):\n"
+                             "    data = b''\n"
+                             "    while len(data) < n:\n"
+                             "        more = os.read(fd, n - len(data))\n"
+                             "        if not more: sys.exit(0)\n"
+                             "        data += more\n"
+                             "    return data\n"
+                             "for name in sorted(f for f in os.listdir(fixture) if f.endswith('.arr')):\n"
+                             "    send(b'ARR1', open(os.path.join(fixture, name), 'rb').read())\n"
+                             "image = open(os.path.join(fixture, 'image.msg'), 'rb').read()\n"
+                             "send(b'IMG1', image)\n"
+                             "send(b'RPT1', b'{\"timing\": {\"median_ms\": 1}}')\n"
+                             "send(b'RDY1')\n"
+                             "while True:\n"
+                             "    tag, size = read(4), struct.unpack('<I', read(4))[0]\n"
+                             "    payload = read(size)\n"
+                             "    if tag == b'END1': sys.exit(0)\n"
+                             "    send(b'FRM1', payload[:4] + image)\n";
     fs::permissions(script, fs::perms::owner_all);
 }
 
@@ -563,12 +569,11 @@ TEST_CASE("arrays: graded end to end through lab processes, live and against gol
     CHECK(contains(r.detail, "; arrays: velocities: 1 of 5,000"));
 
     FakeLab liar = reference;
-    liar.listed_counts["positions"] = "1000000";
+    liar.listed_counts["positions"] = 1000000;
     write_fake_lab(dir.path("bin"), "lab99", dir.path("fixture/student"), liar);
     r = grade_one(dir, false);
-    CHECK(r.status == CaseStatus::MissingOutput);
-    CHECK(contains(r.detail, "array 'positions'"));
-    CHECK(contains(r.detail, "not the 4000000 float32 values"));
+    CHECK(r.status == CaseStatus::Refused);
+    CHECK(contains(r.detail, "array 'positions': 1000000 x 4 floats declared, 80000 bytes sent"));
 
     // The goldens: a compact sample beside the image, then the self-check uses them.
     GradeOptions update;

@@ -53,9 +53,15 @@ TEST_CASE("grader: C++ faults in a submission each get their own status, the san
     } else {
         WARN("this platform refuses unshare: the namespace walls are not tested here");
     }
-    if (geteuid() == 0 && report.sandbox.find("runs as uid") != std::string::npos)
-        CHECK(probe_value(seen, "uid") == std::to_string(kSandboxUidBase));
-    CHECK(probe_value(seen, "home").find("gsv-case-") != std::string::npos);  // a fresh working folder
+    // The uid this run leased (grader/uid_lease.h), as the report names it.
+    if (const auto at = report.sandbox.find("runs as uid "); geteuid() == 0 && at != std::string::npos) {
+        const std::string uid = report.sandbox.substr(at + 12, report.sandbox.find(';', at) - at - 12);
+        CHECK(probe_value(seen, "uid") == uid);
+        CHECK(std::stoul(uid) >= kSandboxUidBase);
+    }
+    // A fresh working folder: a tmpfs of its own inside the walls, a temporary folder of the grader's without them.
+    if (report.sandbox.find("allow-list") != std::string::npos) CHECK(probe_value(seen, "home") == kCaseFolder);
+    else CHECK(probe_value(seen, "home").find("gsv-case-") != std::string::npos);
 }
 
 TEST_CASE("grader: a submission that hands in a golden image is caught", "[grader][submission]") {

@@ -2,6 +2,7 @@
 
 #include "common/core/error.h"
 
+#include <cstdio>
 #include <random>
 #include <sstream>
 
@@ -20,9 +21,19 @@ TemporaryFolder::TemporaryFolder(const std::string& prefix) {
     throw Error("cannot make a temporary folder in " + fs::temp_directory_path().string());
 }
 
+FolderUse TemporaryFolder::remove() {
+    if (path_.empty()) return {};
+    const FolderUse removed = remove_folder(path_);
+    path_.clear();
+    return removed;
+}
+
 TemporaryFolder::~TemporaryFolder() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
+    try {
+        remove();
+    } catch (const Error& e) {
+        std::fprintf(stderr, "gsv: %s\n", e.what());
+    }
 }
 
 }  // namespace gsv

@@ -2,7 +2,6 @@
 
 #include "common/gl/gl.h"
 #include "common/core/error.h"
-#include "common/timing/frame_marks.h"
 
 #include <algorithm>
 #include <chrono>
@@ -39,7 +38,7 @@ TimingStats summarize(std::vector<double> samples_ms) {
     return stats;
 }
 
-TimingStats time_frames(const std::function<void()>& frame, int warmup, int frames, const FrameMarks* marks) {
+TimingStats time_frames(const std::function<void()>& frame, int warmup, int frames) {
     glFinish();  // nothing queued before us may be charged to the first frame
     for (int i = 0; i < warmup; ++i) {
         frame();
@@ -47,14 +46,12 @@ TimingStats time_frames(const std::function<void()>& frame, int warmup, int fram
     }
     std::vector<double> samples;
     samples.reserve(static_cast<std::size_t>(std::max(frames, 0)));
-    if (marks) marks->mark();
     for (int i = 0; i < frames; ++i) {
         const double t0 = now_seconds();
         frame();
         glFinish();
         samples.push_back(1000.0 * (now_seconds() - t0));
-        if (marks) marks->mark();
-    }
+        }
     return summarize(std::move(samples));
 }
 
