@@ -247,11 +247,13 @@ TEST_CASE("grader: a hostile submission learns nothing, earns nothing it did not
     CHECK(probe(seen("stretched"), "loopback") == "unreachable");
     CHECK(probe(seen("stretched"), "internet") == "unreachable");
 
-    // The working folder: 2.4 GB asked for, its limit given, and its own status; a deep tree gone with the case.
+    // The working folder: 100,000 files and 2.4 GB asked for, its limits given, and its own status; a deep tree gone
+    // with the case.
     INFO("backlit: " << image.at("backlit").string_at("detail") << "\n" << seen("backlit"));
     CHECK(image.at("backlit").string_at("status") == "wrote too much");
     CHECK(image.at("backlit").string_at("detail").find("the working folder holds 128 MiB") != std::string::npos);
     CHECK(std::stol(probe(seen("backlit"), "folder-fill-mib")) <= 128);
+    CHECK(std::stol(probe(seen("backlit"), "folder-files")) < 4096);  // of the 100,000 asked for
     CHECK(probe(seen("gooch-torus"), "deep-tree") == "3000");
     // Links planted where files used to be read, then no hand-in: no output, quickly, nothing followed.
     INFO("renormalize: " << image.at("renormalize").string_at("detail"));
