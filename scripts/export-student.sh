@@ -7,8 +7,9 @@
 # --labs releases only those labs (their labs/ folder, case file, golden images and golden arrays); a course
 # that hands labs out week by week exports again as each opens. Later labs give earlier answers away: lab 03's
 # shaders trace lab 02's LIC streamlines.
-# Left out: solutions/, tests/ (they need the solutions), grader/hidden/ (hidden grading cases), .github/ (the
-# instructor's workflows), build*/ folders, grade-results/, .git, and whatever git ignores. In a git checkout
+# Left out: solutions/, reference/ (the instructor's CPU yardsticks, which answer TODOs), tests/ (they need the
+# solutions), grader/hidden/ (hidden grading cases), .github/ (the instructor's workflows), build*/ folders,
+# grade-results/, .git, and whatever git ignores. In a git checkout
 # only the files git tracks are exported (their working-tree content); --include-untracked adds the untracked
 # files that git does not ignore. Outside git, every file is copied but those excluded above and those matching
 # the kit's top-level .gitignore (simple patterns only).
@@ -29,7 +30,7 @@ while [ $# -gt 0 ]; do
   case "$1" in
     --include-untracked) include_untracked=1 ;;
     --labs) [ $# -ge 2 ] || usage; release_labs=$2; shift ;;
-    -h|--help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "export-student: unknown option '$1'" >&2; usage ;;
     *) [ -z "$dest" ] || usage; dest=$1 ;;
   esac
@@ -85,7 +86,7 @@ excluded() {
     case "$1" in "$w"*) return 0 ;; esac
   done
   case "$1" in
-    solutions|solutions/*|tests|tests/*|grader/hidden|grader/hidden/*|.github/*) return 0 ;;
+    solutions|solutions/*|reference|reference/*|tests|tests/*|grader/hidden|grader/hidden/*|.github/*) return 0 ;;
     build*/*|*/build*/*) return 0 ;;
     grade-results/*|*/grade-results/*) return 0 ;;
     .git|.git/*|*/.git|*/.git/*) return 0 ;;
@@ -155,7 +156,7 @@ else
   while IFS= read -r -d '' f; do
     f=${f#./}
     ignored "$f" || add "$f"
-  done < <(cd "$root" && find . \( -name .git -o -path ./solutions -o -path ./tests -o -path ./grader/hidden \
+  done < <(cd "$root" && find . \( -name .git -o -path ./solutions -o -path ./reference -o -path ./tests -o -path ./grader/hidden \
                                    -o -path ./.github -o -name 'build*' -type d -o -name grade-results \) -prune \
                                 -o \( -type f -o -type l \) -print0)
 fi

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# The student edition works: `scripts/kit export-student` leaves out solutions/, tests/ and grader/hidden/; the
-# export configures and builds on its own; its self-check (golden references) gives the shipped lab01 starter 0
+# The student edition works: `scripts/kit export-student` leaves out solutions/, reference/, tests/ and grader/hidden/;
+# the export configures and builds on its own; its self-check (golden references) gives the shipped lab01 starter 0
 # points and the reference solution, copied into the export's labs/, full marks. Slow: it builds the export
 # (lab01 and gsv-grade only, 2 cores). Exit 0: pass, 1: fail.
 set -euo pipefail
@@ -24,7 +24,7 @@ run() { "$@" >"$log" 2>&1; }
 step "export"
 run "$root/scripts/kit" export-student --include-untracked "$kit" || fail "scripts/kit export-student failed"
 tail -n 1 "$log"
-for p in solutions tests grader/hidden build grade-results .git; do
+for p in solutions reference tests grader/hidden build grade-results .git; do
   [ ! -e "$kit/$p" ] || fail "$p was exported"
 done
 for p in labs/lab01_gooch grader/golden/lab01 grader/cases/lab01.json README.md .github/workflows/self-check.yml \

@@ -1,12 +1,12 @@
 // Lab 06's data layer: Volume and its GL_LINEAR emulation, the NIfTI-1 reader and writer, the
 // Marschner-Lobb signal with its exact gradient and ray hits, ray/box spans, the gradient modules' CPU
-// reference, and the Sobel gradient volume of the precomputed module.
+// reference (reference/volume/gradient.h), and the Sobel gradient volume of the precomputed module.
 #include "catch.hpp"
 
 #include "common/core/error.h"
 #include "common/core/splitmix64.h"
 #include "support/geometry/ray_box.h"
-#include "support/volume/gradient.h"
+#include "reference/volume/gradient.h"
 #include "support/volume/marschner_lobb.h"
 #include "support/volume/nifti_file.h"
 #include "support/volume/sobel_gradient.h"
