@@ -12,10 +12,12 @@
 #include "common/gl/gl.h"
 #include "common/gl/texture.h"
 #include "particle_buffers.h"
-#include "particle_measure.h"
 #include "particle_stepper.h"
 #include "support/particles/particle_grid.h"
 #include "support/particles/particle_motion.h"
+#ifdef GSV_HAVE_REFERENCE
+#include "reference/lab05_particles/particle_measure.h"  // the instructor's measurements (cmake/labs.cmake)
+#endif
 
 #include <algorithm>
 #include <cmath>
@@ -105,6 +107,8 @@ public:
     }
 
     std::vector<std::string> sweep_reference() const override { return {"time_step=0.00625", "integrator=rk4"}; }
+#ifdef GSV_HAVE_REFERENCE
+    // Against the instructor's CPU integrators (reference/); a student's sweep has the images' errors and times only.
     std::string sweep_error_column() const override { return "pos_err_rms"; }
     std::string sweep_reference_name() const override {
         return "positions (pos_err): the same particles in double precision, RK4 in substeps of at most 0.001, far below "
@@ -116,6 +120,7 @@ public:
         state_.invalidate();  // measuring restarted the buffers
         return metrics;
     }
+#endif
 
     // The speed colours as speed_color.glsl gives them, and what a particle faster than the scale gets.
     std::optional<gsv::Legend> legend(gsv::LabKit& kit) override {

@@ -3,7 +3,7 @@
 #include "common/core/error.h"
 #include "common/core/number_text.h"
 #include "common/scene/transforms.h"
-#include "support/volume/gradient.h"
+#include "support/volume/sobel_gradient.h"
 
 #include <sstream>
 #include <vector>
@@ -12,14 +12,8 @@ namespace lab06 {
 
 const gsv::Texture& VolumeData::gradients() {
     if (!gradients_.id()) {
-        std::vector<float> g;
-        g.reserve(volume.values.size() * 3);
-        for (int k = 0; k < volume.nz; ++k)
-            for (int j = 0; j < volume.ny; ++j)
-                for (int i = 0; i < volume.nx; ++i) {
-                    const glm::dvec3 d = gsv::central_difference(volume, i, j, k);
-                    g.insert(g.end(), {float(d.x), float(d.y), float(d.z)});
-                }
+        // Computed once, so it can afford the smoother 27-voxel Sobel operator.
+        const std::vector<float> g = gsv::sobel_gradient_volume(volume);
         gradients_ = gsv::Texture::create_3d(volume.nx, volume.ny, volume.nz, gsv::TexelFormat::RGB32F, g.data());
     }
     return gradients_;
