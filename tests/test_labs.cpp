@@ -2,7 +2,7 @@
 #include "catch.hpp"
 #include "test_support.h"
 
-#include "common/app/case_file.h"
+#include "common/params/case_file.h"
 #include "common/app/sweep_report.h"
 #include "gl_fixture.h"
 #include "grader_fixture.h"

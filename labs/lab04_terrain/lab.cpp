@@ -4,7 +4,7 @@
 // from the heights around it (normal.glsl). Beside it, real geometry: an N x N grid displaced by the same
 // heights, to see what the trick saves and where it shows.
 #include "common/app/app.h"
-#include "common/app/change_tracker.h"
+#include "common/params/change_tracker.h"
 #include "common/app/legend_probe.h"
 #include "common/core/number_text.h"
 #include "common/gl/gl.h"

@@ -5,7 +5,7 @@
 // does the same update in double precision (common/particle_*) to say how wrong the GPU's float steps
 // are, and in float on every core to say whether the GPU is worth it.
 #include "common/app/app.h"
-#include "common/app/change_tracker.h"
+#include "common/params/change_tracker.h"
 #include "common/app/legend_probe.h"
 #include "common/core/error.h"
 #include "common/gl/compute.h"

@@ -1,11 +1,9 @@
 #include "lab_processor.h"
 
 #include "common/core/error.h"
-#include "common/core/number_text.h"
 #include "common/scene/transforms.h"
 #include "support/volume/sobel_gradient.h"
 
-#include <sstream>
 #include <vector>
 
 namespace lab06 {
@@ -22,42 +20,6 @@ const gsv::Texture& VolumeData::gradients() {
 const FrameView& LabProcessor::view() const {
     if (!view_ || !view_->kit) throw gsv::Error(describe() + " has no frame to draw (set_view was not called)");
     return *view_;
-}
-
-double LabProcessor::number(const std::string& name, double min, double max) const {
-    const std::string& text = property(name);
-    const std::optional<double> value = gsv::parse_finite_number(text);
-    if (!value || *value < min || *value > max) {
-        std::ostringstream range;
-        range << "[" << min << ", " << max << "]";
-        throw gsv::Error(this->name() + "." + name + " = '" + text + "' is not a number in " + range.str());
-    }
-    return *value;
-}
-
-bool LabProcessor::flag(const std::string& name) const {
-    const std::string& text = property(name);
-    if (text == "on" || text == "true" || text == "1") return true;
-    if (text == "off" || text == "false" || text == "0") return false;
-    throw gsv::Error(this->name() + "." + name + " = '" + text + "' is not on or off");
-}
-
-glm::vec3 LabProcessor::vec3(const std::string& name) const {
-    const std::string& text = property(name);
-    glm::vec3 v(0.0f);
-    std::stringstream in(text);
-    std::string part;
-    int count = 0;
-    while (std::getline(in, part, ',')) {
-        const std::optional<double> x = gsv::parse_finite_number(part);
-        if (!x || count == 3) {
-            count = 4;
-            break;
-        }
-        v[count++] = static_cast<float>(*x);
-    }
-    if (count != 3) throw gsv::Error(this->name() + "." + name + " = '" + text + "' is not three numbers x,y,z");
-    return v;
 }
 
 void LabProcessor::set_transforms(const gsv::ShaderProgram& program, const glm::mat4& model) const {

@@ -8,7 +8,8 @@
 namespace lab06 {
 
 gsv::SweepMetrics compare_shaders(RayTraversal& raycaster) {
-    const std::string chosen = raycaster.property("shader");
+    // Set on its parameters, not with set_param: not marked as set, so the lab's parameter still leads.
+    const std::string chosen = raycaster.params().get_choice("shader");
     gsv::RaycastConfig dvr;
     dvr.gradient = gsv::RaycastConfig::Gradient::Central;
     dvr.classification = gsv::RaycastConfig::Classification::TransferFunction;
@@ -18,7 +19,7 @@ gsv::SweepMetrics compare_shaders(RayTraversal& raycaster) {
     if (gsv::effective_config(raycaster.config()) == dvr) shaders.push_back("handwritten");
     std::vector<gsv::TimedWork> work;
     for (const auto& shader : shaders)
-        work.push_back({[&raycaster, shader] { raycaster.set_property("shader", shader); }, [&raycaster] { raycaster.process(); }});
+        work.push_back({[&raycaster, shader] { raycaster.params().set("shader", shader); }, [&raycaster] { raycaster.process(); }});
     gsv::SweepMetrics m;
     try {
         const gsv::InterleavedTimes times = gsv::time_interleaved(work, gsv::kCompareWarmup, gsv::kCompareFrames, gsv::kCompareRounds);
@@ -30,10 +31,10 @@ gsv::SweepMetrics compare_shaders(RayTraversal& raycaster) {
             gsv::add_ratio(m, "specialised_over_handwritten", times.ratio(0, 2));
         }
     } catch (...) {
-        raycaster.set_property("shader", chosen);
+        raycaster.params().set("shader", chosen);
         throw;
     }
-    raycaster.set_property("shader", chosen);
+    raycaster.params().set("shader", chosen);
     return m;
 }
 

@@ -3,7 +3,7 @@
 // streamlines (reference/flow/lic_reference.h), the instructor's yardstick of the lab's LIC loop (L02-T1 to
 // L02-T5). Compiled into lab02_solution only; the student's sweep measures against a long midpoint LIC instead.
 #include "common/app/app.h"
-#include "common/app/change_tracker.h"
+#include "common/params/change_tracker.h"
 #include "reference/flow/lic_reference.h"
 
 #include <functional>

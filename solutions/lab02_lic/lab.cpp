@@ -4,7 +4,7 @@
 // The lesson is in the shaders (lic.frag, streamline.glsl); this file makes the two textures LIC reads
 // (white noise or a photograph, and the flow in texels per step) and draws one full-screen quad.
 #include "common/app/app.h"
-#include "common/app/change_tracker.h"
+#include "common/params/change_tracker.h"
 #include "common/gl/gl.h"
 #include "common/gl/gpu_mesh.h"
 #include "common/gl/texture.h"

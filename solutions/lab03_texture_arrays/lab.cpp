@@ -4,7 +4,7 @@
 // playhead with a vec3 lookup whose third component is the layer. Beside it the same slices in a 3D
 // texture (filtering runs across slices) and in T separate textures (one texture unit each).
 #include "common/app/app.h"
-#include "common/app/change_tracker.h"
+#include "common/params/change_tracker.h"
 #include "common/gl/framebuffer.h"
 #include "common/gl/gl.h"
 #include "common/gl/gpu_mesh.h"
