@@ -165,14 +165,6 @@ TEST_CASE("lab01: core and compat profiles, EGL and OSMesa backends give the sam
 
 namespace {
 
-// A submission whose labs/ are a lab's reference solution, built by the grader like any other.
-fs::path solution_submission(const std::string& lab, const std::string& lab_dir) {
-    const auto submission = test::temp_dir("grade-solution-submission-" + lab);
-    fs::create_directories(submission / "labs");
-    fs::copy(test::source_root() / "solutions" / lab_dir, submission / "labs" / lab_dir, fs::copy_options::recursive);
-    return submission;
-}
-
 GradeOptions grading_options(const std::string& lab) {
     GradeOptions options;
     options.kit_root = test::source_root();
@@ -185,14 +177,13 @@ GradeOptions grading_options(const std::string& lab) {
 // The solution scores full marks against the goldens and live (hidden cases included), and the shipped starter fails
 // every TODO. Timing is graded apart (below), alone: here the labs run beside other tests.
 void solution_full_marks_starter_zero(const std::string& lab) {
-    const std::string lab_dir = test::mutant_spec(lab).string_at("lab_dir");
     GradeOptions options = grading_options(lab);
     options.timing = false;
     options.seed = 11;
     // The live solution run and the starter's share their references: one render of each case.
     options.reference_cache = std::make_shared<ReferenceCache>();
     for (bool self_check : {true, false}) {
-        options.submission = solution_submission(lab, lab_dir);
+        options.submission = test::solution_submission(lab, "grade-solution-submission-" + lab);
         options.self_check = self_check;
         // Relative, as `scripts/kit grade` passes it: the lab processes run in per-case folders.
         const fs::path out = test::temp_dir(self_check ? "grade-golden-" + lab : "grade-live-" + lab);
@@ -244,7 +235,7 @@ TEST_CASE("every lab: the solution's timed cases pass their timing against itsel
   for (const std::string lab : labs_on_gl41()) {
     INFO(lab);
     GradeOptions options = grading_options(lab);
-    options.submission = solution_submission(lab, test::mutant_spec(lab).string_at("lab_dir"));
+    options.submission = test::solution_submission(lab, "grade-timing-submission-" + lab);
     options.hidden = false;
     for (const GradeCase& c : load_lab_cases(test::source_root() / "grader" / "cases" / (lab + ".json")).cases)
         if (c.timing.points > 0) options.cases.push_back(c.name);

@@ -39,11 +39,7 @@ namespace {
 
 // Graded on ES against the goldens, full marks; then the same build on the core profile, image for image.
 void es_full_marks_and_core_images(const std::string& lab) {
-    // A submission whose labs/ are the lab's reference solution, built by the grader like any student's.
-    const auto submission = test::temp_dir("es-solution-submission-" + lab);
-    fs::create_directories(submission / "labs");
-    const std::string lab_dir = test::mutant_spec(lab).string_at("lab_dir");
-    fs::copy(test::source_root() / "solutions" / lab_dir, submission / "labs" / lab_dir, fs::copy_options::recursive);
+    const auto submission = test::solution_submission(lab, "es-solution-submission-" + lab);
     GradeOptions options;
     options.kit_root = test::source_root();
     options.bin_dir = test::bin_dir();
