@@ -21,6 +21,14 @@ ImageTolerance tolerance_from(const Json& j) {
     t.max_differing_fraction = j.number_at("max_differing_fraction");
     if (t.max_channel_diff < 0 || t.max_channel_diff > 255 || t.max_differing_fraction < 0 || t.max_differing_fraction > 1)
         throw Error(j.source_name() + ": tolerance out of range (max_channel_diff 0..255, max_differing_fraction 0..1)");
+    if (const Json* n = j.find("neighbourhood"); n && !n->is_null()) {
+        const double r = n->is_number() ? n->as_number() : -1;
+        if (!(r >= 0 && r <= kMaxNeighbourhood && r == std::floor(r)))
+            throw Error(j.source_name() + ":" + std::to_string(n->line()) + ": " + n->key_path() + " is " + n->dump(0) +
+                        "; a neighbourhood is a whole number of pixels 0.." + std::to_string(kMaxNeighbourhood) +
+                        " (0: each pixel at its own place; 1: matched within one pixel)");
+        t.neighbourhood = static_cast<int>(r);
+    }
     return t;
 }
 
@@ -136,6 +144,7 @@ LabCases load_lab_cases(const std::filesystem::path& file) {
             throw Error(file.string() + ": tolerance has 'arrays_golden' but no 'arrays' (the live tolerance)");
         lab.golden_array_tolerance = array_tolerance_from(tolerance.object_at("arrays_golden"));
     }
+    lab.arrays_are = root.string_or("arrays_are", lab.arrays_are);
     lab.timeout_s = root.number_or("timeout_s", 60);
     if (const Json* timing = root.find("timing")) {
         if (timing->contains("size")) parse_size(timing->string_at("size"), file.string(), lab.timing_width, lab.timing_height);

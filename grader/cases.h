@@ -49,6 +49,9 @@ struct LabCases {
     // only images are. Against goldens "arrays_golden" where given, else "arrays".
     std::optional<ArrayTolerance> live_array_tolerance, golden_array_tolerance;
     bool checks_arrays() const { return live_array_tolerance.has_value(); }
+    // "arrays_are": what the arrays describe, a plural noun for messages ("particles match the reference; the
+    // picture differs ..." where only the image fails).
+    std::string arrays_are = "the arrays";
     double timeout_s = 60;
     ImageTolerance tolerance(const GradeCase& c, bool live) const {
         return live ? c.live_tolerance.value_or(live_tolerance) : c.golden_tolerance.value_or(golden_tolerance);

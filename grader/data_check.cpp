@@ -35,6 +35,10 @@ void apply_data_check(CaseResult& r, const DataCheck& data) {
     r.data = data;
     if (data.passed()) {
         if (r.status == CaseStatus::Passed && !data.arrays.empty()) r.detail += "; arrays match: " + names_of(data);
+        // The numbers are right and only the picture is not: say so first, since it changes where to look (how they
+        // are drawn, or where this GPU places a point), not what was computed.
+        if (r.status == CaseStatus::WrongImage && !data.arrays.empty())
+            r.detail = data.describes + " match the reference (" + names_of(data) + "); the picture differs: " + r.detail;
         return;
     }
     std::string wrong;
@@ -63,7 +67,9 @@ void check_case_data(const LabCases& lab, const GradeCase& c, const LabRun& stud
         for (const auto& a : reference.arrays) expected.push_back(expected_from(a));
     }
     if (student.status != CaseStatus::Passed) return;
-    apply_data_check(r, compare_data(student.arrays, expected, *lab.live_array_tolerance, "live"));
+    DataCheck data = compare_data(student.arrays, expected, *lab.live_array_tolerance, "live");
+    data.describes = lab.arrays_are;
+    apply_data_check(r, data);
 }
 
 void check_case_data(const LabCases& lab, const GradeCase& c, const LabRun& student, const std::filesystem::path& kit,
@@ -85,7 +91,9 @@ void check_case_data(const LabCases& lab, const GradeCase& c, const LabRun& stud
         }
     }
     if (student.status != CaseStatus::Passed) return;
-    apply_data_check(r, compare_data(student.arrays, expected, *lab.golden_array_tolerance, "golden"));
+    DataCheck data = compare_data(student.arrays, expected, *lab.golden_array_tolerance, "golden");
+    data.describes = lab.arrays_are;
+    apply_data_check(r, data);
 }
 
 }  // namespace gsv

@@ -5,7 +5,8 @@
 // Order: the image is checked first, then the numbers, whatever the image's outcome. A case passes only if both
 // pass. When the image failed (wrong, blank or copied image) its status stands, since the picture is what a
 // student sees and debugs first, and what is wrong with the numbers is appended to its detail; when only the
-// numbers are wrong, the case is WrongData. A reference without an array the case checks (a live reference that
+// numbers are wrong, the case is WrongData; when only the picture is wrong, its detail begins by saying the numbers
+// match ("particles match the reference (positions, velocities); the picture differs: ..."). A reference without an array the case checks (a live reference that
 // did not hand it in, a golden that is missing or unreadable) is the kit's fault: ReferenceFailed, as for images.
 #include "grader/cases.h"
 #include "grader/grade_result.h"

@@ -545,11 +545,14 @@ void Grading::check_image(const LabCases& lab, const GradeCase& c, const LabRun&
         r.status = CaseStatus::Passed;
         r.points = c.points;
         r.detail = diff.max_channel_diff == 0 ? "identical" : "max diff " + std::to_string(diff.max_channel_diff);
+        // Matched within a neighbourhood, a 0 means every pixel found its match near by, not that none moved.
+        if (tolerance.neighbourhood > 0)
+            r.detail = (diff.max_channel_diff == 0 ? "every pixel " : r.detail + ", ") + neighbourhood_text(tolerance.neighbourhood);
         return;
     }
     r.detail = diff.summary();
     if (!diff.size_mismatch) {
-        write_png(dir / "diff.png", difference_heatmap(actual, expected, tolerance.max_channel_diff));
+        write_png(dir / "diff.png", difference_heatmap(actual, expected, tolerance.max_channel_diff, tolerance.neighbourhood));
         r.diff_png = fs::relative(dir / "diff.png", out_).generic_string();
     }
     // The starter's magenta where the reference has none: the TODO is open, however much else is drawn.

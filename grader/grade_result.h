@@ -55,6 +55,7 @@ struct DataCheck {
     std::string reference;        // "live" or "golden" (a golden holds a sample of each array)
     ArrayTolerance tolerance;
     std::vector<ArrayDiff> arrays;
+    std::string describes = "the arrays";  // the lab's "arrays_are": "particles"
     bool passed() const;          // every array within the tolerance (vacuously when none is checked)
 };
 

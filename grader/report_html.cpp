@@ -96,6 +96,11 @@ void image_numbers(std::ostringstream& out, const CaseResult& r) {
     out << "<table class=\"numbers\">"
         << "<tr><th>max channel diff</th><td>" << im.max_channel_diff << " (allowed " << im.tolerance.max_channel_diff
         << ")</td></tr>"
+        << "<tr><th>placement</th><td>"
+        << (im.tolerance.neighbourhood > 0 ? html(neighbourhood_text(im.tolerance.neighbourhood)) +
+                                                 " (each pixel against the best of its neighbours, both ways)"
+                                           : std::string("each pixel at its own place"))
+        << "</td></tr>"
         << "<tr><th>differing pixels</th><td>" << im.differing_pixels << " of " << im.total_pixels << " ("
         << percent(im.differing_pixels, im.total_pixels) << ", allowed "
         << fixed(100.0 * im.tolerance.max_differing_fraction, 3) << "%)</td></tr>"

@@ -34,6 +34,8 @@ Json image_json(const ImageCheck& image) {
     Json tolerance = Json::object();
     tolerance["max_channel_diff"] = image.tolerance.max_channel_diff;
     tolerance["max_differing_fraction"] = number_or_null(image.tolerance.max_differing_fraction);
+    // 0: each pixel against the one at its own place; r: matched within r pixels, both ways (image_compare.h).
+    tolerance["neighbourhood"] = image.tolerance.neighbourhood;
     j["tolerance"] = tolerance;
     j["max_channel_diff"] = image.max_channel_diff;
     j["differing_pixels"] = image.differing_pixels;

@@ -379,6 +379,22 @@ TEST_CASE("arrays: the data check after the image, live: wrong data, the image's
     CHECK(both.status == CaseStatus::WrongImage);
     CHECK(both.detail.rfind("max diff 200; arrays: velocities: 1 of 100", 0) == 0);
 
+    // Only the picture failed: the detail says first that the numbers are right, in the lab's own word for them.
+    CaseResult picture = image_passed();
+    picture.status = CaseStatus::WrongImage;
+    picture.points = 0;
+    picture.detail = "max diff 200, 12 of 65536 px differ";
+    check_case_data(lab, c, run_with(reference.arrays), reference, picture);
+    CHECK(picture.status == CaseStatus::WrongImage);
+    CHECK(picture.detail == "the arrays match the reference (positions, velocities); the picture differs: max diff 200, 12 of 65536 px differ");
+    LabCases particles = lab;
+    particles.arrays_are = "particles";
+    CaseResult named = image_passed();
+    named.status = CaseStatus::WrongImage;
+    named.detail = "max diff 200";
+    check_case_data(particles, c, run_with(reference.arrays), reference, named);
+    CHECK(named.detail == "particles match the reference (positions, velocities); the picture differs: max diff 200");
+
     // The case checks only what it lists.
     c.arrays = std::vector<std::string>{"positions"};
     CaseResult listed = image_passed();

@@ -299,3 +299,47 @@ TEST_CASE("cases: a reference that fails to render ends grading with status 2, n
     CHECK(graded.output.find("the reference failed on 1 checks") != std::string::npos);
     CHECK(graded.output.find("reference failed") != std::string::npos);
 }
+
+TEST_CASE("cases: a tolerance's neighbourhood is read per lab and per case, a bad one refused naming the file and value", "[grader][cases]") {
+    test::TempDir dir;
+    auto file = [&](const std::string& golden_extra, const std::string& case_tolerance) {
+        return dir.write("grader/cases/lab05.json", R"({"lab": "lab05", "size": "8x8", "tolerance": {
+            "live": {"max_channel_diff": 2, "max_differing_fraction": 0.001},
+            "golden": {"max_channel_diff": 24, "max_differing_fraction": 0.01)" + golden_extra + R"(}},
+            "cases": [{"name": "abc", "todo": "L05-T3", "settings": []},
+                      {"name": "ragged", "todo": "L05-T2", "settings": [])" + case_tolerance + "}]}");
+    };
+    // None given: 0, each pixel at its own place, as every lab but 05 has it.
+    const LabCases plain = load_lab_cases(file("", ""));
+    CHECK(plain.golden_tolerance.neighbourhood == 0);
+    CHECK(plain.live_tolerance.neighbourhood == 0);
+    for (const char* lab : {"lab01", "lab02", "lab03", "lab04", "lab06", "lab07"}) {
+        const LabCases shipped = load_lab_cases(test::source_root() / "grader" / "cases" / (std::string(lab) + ".json"));
+        CHECK(shipped.golden_tolerance.neighbourhood == 0);
+        for (const auto& c : shipped.cases) CHECK(shipped.tolerance(c, false).neighbourhood == 0);
+    }
+    // Lab 05's particles are matched within a pixel against the goldens, never live (same machine, same placement).
+    const LabCases lab05 = load_lab_cases(test::source_root() / "grader" / "cases" / "lab05.json");
+    CHECK(lab05.golden_tolerance.neighbourhood == 1);
+    CHECK(lab05.live_tolerance.neighbourhood == 0);
+    CHECK(lab05.arrays_are == "particles");
+
+    const LabCases per_lab = load_lab_cases(file(R"(, "neighbourhood": 1)", ""));
+    CHECK(per_lab.golden_tolerance.neighbourhood == 1);
+    CHECK(per_lab.tolerance(per_lab.cases[1], false).neighbourhood == 1);
+    CHECK(per_lab.tolerance(per_lab.cases[1], true).neighbourhood == 0);
+    const LabCases per_case = load_lab_cases(file("", R"(, "tolerance": {"golden": {"max_channel_diff": 24, "max_differing_fraction": 0.02, "neighbourhood": 2}})"));
+    CHECK(per_case.tolerance(per_case.cases[0], false).neighbourhood == 0);
+    CHECK(per_case.tolerance(per_case.cases[1], false).neighbourhood == 2);
+
+    for (const std::string bad : {"1.5", "-1", "4", "\"one\"", "true"}) {
+        INFO(bad);
+        const auto path = file(R"(, "neighbourhood": )" + bad, "");
+        const std::string m = test::gsv_error_message([&] { load_lab_cases(path); });
+        CHECK(m.find("lab05.json:3: tolerance.golden.neighbourhood is " + bad + "; a neighbourhood is a whole number of pixels 0..3") !=
+              std::string::npos);
+        CHECK(m.find('\n') == std::string::npos);
+    }
+    const auto in_case = file("", R"(, "tolerance": {"golden": {"max_channel_diff": 24, "max_differing_fraction": 0.02, "neighbourhood": 0.5}})");
+    CHECK(test::gsv_error_message([&] { load_lab_cases(in_case); }).find("cases[1].tolerance.golden.neighbourhood is 0.5") != std::string::npos);
+}

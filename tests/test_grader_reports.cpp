@@ -254,6 +254,12 @@ TEST_CASE("grader reports: report.json carries every measurement", "[grader]") {
     CHECK(shadow.object_at("image").number_at("psnr") == 9.5);
     CHECK(shadow.object_at("image").int_at("differing_pixels") == 3);
     CHECK(shadow.object_at("image").object_at("tolerance").number_at("max_differing_fraction") == 0.001);
+    CHECK(shadow.object_at("image").object_at("tolerance").int_at("neighbourhood") == 0);
+    GradeReport matched = report;
+    matched.results.at(1).image.tolerance.neighbourhood = 1;
+    CHECK(parse_json(report_json(matched), "report.json").array_at("results").at(1).object_at("image").object_at("tolerance").int_at("neighbourhood") == 1);
+    CHECK(contains(html_report(matched, dir.path()), "<tr><th>placement</th><td>matched within 1 px (each pixel against the best of its neighbours, both ways)</td></tr>"));
+    CHECK(contains(html_report(report, dir.path()), "<tr><th>placement</th><td>each pixel at its own place</td></tr>"));
     CHECK(shadow.object_at("image").object_at("diff_box").int_at("x1") == 1);
     CHECK(shadow.string_at("diff_png") == "lab01/shadow/diff.png");
 

@@ -276,6 +276,96 @@ TEST_CASE("image: the difference map shows every pixel over the tolerance bright
     CHECK_THROWS_AS(gsv::difference_heatmap(gradient(2, 2), gradient(3, 2), 0), gsv::Error);
 }
 
+// A dark background with bright one-pixel points, as lab 05 draws particles: the neighbourhood comparison
+// (ImageTolerance::neighbourhood) forgives where a point lands, never a point missing or of the wrong colour.
+namespace {
+
+gsv::Image points(const std::vector<std::pair<int, int>>& at, std::uint8_t r = 250, std::uint8_t g = 200, std::uint8_t b = 40) {
+    gsv::Image image = filled(16, 12, 10, 12, 20, 255);
+    for (const auto& [x, y] : at) {
+        std::uint8_t* p = image.at(x, y);
+        p[0] = r, p[1] = g, p[2] = b;
+    }
+    return image;
+}
+
+}  // namespace
+
+TEST_CASE("image: a point moved by one pixel passes within a neighbourhood of 1 and fails without", "[unit]") {
+    const gsv::Image golden = points({{5, 5}, {10, 3}, {0, 0}, {15, 11}});
+    for (const auto& [dx, dy] : std::vector<std::pair<int, int>>{{1, 0}, {0, 1}, {-1, 1}, {1, 1}}) {
+        INFO("moved by " << dx << "," << dy);
+        // The corner points move inwards, so every point stays in the picture.
+        const gsv::Image moved = points({{5 + dx, 5 + dy}, {10 + dx, 3 + dy}, {std::max(0, dx), std::max(0, dy)},
+                                         {std::min(15, 15 + dx), std::min(11, 11 + dy)}});
+        const gsv::ImageDiff exact = gsv::compare_images(moved, golden, {2, 0.0});
+        CHECK(exact.differing_pixels >= 4);
+        CHECK_FALSE(exact.within({2, 0.0}));
+        const gsv::ImageDiff near = gsv::compare_images(moved, golden, {2, 0.0, 1});
+        CHECK(near.neighbourhood == 1);
+        CHECK(near.differing_pixels == 0);
+        CHECK(near.max_channel_diff == 0);
+        CHECK(near.within({2, 0.0, 1}));
+        CHECK(near.summary().find("0 of 192 px differ (0.00%), matched within 1 px") != std::string::npos);
+    }
+    // Two pixels is not one: a neighbourhood of 1 does not reach, 2 does.
+    const gsv::Image far = points({{7, 5}, {12, 3}, {2, 0}, {13, 11}});
+    CHECK_FALSE(gsv::compare_images(far, golden, {2, 0.0, 1}).within({2, 0.0, 1}));
+    CHECK(gsv::compare_images(far, golden, {2, 0.0, 2}).within({2, 0.0, 2}));
+}
+
+TEST_CASE("image: a missing point, an extra point or a point of the wrong colour fails within a neighbourhood", "[unit]") {
+    const gsv::Image golden = points({{5, 5}, {10, 3}});
+    // Missing: the golden's point finds no match in the actual image, though the actual background matches the
+    // golden's background beside it (one direction alone would pass this).
+    const gsv::ImageDiff missing = gsv::compare_images(points({{5, 5}}), golden, {2, 0.0, 1});
+    CHECK(missing.differing_pixels == 1);
+    CHECK(missing.diff_x0 == 10);
+    CHECK(missing.diff_y0 == 3);
+    CHECK(missing.max_channel_diff == 240);
+    CHECK_FALSE(missing.within({2, 0.0, 1}));
+    // Extra: the actual point finds no match in the golden.
+    CHECK_FALSE(gsv::compare_images(points({{5, 5}, {10, 3}, {1, 8}}), golden, {2, 0.0, 1}).within({2, 0.0, 1}));
+    // The wrong colour, in place or moved by a pixel: no neighbour has it.
+    for (const int dx : {0, 1}) {
+        const gsv::ImageDiff recoloured = gsv::compare_images(points({{5 + dx, 5}, {10 + dx, 3}}, 250, 120, 40), golden, {2, 0.0, 1});
+        INFO("moved by " << dx);
+        CHECK(recoloured.differing_pixels >= 2);
+        CHECK(recoloured.max_channel_diff == 80);
+        CHECK_FALSE(recoloured.within({2, 0.0, 1}));
+        CHECK(recoloured.within({80, 0.0, 1}));
+    }
+    // The map shows the missing point, matched the same way.
+    const gsv::Image heat = gsv::difference_heatmap(points({{5, 5}}), golden, 2, 1);
+    CHECK(heat.at(10, 3)[0] == 255);
+    CHECK(heat.at(5, 5)[0] != 255);
+}
+
+TEST_CASE("image: a neighbourhood of 0 is the exact comparison, result for result", "[unit]") {
+    gsv::Image expected = gradient(23, 17);
+    gsv::Image actual = expected;
+    for (int i = 0; i < 60; ++i) actual.at((i * 7) % 23, (i * 5) % 17)[i % 4] = static_cast<std::uint8_t>((i * 37) % 256);
+    const gsv::ImageDiff plain = gsv::compare_images(actual, expected, {3, 0.05});
+    const gsv::ImageDiff zero = gsv::compare_images(actual, expected, {3, 0.05, 0});
+    CHECK(zero.neighbourhood == 0);
+    CHECK(zero.max_channel_diff == plain.max_channel_diff);
+    CHECK(zero.differing_pixels == plain.differing_pixels);
+    CHECK(zero.pixels_by_max_diff == plain.pixels_by_max_diff);
+    CHECK(zero.summary() == plain.summary());
+    CHECK(zero.summary().find("matched") == std::string::npos);
+    // The differences are the plain per-pixel maximum.
+    const std::vector<std::uint8_t> d = gsv::matched_differences(actual, expected, 0);
+    long over = 0;
+    for (const auto v : d) over += v > 3;
+    CHECK(over == plain.differing_pixels);
+    // Judged with another neighbourhood than it was compared with: refused, not silently wrong.
+    CHECK_THROWS_AS(plain.within({3, 0.05, 1}), gsv::Error);
+    // A neighbourhood never makes a difference larger than the exact one.
+    const gsv::ImageDiff one = gsv::compare_images(actual, expected, {3, 0.05, 1});
+    CHECK(one.differing_pixels <= plain.differing_pixels);
+    CHECK(one.max_channel_diff <= plain.max_channel_diff);
+}
+
 TEST_CASE("image: is_blank is true only when every pixel is the same", "[unit]") {
     gsv::Image image = filled(6, 5, 12, 34, 56, 255);
     CHECK(gsv::is_blank(image));

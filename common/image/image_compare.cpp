@@ -127,9 +127,39 @@ double ssim_luma(const Image& a, const Image& b) {
     return ssim_sum / (double(valid_w) * valid_h);
 }
 
+std::string neighbourhood_text(int neighbourhood) {
+    return neighbourhood > 0 ? "matched within " + std::to_string(neighbourhood) + " px" : "";
+}
+
+std::vector<std::uint8_t> matched_differences(const Image& actual, const Image& expected, int neighbourhood) {
+    require_same_size(actual, expected, "matched_differences");
+    const int w = actual.width, h = actual.height;
+    std::vector<std::uint8_t> d(static_cast<std::size_t>(w) * h);
+    const int r = std::max(0, neighbourhood);
+    // The smallest difference between `of`'s pixel at (x, y) and any pixel of `in` within r.
+    const auto best_match = [&](const Image& of, const Image& in, int x, int y) {
+        const std::uint8_t* p = of.at(x, y);
+        int best = pixel_max_diff(p, in.at(x, y));
+        for (int qy = std::max(0, y - r); qy <= std::min(h - 1, y + r) && best > 0; ++qy)
+            for (int qx = std::max(0, x - r); qx <= std::min(w - 1, x + r) && best > 0; ++qx)
+                best = std::min(best, pixel_max_diff(p, in.at(qx, qy)));
+        return best;
+    };
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            // Both ways: the actual pixel has a match in the expected image, and the expected pixel has one in the
+            // actual image. One way alone would match a missing point against the background beside it.
+            const int one_way = r == 0 ? pixel_max_diff(actual.at(x, y), expected.at(x, y)) : best_match(actual, expected, x, y);
+            const int both = r == 0 || one_way == 255 ? one_way : std::max(one_way, best_match(expected, actual, x, y));
+            d[static_cast<std::size_t>(y) * w + x] = static_cast<std::uint8_t>(both);
+        }
+    return d;
+}
+
 ImageDiff compare_images(const Image& actual, const Image& expected,
                          const ImageTolerance& tolerance) {
     ImageDiff diff;
+    diff.neighbourhood = std::max(0, tolerance.neighbourhood);
     diff.actual_width = actual.width, diff.actual_height = actual.height;
     diff.expected_width = expected.width, diff.expected_height = expected.height;
     if (actual.width != expected.width || actual.height != expected.height) {
@@ -141,6 +171,7 @@ ImageDiff compare_images(const Image& actual, const Image& expected,
     }
 
     diff.total_pixels = long(actual.width) * actual.height;
+    const std::vector<std::uint8_t> matched = matched_differences(actual, expected, diff.neighbourhood);
     double squared_sum = 0;
     for (int y = 0; y < actual.height; ++y) {
         for (int x = 0; x < actual.width; ++x) {
@@ -150,7 +181,7 @@ ImageDiff compare_images(const Image& actual, const Image& expected,
                 const double d = double(a[c]) - double(e[c]);
                 squared_sum += d * d;
             }
-            const int d = pixel_max_diff(a, e);
+            const int d = matched[static_cast<std::size_t>(y) * actual.width + x];
             ++diff.pixels_by_max_diff[d];
             diff.max_channel_diff = std::max(diff.max_channel_diff, d);
             if (d > tolerance.max_channel_diff) {
@@ -172,11 +203,18 @@ ImageDiff compare_images(const Image& actual, const Image& expected,
     return diff;
 }
 
-bool ImageDiff::within(const ImageTolerance& tolerance) const {
-    if (size_mismatch) return false;
+long ImageDiff::pixels_over(int max_channel_diff) const {
     long over = 0;
-    for (int d = std::clamp(tolerance.max_channel_diff + 1, 0, 256); d < 256; ++d)
-        over += pixels_by_max_diff[d];
+    for (int d = std::clamp(max_channel_diff + 1, 0, 256); d < 256; ++d) over += pixels_by_max_diff[d];
+    return over;
+}
+
+bool ImageDiff::within(const ImageTolerance& tolerance) const {
+    if (std::max(0, tolerance.neighbourhood) != neighbourhood)
+        throw Error("image comparison: judged with a neighbourhood of " + std::to_string(tolerance.neighbourhood) +
+                    " but compared with " + std::to_string(neighbourhood) + " (compare again with that neighbourhood)");
+    if (size_mismatch) return false;
+    const long over = pixels_over(tolerance.max_channel_diff);
     // A budget is written as a decimal fraction, and e.g. 0.29 * 100 is 28.999999999999996 in
     // binary; the tiny relative slack lets exactly the written number of pixels pass.
     const double fraction = std::max(0.0, tolerance.max_differing_fraction);
@@ -192,6 +230,7 @@ std::string ImageDiff::summary() const {
     const double percent = total_pixels > 0 ? 100.0 * double(differing_pixels) / double(total_pixels) : 0.0;
     int n = std::snprintf(line, sizeof line, "max diff %d, %ld of %ld px differ (%.2f%%)",
                           max_channel_diff, differing_pixels, total_pixels, percent);
+    if (neighbourhood > 0) n += std::snprintf(line + n, sizeof line - n, ", %s", neighbourhood_text(neighbourhood).c_str());
     if (differing_pixels > 0)
         n += std::snprintf(line + n, sizeof line - n, " in [%d,%d]-[%d,%d]", diff_x0, diff_y0,
                            diff_x1, diff_y1);
@@ -203,13 +242,14 @@ std::string ImageDiff::summary() const {
     return line;
 }
 
-Image difference_heatmap(const Image& actual, const Image& expected, int max_channel_diff) {
+Image difference_heatmap(const Image& actual, const Image& expected, int max_channel_diff, int neighbourhood) {
     require_same_size(actual, expected, "difference_heatmap");
     Image heatmap(actual.width, actual.height);
+    const std::vector<std::uint8_t> matched = matched_differences(actual, expected, neighbourhood);
     const std::size_t pixel_count = heatmap.rgba.size() / 4;
     for (std::size_t p = 0; p < pixel_count; ++p) {
         const std::uint8_t* e = expected.rgba.data() + p * 4;
-        const int over = pixel_max_diff(actual.rgba.data() + p * 4, e) - max_channel_diff;
+        const int over = int(matched[p]) - max_channel_diff;
         std::uint8_t* out = heatmap.rgba.data() + p * 4;
         if (over > 0) {
             out[0] = 255;
