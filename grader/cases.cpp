@@ -127,6 +127,12 @@ GradeCase case_from(const Json& c, const std::string& file) {
 
 }  // namespace
 
+ImageTolerance cross_implementation_tolerance(const ImageTolerance& own) {
+    ImageTolerance t = own;
+    t.max_differing_fraction = std::min(1.0, kCrossImplementationBudget * own.max_differing_fraction);
+    return t;
+}
+
 LabCases load_lab_cases(const std::filesystem::path& file) {
     const Json root = read_json_file(file);
     LabCases lab;

@@ -63,6 +63,15 @@ struct LabCases {
     std::vector<GradeCase> cases;
 };
 
+// The looser bar a failing self-check case is held to before it is called a difference between GPUs rather than a
+// wrong image: the case's own golden tolerance with kCrossImplementationBudget times its pixel budget. The margin table
+// (grader/margins.h) holds every case to correct renders under half the budget on every implementation measured and
+// every must-fail mutant over this many budgets, so a render between one and this many budgets away is one no known
+// bug gives. (Matching within a pixel as well would be looser still, but lets known bugs by: on lab 03's LIC, whose
+// noise matches itself a pixel off, two slices averaged came to 17% of such a bar.)
+inline constexpr double kCrossImplementationBudget = 1.5;
+ImageTolerance cross_implementation_tolerance(const ImageTolerance& own);
+
 // Each throws gsv::Error naming the file, the member and what is wrong.
 LabCases load_lab_cases(const std::filesystem::path& file);
 // Appends the hidden cases of `file`, drawn from `seed`: a case with "count": n becomes n cases

@@ -2,6 +2,7 @@
 
 #include "common/core/error.h"
 #include "common/io/json.h"
+#include "grader/report_format.h"
 
 #include <algorithm>
 #include <cmath>
@@ -94,6 +95,12 @@ public:
         const Json* timing = report_ ? report_->find("timing") : nullptr;
         const Json* ms = timing && timing->is_object() ? timing->find("median_ms") : nullptr;
         return ms && ms->is_number() && std::isfinite(ms->as_number()) && ms->as_number() >= 0 ? std::min(ms->as_number(), 1e6) : 0;
+    }
+    // GL_RENDERER as the lab reports it: one line of at most 200 bytes, whatever a student's lab wrote there.
+    std::string renderer() const {
+        const Json* gl = report_ ? report_->find("gl") : nullptr;
+        const Json* name = gl && gl->is_object() ? gl->find("renderer") : nullptr;
+        return name && name->is_string() ? one_line(name->as_string(), 200) : "";
     }
     bool answered_all() const { return !challenges_ || frames.size() == challenges_->size(); }
 
@@ -216,6 +223,7 @@ LabRun LabRunner::render(const std::string& binary, const LabCases& lab, const G
     }
     run.image = std::move(conversation.image);
     run.reported_ms = conversation.reported_frame_ms();
+    run.renderer = conversation.renderer();
     if (run.image->width != width || run.image->height != height)
         run.detail = "the image is " + std::to_string(run.image->width) + "x" + std::to_string(run.image->height) + ", not " +
                      std::to_string(width) + "x" + std::to_string(height);

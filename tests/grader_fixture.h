@@ -8,6 +8,7 @@
 
 #include "common/io/json.h"
 #include "grader/grade.h"
+#include "grader/mutant_kit.h"
 
 #include <algorithm>
 #include <functional>
@@ -17,15 +18,9 @@
 namespace gsv::test {
 
 // Labs with a tests/mutants/<lab>.json, in order.
-inline std::vector<std::string> labs_with_mutants() {
-    std::vector<std::string> labs;
-    for (const auto& e : std::filesystem::directory_iterator(source_root() / "tests" / "mutants"))
-        if (e.path().extension() == ".json") labs.push_back(e.path().stem().string());
-    std::sort(labs.begin(), labs.end());
-    return labs;
-}
+inline std::vector<std::string> labs_with_mutants() { return gsv::labs_with_mutants(source_root()); }
 
-inline Json mutant_spec(const std::string& lab) { return read_json_file(source_root() / "tests" / "mutants" / (lab + ".json")); }
+inline Json mutant_spec(const std::string& lab) { return read_mutant_spec(source_root(), lab); }
 
 // A submission (in a fresh temp folder named after `name`) whose labs/ hold the lab's reference solution, for the
 // grader to build like any student's.
@@ -38,25 +33,7 @@ inline std::filesystem::path solution_submission(const std::string& lab, const s
 }
 
 // Applies one {find, replace} edit (or each of "edits") to the file named by `edit`'s "file".
-inline void apply_edits(const std::filesystem::path& lab_folder, const Json& edit) {
-    const std::filesystem::path file = lab_folder / edit.string_at("file");
-    std::string text = read_text(file);
-    auto one = [&](const Json& e) {
-        const std::string find = e.string_at("find");
-        const auto at = text.find(find);
-        if (at == std::string::npos) FAIL("'" << find << "' not found in " << file);
-        std::string replace = e.string_at("replace");
-        for (auto kit = replace.find("@KIT@"); kit != std::string::npos; kit = replace.find("@KIT@"))
-            replace.replace(kit, 5, source_root().string());
-        text.replace(at, find.size(), replace);
-    };
-    if (const Json* edits = edit.find("edits")) {
-        for (const Json& e : edits->as_array()) one(e);
-    } else {
-        one(edit);
-    }
-    std::ofstream(file, std::ios::binary) << text;
-}
+inline void apply_edits(const std::filesystem::path& lab_folder, const Json& edit) { apply_mutant_edits(lab_folder, edit, source_root()); }
 
 inline GradeOptions instructor_options(const std::string& lab, const std::filesystem::path& out) {
     GradeOptions options;
@@ -75,27 +52,13 @@ inline GradeOptions instructor_options(const std::string& lab, const std::filesy
 // reference reads the untouched solution in the source tree.
 class EditedKit {
 public:
-    EditedKit(const std::string& lab, const std::string& lab_dir, const Json& edit) : EditedKit(lab, lab_dir, [&](const std::filesystem::path& folder) {
-        // Only shader edits: the solution's binary is copied, not rebuilt, so a C++ edit would change nothing
-        // and its mutant would "pass". C++ faults go through a Submission, which the grader builds.
-        const std::string file = edit.string_or("file", "");
-        if (file.size() > 4 && (file.substr(file.size() - 4) == ".cpp" || file.substr(file.size() - 2) == ".h"))
-            throw Error("mutant '" + edit.string_at("name") + "' edits " + file +
-                        ": C++ is not rebuilt for mutants; plant C++ faults in a submission");
-        apply_edits(folder, edit);
-    }) {}
+    EditedKit(const std::string& lab, const std::string& lab_dir, const Json& edit) : lab_(lab) {
+        make_edited_kit(dir_.path(), source_root(), bin_dir(), lab, lab_dir, edit);
+    }
     // `edit` changes the copy of solutions/<lab_dir> (shaders only: the binary is the solution's).
     EditedKit(const std::string& lab, const std::string& lab_dir, const std::function<void(const std::filesystem::path&)>& edit)
         : lab_(lab) {
-        const auto root = dir_.path("kit");
-        std::filesystem::create_directories(root / "solutions");
-        // The public files are the kit's own, linked (the sandbox binds what they lead to).
-        std::filesystem::create_directory_symlink(source_root() / "shaders", root / "shaders");
-        std::filesystem::create_directory_symlink(source_root() / "data", root / "data");
-        std::filesystem::copy(source_root() / "solutions" / lab_dir, root / "solutions" / lab_dir, std::filesystem::copy_options::recursive);
-        edit(root / "solutions" / lab_dir);
-        std::filesystem::create_directories(dir_.path("bin"));
-        std::filesystem::copy_file(bin_dir() / (lab + "_solution"), dir_.path("bin") / lab);
+        make_edited_kit(dir_.path(), source_root(), bin_dir(), lab, lab_dir, edit);
     }
     std::filesystem::path out() const { return dir_.path("out"); }
 

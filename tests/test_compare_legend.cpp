@@ -140,7 +140,7 @@ TEST_CASE("compare: no reference, a demo without a golden image, changed setting
     const std::vector<Bad> bad = {
         {alone, {"compare"}, 1, "no reference to compare with: there is no lab01_solution beside"},
         {alone, {"compare", "--case", "coarse"}, 1, "no golden image"},
-        {alone, {"compare", "--case", "phong", "--set", "shininess=8"}, 1, "not with shininess changed"},
+        {alone, {"compare", "--case", "phong", "--set", "shininess=16"}, 1, "not with shininess changed"},
         {alone, {"compare", "--case", "phong", "--size", "64x64"}, 1, "differs from the golden image's 256x256"},
         {alone, {"compare", "--case", "nosuch"}, 2, "unknown case 'nosuch'"},
         {gsv::test::bin_dir() / "lab01", {"compare", "--case", "phong", "--legend"}, 2, "--legend is for render and animate"},

@@ -14,10 +14,6 @@ using namespace gsv;
 
 namespace {
 
-bool is_cpp(const std::string& file) {
-    return file.size() > 2 && (file.substr(file.size() - 4) == ".cpp" || file.substr(file.size() - 2) == ".h");
-}
-
 // Every TODO id of a lab's reference, with the files that hold its blocks.
 std::map<std::string, std::vector<std::string>> todo_files(const std::string& lab_dir) {
     std::map<std::string, std::vector<std::string>> files;
@@ -67,7 +63,7 @@ void mutation_test(const std::string& lab) {
         };
         std::vector<Mutant> mutants;
         for (const auto& [todo, files] : todos) {
-            if (std::any_of(files.begin(), files.end(), is_cpp)) continue;  // C++ TODOs: the test below builds them
+            if (std::any_of(files.begin(), files.end(), is_cpp_file)) continue;  // C++ TODOs: the test below builds them
             mutants.push_back({todo, todo + " left undone", [todo = todo, files = files](const std::filesystem::path& folder) {
                                    // Read before the stream truncates the file: `a << b` runs a first.
                                    for (const auto& file : files) {
@@ -83,7 +79,7 @@ void mutation_test(const std::string& lab) {
         }
         for (const auto& [todo, files] : todos) {
             INFO(lab << ": classic bugs of " << todo << " in tests/mutants/" << lab << ".json");
-            if (!std::any_of(files.begin(), files.end(), is_cpp)) CHECK(classic[todo] >= 3);
+            if (!std::any_of(files.begin(), files.end(), is_cpp_file)) CHECK(classic[todo] >= 3);
         }
         for (const bool self_check : {true, false}) {
             int killed = 0;
@@ -230,7 +226,7 @@ TEST_CASE("every C++ TODO: left undone or with a classic bug it loses points, li
         const std::string lab_dir = spec.string_at("lab_dir");
         std::vector<std::string> cpp_todos;
         for (const auto& [todo, files] : todo_files(lab_dir))
-            if (std::any_of(files.begin(), files.end(), is_cpp)) cpp_todos.push_back(todo);
+            if (std::any_of(files.begin(), files.end(), is_cpp_file)) cpp_todos.push_back(todo);
         if (cpp_todos.empty()) continue;
         const Json none = Json::array();
         const Json& cpp_mutants = spec.contains("cpp_mutants") ? spec.array_at("cpp_mutants") : none;
@@ -240,7 +236,7 @@ TEST_CASE("every C++ TODO: left undone or with a classic bug it loses points, li
         std::filesystem::create_directories(folder.parent_path());
         std::filesystem::copy(test::source_root() / "solutions" / lab_dir, folder, std::filesystem::copy_options::recursive);
         for (const auto& e : std::filesystem::directory_iterator(folder))
-            if (is_cpp(e.path().filename().string())) {
+            if (is_cpp_file(e.path().filename().string())) {
                 const std::string switched = switch_blocks(test::read_text(e.path()), e.path().filename().string(), cpp_mutants);
                 std::ofstream(e.path(), std::ios::binary) << switched;
             }

@@ -7,10 +7,23 @@
 #include "common/shader/param_uniforms.h"
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 
 namespace gsv {
+
+std::optional<ShaderDefine> texel_snap_define() {
+    const char* value = std::getenv("GSV_TEXEL_SNAP");
+    if (!value || !*value) return std::nullopt;
+    const std::string text = value;
+    char* end = nullptr;
+    const long steps = std::strtol(text.c_str(), &end, 10);
+    if (*end != '\0' || steps < 2 || steps > 65536)
+        throw Error("GSV_TEXEL_SNAP=" + text + ": the steps per texel texture coordinates are snapped to, a whole number "
+                    "2..65536 (256: GPUs' 8-bit filter weights); unset it for unsnapped lookups");
+    return ShaderDefine{"GSV_TEXEL_SNAP", std::to_string(steps)};
+}
 
 LabKit::LabKit(Context& context, Params& params, const Assets& assets, Profile profile)
     : context_(context), params_(params), assets_(assets), profile_(profile),
@@ -19,6 +32,7 @@ LabKit::LabKit(Context& context, Params& params, const Assets& assets, Profile p
           options.profile = profile;
           options.version = context.effective_version();
           options.include_dirs = assets.shader_include_dirs();
+          if (const auto snap = texel_snap_define()) options.defines.push_back(*snap);
           return options;
       }()) {}
 

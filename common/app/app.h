@@ -99,6 +99,11 @@ public:
     virtual std::optional<Image> inspect_image(LabKit&, const std::string&) { return std::nullopt; }
 };
 
+// The margin table's 8-bit filter stand-in (shaders/gsv/texel_snap.glsl): GSV_TEXEL_SNAP=N in the environment makes
+// every lab shader snap its texture coordinates to 1/N of a texel; none when it is unset. Throws gsv::Error, one line,
+// on a value that is not a whole number 2..65536.
+std::optional<ShaderDefine> texel_snap_define();
+
 // What a lab gets from the framework.
 class LabKit {
 public:

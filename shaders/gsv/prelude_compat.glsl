@@ -13,3 +13,6 @@
 #define aNormal gl_Normal
 #define aTexCoord0 gl_MultiTexCoord0
 #endif
+
+// Off unless the margin table's 8-bit filter stand-in asks for it (GSV_TEXEL_SNAP).
+#include "gsv/texel_snap.glsl"

@@ -13,3 +13,6 @@ in vec4 aVertex;
 in vec3 aNormal;
 in vec4 aTexCoord0;
 #endif
+
+// Off unless the margin table's 8-bit filter stand-in asks for it (GSV_TEXEL_SNAP).
+#include "gsv/texel_snap.glsl"
