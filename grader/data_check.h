@@ -6,7 +6,8 @@
 // pass. When the image failed (wrong, blank or copied image) its status stands, since the picture is what a
 // student sees and debugs first, and what is wrong with the numbers is appended to its detail; when only the
 // numbers are wrong, the case is WrongData; when only the picture is wrong, its detail begins by saying the numbers
-// match ("particles match the reference (positions, velocities); the picture differs: ..."). A reference without an array the case checks (a live reference that
+// match ("particles match the reference (positions, velocities); the picture differs: ..."). A picture within the
+// margin renderers differ by (GpuMargin) with wrong numbers is WrongData. A reference without an array the case checks (a live reference that
 // did not hand it in, a golden that is missing or unreadable) is the kit's fault: ReferenceFailed, as for images.
 #include "grader/cases.h"
 #include "grader/grade_result.h"

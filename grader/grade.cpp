@@ -9,6 +9,7 @@
 #include "grader/cases.h"
 #include "grader/data_check.h"
 #include "grader/draw.h"
+#include "grader/golden_renderers.h"
 #include "grader/process.h"
 #include "grader/report_format.h"
 #include "grader/run_lab.h"
@@ -81,6 +82,9 @@ private:
     void update_golden_arrays(const LabCases& lab, const GradeCase& c, const LabRun& ref, CaseResult& r);
     void check_image(const LabCases& lab, const GradeCase& c, const LabRun& student, const Image& expected, bool live,
                      CaseResult& r);
+    // A wrong image against a golden made on another renderer, within the margin renderers differ by: say so.
+    void call_a_gpu_margin(const LabCases& lab, const GradeCase& c, const LabRun& student, const Image& expected,
+                           const ImageTolerance& tolerance, CaseResult& r) const;
     CaseResult check_timing(const LabCases& lab, const GradeCase& c, const CaseResult& image);
     // The public case whose committed golden `image` is pixel for pixel; empty if none.
     std::string golden_copied(const std::string& lab, const std::string& case_name, const Image& image);
@@ -100,6 +104,7 @@ private:
     std::optional<UidLease> uid_lease_;  // a root grader's uid for student code, held until grading ends
     LabRunner student_, reference_;
     std::map<std::string, std::map<std::string, Image>> goldens_;  // lab -> case -> image
+    std::map<std::string, std::string> rendered_goldens_;          // --update-goldens: lab -> the renderer it ran on
     int total_ = 0;
 };
 
@@ -292,6 +297,11 @@ GradeReport Grading::run() {
     const bool any_live = std::find(live_.begin(), live_.end(), true) != live_.end();
     report_.mode = options_.update_goldens ? "update goldens" : any_live ? "instructor" : "self-check";
     report_.profile = profile_name(options_.profile);
+    if (!options_.update_goldens) {
+        const auto renderers = read_golden_renderers(KitLayout{kit_}.golden_renderers());
+        for (std::size_t i = 0; i < labs_.size(); ++i)
+            if (const auto it = renderers.find(labs_[i].lab); !live_[i] && it != renderers.end()) report_.golden_renderers[it->first] = it->second;
+    }
     fs::create_directories(out_);
 
     fs::path student_bin = bin_, student_root = kit_;
@@ -327,6 +337,13 @@ GradeReport Grading::run() {
         for (const auto& b : report_.builds)
             if (b.lab == labs_[i].lab) build = &b;
         grade_lab(labs_[i], live_[i], build);
+    }
+    // The goldens just written, and the renderer they came from, beside the record of the other labs'.
+    if (!rendered_goldens_.empty()) {
+        const fs::path record = KitLayout{kit_}.golden_renderers();
+        auto renderers = read_golden_renderers(record);
+        for (const auto& [lab, renderer] : rendered_goldens_) renderers[lab] = renderer;
+        write_golden_renderers(record, renderers);
     }
     report_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return report_;
@@ -410,6 +427,7 @@ void Grading::update_golden(const LabCases& lab, const GradeCase& c) {
         fs::create_directories(golden.parent_path());
         write_png(golden, *ref.image);
         r.detail = "wrote " + golden.string();
+        if (!ref.renderer.empty()) rendered_goldens_[lab.lab] = ref.renderer;
         if (lab.checks_arrays()) update_golden_arrays(lab, c, ref, r);
     }
     record(r);
@@ -469,6 +487,7 @@ void Grading::grade_case(const LabCases& lab, const GradeCase& c, bool live, con
     }
     // The student first: this case's expected image does not exist yet while student code runs.
     const LabRun student = student_.render(lab.lab, lab, c, limits(lab, true));
+    if (report_.renderer.empty()) report_.renderer = student.renderer;
     r.seconds = student.process.seconds;
     r.frame_ms = student.reported_ms;
     r.output = as_student_sees(student.process.output);
@@ -588,7 +607,24 @@ void Grading::check_image(const LabCases& lab, const GradeCase& c, const LabRun&
         }
     } else {
         r.status = CaseStatus::WrongImage;
+        if (!live) call_a_gpu_margin(lab, c, student, expected, tolerance, r);
     }
+}
+
+void Grading::call_a_gpu_margin(const LabCases& lab, const GradeCase& c, const LabRun& student, const Image& expected,
+                                const ImageTolerance& tolerance, CaseResult& r) const {
+    // Only where the student's renderer is not the goldens' own: on that one a difference is the student's.
+    const auto golden = report_.golden_renderers.find(lab.lab);
+    if (golden == report_.golden_renderers.end() || student.renderer.empty() || student.renderer == golden->second) return;
+    const ImageTolerance cross = cross_implementation_tolerance(tolerance);
+    if (!compare_images(*student.image, expected, cross).within(cross)) return;
+    r.status = CaseStatus::GpuMargin;
+    std::string compare = "build/bin/" + lab.lab + " compare --case " + c.name;
+    if (options_.profile != Profile::Core) compare += std::string(" --profile ") + profile_name(options_.profile);
+    char budgets[32];
+    std::snprintf(budgets, sizeof budgets, "%.3g", kCrossImplementationBudget);
+    r.detail = "differs from the " + renderer_family(golden->second) + " golden by a margin seen between GPUs: check with `" + compare +
+               "` (" + r.detail + "; within " + budgets + " times the case's budget)";
 }
 
 std::string Grading::golden_copied(const std::string& lab, const std::string& case_name, const Image& image) {

@@ -27,6 +27,7 @@ const char* status_name(CaseStatus status) {
     case CaseStatus::NeedsFirst: return "needs another TODO first";
     case CaseStatus::Refused: return "refused";
     case CaseStatus::WroteTooMuch: return "wrote too much";
+    case CaseStatus::GpuMargin: return "GPU margin";
     }
     // Only reachable with a value cast from an out-of-range integer.
     return "unknown";

@@ -6,6 +6,7 @@
 #include "grader/array_compare.h"
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,8 @@ enum class CaseStatus {
     Refused,             // what it handed in breaks the hand-in's rules: a message over its limit or malformed, a timed
                          // frame before its challenge, or one that is not the frame drawn with the challenge's settings
     WroteTooMuch,        // filled its working folder (size or number of files) to the limit
+    GpuMargin,           // against a golden made on another renderer: off by more than the case's budget, but within the
+                         // margin renderers differ by (cross_implementation_tolerance, grader/cases.h); no points
 };
 const char* status_name(CaseStatus status);
 
@@ -99,6 +102,9 @@ struct GradeReport {
     std::string submission;   // what was graded: a folder, or the kit's own labs/
     std::string mode;         // "instructor" (live reference, hidden cases, timing) or "self-check"
     std::string profile = "core";  // the GL profile the labs ran on: core, compat or es
+    std::string renderer;     // GL_RENDERER the student's labs ran on, as they reported it; empty when none did
+    // Against goldens: GL_RENDERER each graded lab's goldens were rendered on (grader/golden/renderer.json), by lab.
+    std::map<std::string, std::string> golden_renderers;
     std::uint64_t seed = 0;   // hidden cases were drawn from it
     bool hidden_included = false, timing_included = false;
     std::string sandbox;      // which isolation the platform allowed, in words

@@ -102,6 +102,17 @@ std::string check_output(const CaseResult& result) {
 
 bool is_kit_fault(CaseStatus status) { return status == CaseStatus::ReferenceFailed; }
 
+std::string golden_renderers_text(const GradeReport& report) {
+    std::string text, first;
+    bool one = true;
+    for (const auto& [lab, renderer] : report.golden_renderers) {
+        if (first.empty()) first = renderer;
+        one = one && renderer == first;
+        text += (text.empty() ? "" : "; ") + lab + ": " + renderer;
+    }
+    return one ? "rendered on " + first : text;
+}
+
 std::string fixed(double value, int digits) {
     char buffer[64];
     std::snprintf(buffer, sizeof buffer, "%.*f", digits, value);

@@ -20,6 +20,10 @@ std::string status_line(const CaseResult& result);
 // status_line, then the captured output on the following lines.
 std::string check_output(const CaseResult& result);
 
+// "rendered on llvmpipe (LLVM 15.0.6, 256 bits)", or by lab where the labs' goldens came from different renderers:
+// "lab01: llvmpipe (...); lab05: ...".
+std::string golden_renderers_text(const GradeReport& report);
+
 // The reference or the kit failed, not the student: reported apart from the student's failures.
 bool is_kit_fault(CaseStatus status);
 

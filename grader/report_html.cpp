@@ -24,6 +24,7 @@ const char* status_class(CaseStatus status) {
     if (status == CaseStatus::Passed) return "pass";
     if (is_kit_fault(status)) return "kit";
     if (status == CaseStatus::TooSlow) return "slow";
+    if (status == CaseStatus::GpuMargin) return "margin";
     return "fail";
 }
 
@@ -193,6 +194,7 @@ td.points { text-align: right; white-space: nowrap; }
 tr.pass td.status, section.pass .badge { background: #ceead6; }
 tr.fail td.status, section.fail .badge { background: #fad2cf; }
 tr.slow td.status, section.slow .badge { background: #feefc3; }
+tr.margin td.status, section.margin .badge { background: #feefc3; }
 tr.kit td.status, section.kit .badge { background: #d2e3fc; }
 .badge { padding: 0.1em 0.5em; border-radius: 0.4em; font-size: 0.85em; }
 section.check { border-top: 1px solid #dadce0; margin-top: 1em; }
@@ -227,6 +229,8 @@ std::string html_report(const GradeReport& report, const fs::path& out_dir) {
     if (report.timing_included) out << ", timing";
     out << "</td></tr>\n";
     out << "<tr><th>profile</th><td>" << html(report.profile) << "</td></tr>\n";
+    if (!report.renderer.empty()) out << "<tr><th>renderer</th><td>" << html(report.renderer) << "</td></tr>\n";
+    if (!report.golden_renderers.empty()) out << "<tr><th>goldens rendered on</th><td>" << html(golden_renderers_text(report)) << "</td></tr>\n";
     if (report.hidden_included) {
         char seed[32];
         std::snprintf(seed, sizeof seed, "%" PRIu64, report.seed);

@@ -196,6 +196,10 @@ std::string report_json(const GradeReport& report) {
     root["submission"] = text(report.submission);
     root["mode"] = text(report.mode);
     root["profile"] = text(report.profile);
+    root["renderer"] = text(report.renderer);  // "": no lab reported one
+    Json goldens = Json::object();
+    for (const auto& [lab, renderer] : report.golden_renderers) goldens[lab] = text(renderer);
+    root["golden_renderers"] = goldens;  // by lab: what the goldens were rendered on (self-check)
     root["seed"] = seed_text(report.seed);
     root["hidden_included"] = report.hidden_included;
     root["timing_included"] = report.timing_included;

@@ -130,6 +130,8 @@ std::string score_table(const GradeReport& report) {
     if (report.timing_included) mode += ", timing";
     out << "mode     " << one_line(mode, 200) << "\n";
     if (report.profile != "core") out << "profile  " << one_line(report.profile, 40) << " (the labs and the references ran on it)\n";
+    if (!report.renderer.empty()) out << "renderer " << one_line(report.renderer, 200) << " (the labs ran on it)\n";
+    if (!report.golden_renderers.empty()) out << "goldens  " << one_line(golden_renderers_text(report), 300) << "\n";
     if (report.hidden_included) {
         char seed[32];
         std::snprintf(seed, sizeof seed, "%" PRIu64, report.seed);

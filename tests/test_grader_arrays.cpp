@@ -11,6 +11,7 @@
 #include "grader/array_golden.h"
 #include "grader/data_check.h"
 #include "grader/grade.h"
+#include "grader/report.h"
 #include "common/io/handin.h"
 #include "common/io/little_endian.h"
 
@@ -482,6 +483,7 @@ struct FakeLab {
     Image image;
     std::map<std::string, DataArray> arrays;
     std::map<std::string, std::uint32_t> listed_counts;  // name -> the count its message claims, where it lies
+    std::string renderer;                                // GL_RENDERER its report names; "": none
 };
 
 void write_bytes(const fs::path& file, const std::vector<std::uint8_t>& bytes) {
@@ -519,7 +521,8 @@ void write_fake_lab(const fs::path& bin, const std::string& binary, const fs::pa
                              "    send(b'ARR1', open(os.path.join(fixture, name), 'rb').read())\n"
                              "image = open(os.path.join(fixture, 'image.msg'), 'rb').read()\n"
                              "send(b'IMG1', image)\n"
-                             "send(b'RPT1', b'{\"timing\": {\"median_ms\": 1}}')\n"
+                             "send(b'RPT1', b'{\"timing\": {\"median_ms\": 1}"
+                          << (lab.renderer.empty() ? "" : ", \"gl\": {\"renderer\": \"" + lab.renderer + "\"}") << "}')\n"
                              "send(b'RDY1')\n"
                              "while True:\n"
                              "    tag, size = read(4), struct.unpack('<I', read(4))[0]\n"
@@ -539,14 +542,20 @@ Image flat(std::uint8_t red) {
     return image;
 }
 
-CaseResult grade_one(const test::TempDir& dir, bool self_check) {
+// Grading the fake labs of `dir`'s kit/ and bin/ into `dir`/`out`.
+GradeOptions fake_kit_options(const test::TempDir& dir, const std::string& out) {
     GradeOptions options;
     options.kit_root = dir.path("kit");
     options.bin_dir = dir.path("bin");
-    options.out_dir = dir.path("out");
-    options.self_check = self_check;
+    options.out_dir = dir.path(out);
     options.sandbox = false;  // the scripts live in the test's own temporary folder
     options.seed = 1;
+    return options;
+}
+
+CaseResult grade_one(const test::TempDir& dir, bool self_check) {
+    GradeOptions options = fake_kit_options(dir, "out");
+    options.self_check = self_check;
     const GradeReport report = grade(options);
     REQUIRE(report.results.size() == 1);
     return report.results[0];
@@ -592,10 +601,7 @@ TEST_CASE("arrays: graded end to end through lab processes, live and against gol
     CHECK(contains(r.detail, "array 'positions': 1000000 x 4 floats declared, 80000 bytes sent"));
 
     // The goldens: a compact sample beside the image, then the self-check uses them.
-    GradeOptions update;
-    update.kit_root = dir.path("kit");
-    update.bin_dir = dir.path("bin");
-    update.out_dir = dir.path("out-update");
+    GradeOptions update = fake_kit_options(dir, "out-update");
     update.update_goldens = true;
     const GradeReport updated = grade(update);
     REQUIRE(updated.results.size() == 1);
@@ -628,4 +634,80 @@ TEST_CASE("arrays: graded end to end through lab processes, live and against gol
     r = grade_one(dir, true);
     CHECK(r.status == CaseStatus::ReferenceFailed);
     CHECK(contains(r.detail, "no golden array"));
+}
+
+namespace {
+
+// A 10x10 picture, `changed` of its pixels (from the top left, row by row) far off.
+Image picture(int changed) {
+    Image image(10, 10);
+    for (int i = 0; i < 100; ++i) {
+        std::uint8_t* p = image.at(i % 10, i / 10);
+        p[0] = static_cast<std::uint8_t>(i * 2), p[1] = 90, p[2] = i < changed ? 250 : 30, p[3] = 255;
+    }
+    return image;
+}
+
+}  // namespace
+
+// The goldens name the renderer they were made on (grader/golden/renderer.json); against goldens from another
+// renderer, a picture off by more than its budget but within one and a half budgets is told it differs by a margin
+// seen between GPUs (no points), with the command that shows it; anything else stays a wrong image.
+TEST_CASE("grader: against another renderer's goldens, a picture within one and a half budgets is a GPU margin, said so", "[grader][arrays]") {
+    test::TempDir dir;
+    dir.write("kit/grader/cases/lab99.json", R"({"lab": "lab99", "size": "10x10", "timeout_s": 20, "arrays_are": "particles",
+        "tolerance": {"live": {"max_channel_diff": 0, "max_differing_fraction": 0},
+                      "golden": {"max_channel_diff": 2, "max_differing_fraction": 0.1},
+                      "arrays": {"max_abs": 1e-4, "max_differing_fraction": 0}},
+        "cases": [{"name": "cloud", "todo": "L99-T1", "points": 3, "settings": []}]})");
+    const std::string gpu = "TestGPU 9000 (driver 1.0)", llvmpipe = "llvmpipe (LLVM 15.0.6, 256 bits)";
+    FakeLab reference{picture(0), {{"positions", ramp("positions", 50)}}, {}, gpu};
+    write_fake_lab(dir.path("bin"), "lab99_solution", dir.path("fixture/reference"), reference);
+    GradeOptions update = fake_kit_options(dir, "out-update");
+    update.update_goldens = true;
+    REQUIRE(grade(update).results.at(0).status == CaseStatus::Passed);
+    const Json record = read_json_file(dir.path("kit/grader/golden/renderer.json"));
+    CHECK(record.object_at("labs").string_at("lab99") == gpu);
+
+    const auto self_check = [&](int changed, const std::string& renderer, bool right_arrays = true) {
+        FakeLab student = reference;
+        student.image = picture(changed);
+        student.renderer = renderer;
+        if (!right_arrays) student.arrays["positions"].values[0] = 9;
+        write_fake_lab(dir.path("bin"), "lab99", dir.path("fixture/student"), student);
+        GradeOptions options = fake_kit_options(dir, "out");
+        options.self_check = true;
+        return grade(options);
+    };
+    // 12 pixels of a budget of 10, on another renderer: a GPU's margin, no points, and what to run.
+    const GradeReport margin = self_check(12, llvmpipe);
+    CHECK(margin.renderer == llvmpipe);
+    CHECK(margin.golden_renderers.at("lab99") == gpu);
+    const CaseResult& r = margin.results.at(0);
+    CHECK(r.status == CaseStatus::GpuMargin);
+    CHECK(std::string(status_name(r.status)) == "GPU margin");
+    CHECK(r.points == 0);
+    CHECK(r.detail.rfind("particles match the reference (positions); the picture differs from the TestGPU 9000 golden by a margin seen "
+                         "between GPUs: check with `build/bin/lab99 compare --case cloud` (max diff 220, 12 of 100 px differ (12.00%)", 0) == 0);
+    CHECK(contains(r.detail, "; within 1.5 times the case's budget)"));
+    const std::string table = score_table(margin);
+    CHECK(contains(table, "renderer " + llvmpipe + " (the labs ran on it)"));
+    CHECK(contains(table, "goldens  rendered on " + gpu));
+    const Json json = parse_json(report_json(margin), "report.json");
+    CHECK(json.string_at("renderer") == llvmpipe);
+    CHECK(json.object_at("golden_renderers").string_at("lab99") == gpu);
+    CHECK(contains(html_report(margin, dir.path("out")), "<tr><th>goldens rendered on</th><td>rendered on TestGPU 9000 (driver 1.0)</td></tr>"));
+
+    // Past one and a half budgets, on the goldens' own renderer, or with no renderer named: a wrong image.
+    const CaseResult far = self_check(16, llvmpipe).results.at(0);
+    CHECK(far.status == CaseStatus::WrongImage);
+    CHECK(far.detail.rfind("particles match the reference (positions); the picture differs: max diff 220, 16 of 100 px", 0) == 0);
+    CHECK(self_check(12, gpu).results.at(0).status == CaseStatus::WrongImage);
+    CHECK(self_check(12, "").results.at(0).status == CaseStatus::WrongImage);
+    // Wrong numbers are no GPU's margin.
+    const CaseResult wrong = self_check(12, llvmpipe, false).results.at(0);
+    CHECK(wrong.status == CaseStatus::WrongData);
+    CHECK(contains(wrong.detail, "; the picture is off too, by a margin seen between GPUs"));
+    // Within the budget it passes wherever it ran.
+    CHECK(self_check(10, llvmpipe).results.at(0).status == CaseStatus::Passed);
 }

@@ -131,10 +131,12 @@ bool have_python3() { return std::system("command -v python3 >/dev/null 2>&1") =
 
 }  // namespace
 
-TEST_CASE("grader reports: status names are short, distinct and lower case but for NaN", "[grader]") {
+TEST_CASE("grader reports: status names are short, distinct and lower case but for NaN and GPU", "[grader]") {
     std::set<std::string> names;
-    for (int s = 0; s <= static_cast<int>(CaseStatus::ReferenceFailed); ++s) names.insert(status_name(CaseStatus(s)));
-    CHECK(names.size() == static_cast<std::size_t>(CaseStatus::ReferenceFailed) + 1);
+    for (int s = 0; s <= static_cast<int>(CaseStatus::GpuMargin); ++s) names.insert(status_name(CaseStatus(s)));
+    CHECK(names.size() == static_cast<std::size_t>(CaseStatus::GpuMargin) + 1);
+    CHECK(names.count("unknown") == 0);
+    CHECK(std::string(status_name(CaseStatus::GpuMargin)) == "GPU margin");
     CHECK(std::string(status_name(CaseStatus::WrongData)) == "wrong data");
     CHECK(std::string(status_name(CaseStatus::Passed)) == "passed");
     CHECK(std::string(status_name(CaseStatus::ShaderCompileError)) == "shader compile error");

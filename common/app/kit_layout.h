@@ -26,6 +26,8 @@ struct KitLayout {
     std::filesystem::path golden_image(const std::string& lab, const std::string& case_name) const {
         return golden_dir(lab) / (case_name + ".png");
     }
+    // Which GL renderer (GL_RENDERER) each lab's goldens were rendered on, written with them.
+    std::filesystem::path golden_renderers() const { return golden_dir() / "renderer.json"; }
     // The CMake project the grader builds a submission's labs with.
     std::filesystem::path submission_project() const { return root / "grader" / "submission"; }
 };
