@@ -374,7 +374,7 @@ std::string why_correct(const MarginRender& r) {
 // The same verdict whatever order the renders were measured or joined in.
 CaseVerdict verdict_of(const MarginMeasurement& m, const MarginCase& c) {
     CaseVerdict v;
-    std::map<std::string, std::string> wrong_where;  // the line, split at '\n' -> the implementations
+    std::map<std::pair<std::string, std::string>, std::vector<std::string>> wrong_where;  // (before, after) -> where
     for (const auto& r : m.renders) {
         if (r.lab != c.lab || r.case_name != c.name) continue;
         if (r.kind == "mutant") {
@@ -389,8 +389,7 @@ CaseVerdict verdict_of(const MarginMeasurement& m, const MarginCase& c) {
                 const std::string key = "must-fail mutant '" + r.source + "' is " + percent_text(r.share) + " of the budget on ";
                 const std::string why = r.share <= 1 ? " (it passes: " + r.detail + ")"
                                                      : " (it fails, but by under 150% of the budget)";
-                auto& where = wrong_where[key + "\n" + why];
-                where += (where.empty() ? "" : ", ") + r.implementation;
+                wrong_where[{key, why}].push_back(r.implementation);
             }
             continue;
         }
@@ -400,15 +399,11 @@ CaseVerdict verdict_of(const MarginMeasurement& m, const MarginCase& c) {
         if (r.share >= kCorrectBar) v.misses.push_back(why_correct(r));
     }
     std::sort(v.misses.begin(), v.misses.end());
-    for (const auto& [line, where] : wrong_where) {
-        const auto cut = line.find('\n');
-        std::vector<std::string> names;
-        std::stringstream list(where);
-        for (std::string name; std::getline(list, name, ',');) names.push_back(name.substr(name.find_first_not_of(' ')));
-        std::sort(names.begin(), names.end());
+    for (auto [line, where] : wrong_where) {
+        std::sort(where.begin(), where.end());
         std::string joined;
-        for (const auto& name : names) joined += (joined.empty() ? "" : ", ") + name;
-        v.misses.push_back(line.substr(0, cut) + joined + line.substr(cut + 1));
+        for (const auto& name : where) joined += (joined.empty() ? "" : ", ") + name;
+        v.misses.push_back(line.first + joined + line.second);
     }
     return v;
 }
