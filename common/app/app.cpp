@@ -161,7 +161,9 @@ static void print_list(Session& s) {
 }
 
 int run_lab(std::unique_ptr<Lab> lab, const char* lab_dir, const char* variant, int argc, const char* const* argv) {
-    Session session;
+    // On the heap: web mode hands it to the page, which draws with it after main() has returned.
+    auto owned = std::make_unique<Session>();
+    Session& session = *owned;
     std::string stage = "command line";
     try {
         session.lab = std::move(lab);
@@ -204,6 +206,7 @@ int run_lab(std::unique_ptr<Lab> lab, const char* lab_dir, const char* variant, 
         case RunMode::Sweep: return run_sweep(session);
         case RunMode::Animate: return run_animate(session);
         case RunMode::Compare: return run_compare(session);
+        case RunMode::Web: return run_web(owned);
         case RunMode::List: break;
         }
         return kExitOk;

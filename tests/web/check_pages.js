@@ -1,0 +1,221 @@
+#!/usr/bin/env node
+// The browser edition in headless Chromium (README, "Kinds of test": web), one browser for every page of a rasterizer:
+//  - every lab's page (the starter, as the site ships it) loads with no console error and draws its first case; a
+//    screenshot of it is kept; its self-check gives 0 points;
+//  - every lab's reference page draws every public case, each within its golden image's tolerance, printing the
+//    largest channel difference and the share of pixels over the tolerance; its self-check gives full marks;
+//  - with --editor: one TODO undone (gsv-make-starters --undone, opened in the editor) loses exactly that TODO's cases;
+//    a broken edit shows file:line and keeps the picture, fixing it restores it, a reload keeps the edit, and the
+//    downloaded zip is what gsv-grade --submission then grades.
+// Usage: check_pages.js --base URL --out DIR --rasterizer NAME --kit ROOT --bin BIN [--editor] [--labs lab01,lab02]
+'use strict';
+const fs = require('fs');
+const path = require('path');
+const { execFileSync } = require('child_process');
+const { chromium } = require(path.join(__dirname, '../../web/node_modules/playwright-core'));
+
+const args = {};
+for (let i = 2; i < process.argv.length; i++) {
+  const a = process.argv[i];
+  if (a === '--editor') args.editor = true;
+  else args[a.replace(/^--/, '')] = process.argv[++i];
+}
+const rasterizers = {
+  // Mesa's llvmpipe (the goldens' own rasterizer) through ANGLE's GL back end, under Xvfb.
+  'angle-llvmpipe': ['--use-gl=angle', '--use-angle=gl', '--ignore-gpu-blocklist'],
+  // Chromium's own software rasterizer, independent of llvmpipe.
+  'swiftshader': ['--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
+};
+const out = path.join(args.out, args.rasterizer);
+fs.mkdirSync(out, { recursive: true });
+const labs = (args.labs || 'lab01,lab02,lab03,lab04,lab05,lab06,lab07').split(',');
+let failures = 0, checks = 0;
+function check(ok, line) {
+  checks++;
+  if (!ok) failures++;
+  console.log((ok ? 'ok   ' : 'FAIL ') + args.rasterizer + ' ' + line);
+}
+
+async function openPage(context, url) {
+  const page = await context.newPage();
+  const problems = [];
+  page.on('console', (m) => { if (m.type() === 'error') problems.push('console error: ' + m.text()); });
+  page.on('pageerror', (e) => problems.push('page error: ' + e.message));
+  const t0 = Date.now();
+  await page.goto(url);
+  await page.waitForFunction(() => window.gsvPage && (window.gsvPage.frames > 0 || window.gsvPage.failed), null,
+                             { timeout: 120000 });
+  const state = await page.evaluate(() => ({ failed: window.gsvPage.failed, status: document.getElementById('status').textContent }));
+  return { page, problems, state, ms: Date.now() - t0 };
+}
+
+// The canvas's pixels as the page drew them (preserveDrawingBuffer), as a data URL, and whether they are one colour.
+async function canvasPixels(page) {
+  return page.evaluate(() => {
+    const canvas = document.getElementById('canvas');
+    const copy = document.createElement('canvas');
+    copy.width = canvas.width;
+    copy.height = canvas.height;
+    const c2d = copy.getContext('2d');
+    c2d.drawImage(canvas, 0, 0);
+    const data = c2d.getImageData(0, 0, copy.width, copy.height).data;
+    let flat = true;
+    for (let i = 4; i < data.length && flat; i += 4)
+      if (data[i] !== data[0] || data[i + 1] !== data[1] || data[i + 2] !== data[2]) flat = false;
+    return { url: copy.toDataURL(), flat };
+  });
+}
+
+async function selfCheck(page) {
+  return page.evaluate(() => window.gsvSelfCheck.run(''));
+}
+
+function printCases(lab, result) {
+  for (const r of result.results) {
+    const share = r.total_pixels ? (100 * r.differing_pixels / r.total_pixels).toFixed(3) : '-';
+    console.log('     ' + args.rasterizer + ' ' + lab + ' ' + r.name.padEnd(16) + ' ' + r.status.padEnd(12) +
+                ' max channel diff ' + String(r.max_channel_diff).padStart(3) + ', over tolerance (' +
+                r.tolerance_max_channel_diff + ') ' + share + '% of pixels (allowed ' +
+                (100 * r.tolerance_max_differing_fraction).toFixed(2) + '%)');
+  }
+}
+
+async function starterPage(context, lab) {
+  const first = JSON.parse(fs.readFileSync(path.join(args.kit, 'grader/cases', lab + '.json'), 'utf8')).cases[0].name;
+  const { page, problems, state, ms } = await openPage(context, args.base + '/site/' + lab + '/index.html?case=' + first);
+  check(!state.failed, lab + ' page loads and draws its first case (' + first + ') in ' + ms + ' ms' + (state.failed ? ': ' + state.failed : ''));
+  const pixels = await canvasPixels(page);
+  check(!pixels.flat, lab + ' first frame is a picture, not one flat colour');
+  await page.screenshot({ path: path.join(out, lab + '-page.png'), fullPage: true });
+  const result = await selfCheck(page);
+  check(result.score === 0 && result.max_score > 0, lab + ' starter: self-check ' + result.score + ' of ' + result.max_score + ' points');
+  check(problems.length === 0, lab + ' no console error' + (problems.length ? ': ' + problems.join('; ') : ''));
+  await page.close();
+}
+
+async function solutionPage(context, lab) {
+  const { page, problems, state } = await openPage(context, args.base + '/solution-pages/' + lab + '/index.html');
+  check(!state.failed, lab + ' reference page starts' + (state.failed ? ': ' + state.failed : ''));
+  const result = await selfCheck(page);
+  fs.writeFileSync(path.join(out, lab + '-solution-table.txt'), result.table || result.error);
+  const desktopOnly = result.results.filter((r) => r.status === 'unsupported');
+  check(result.score === result.max_score - desktopOnly.reduce((s, r) => s + r.max_points, 0),
+        lab + ' reference: self-check ' + result.score + ' of ' + result.max_score + ' points' +
+        (desktopOnly.length ? ' (' + desktopOnly.map((r) => r.name).join(', ') + ': desktop only)' : ''));
+  printCases(lab, result);
+  for (const r of result.results) if (r.status !== 'passed' && r.status !== 'unsupported') check(false, lab + ' ' + r.name + ': ' + r.detail);
+  check(problems.length === 0, lab + ' reference page: no console error' + (problems.length ? ': ' + problems.join('; ') : ''));
+  await page.close();
+}
+
+// One TODO undone in the reference loses that TODO's cases and no other.
+async function oneTodoUndone(context, lab, todo) {
+  const dir = path.join(out, 'undone-' + todo);
+  execFileSync(path.join(args.bin, 'gsv-make-starters'), ['--undone', todo, '--to', dir]);
+  const { page } = await openPage(context, args.base + '/solution-pages/' + lab + '/index.html');
+  const shaders = fs.readdirSync(dir).filter((n) => /\.(vert|frag|glsl|comp)$/.test(n));
+  await page.setInputFiles('#open', shaders.map((n) => path.join(dir, n)));
+  await page.waitForFunction(() => /^Opened/.test(document.getElementById('status').textContent));
+  await page.waitForTimeout(800);  // the editor's 300 ms pause, then the rebuild
+  const result = await selfCheck(page);
+  const lost = result.results.filter((r) => r.status !== 'passed').map((r) => r.name + '(' + r.todo + ')');
+  const wrong = result.results.filter((r) => (r.status !== 'passed') !== (r.todo === todo));
+  check(wrong.length === 0 && lost.length > 0, lab + ' ' + todo + ' undone loses exactly its cases: ' + lost.join(', '));
+  await page.evaluate(() => localStorage.clear());
+  await page.close();
+}
+
+// The editor: a broken edit, its fix, a reload, and the download graded by gsv-grade.
+async function editor(context, lab) {
+  const { page } = await openPage(context, args.base + '/solution-pages/' + lab + '/index.html');
+  await page.evaluate(() => localStorage.clear());
+  const before = (await canvasPixels(page)).url;
+  const file = await page.evaluate(() => window.gsvEditor.files().find((f) => /\.frag$/.test(f.name)).name);
+  const original = await page.evaluate((name) => window.gsvEditor.files().find((f) => f.name === name).doc.getValue(), file);
+  // A line that does not compile, after the first line of main().
+  const lines = original.split('\n');
+  const at = lines.findIndex((l) => /void main\(/.test(l)) + 1;
+  lines.splice(at + 1, 0, '    this is not GLSL;');
+  const broken = lines.join('\n');
+  await page.evaluate(([name, text]) => { window.gsvEditor.show(name); window.gsvEditor.files().find((f) => f.name === name).doc.setValue(text); }, [file, broken]);
+  await page.waitForFunction(() => document.getElementById('shader-error').textContent !== '', null, { timeout: 10000 });
+  const shown = await page.evaluate(() => document.getElementById('shader-error').textContent);
+  const expectedLine = at + 2;
+  const where = /([\w./-]+):(\d+)/.exec(shown);
+  check(where && where[1].endsWith(file) && Number(where[2]) === expectedLine,
+        lab + ' a broken edit shows the student\'s file:line: ' + shown.split('\n')[0].slice(0, 140) + ' (expected ' + file + ':' + expectedLine + ')');
+  await page.waitForTimeout(200);
+  check((await canvasPixels(page)).url === before, lab + ' the broken edit keeps the last picture');
+  await page.screenshot({ path: path.join(out, lab + '-broken-edit.png'), fullPage: true });
+  // The fix: a comment added, so the edit differs from the reference and is kept.
+  const fixed = original.replace(/void main\(\) \{/, 'void main() { // edited in the page');
+  await page.evaluate(([name, text]) => window.gsvEditor.files().find((f) => f.name === name).doc.setValue(text), [file, fixed]);
+  await page.waitForFunction(() => document.getElementById('shader-error').textContent === '', null, { timeout: 10000 });
+  await page.waitForTimeout(200);
+  check((await canvasPixels(page)).url === before, lab + ' fixing it restores the picture');
+  await page.reload();
+  await page.waitForFunction(() => window.gsvPage && window.gsvPage.frames > 0, null, { timeout: 60000 });
+  const kept = await page.evaluate((name) => window.gsvEditor.files().find((f) => f.name === name).doc.getValue(), file);
+  check(kept === fixed, lab + ' a reload keeps the edit');
+  const download = page.waitForEvent('download');
+  await page.click('#download');
+  const zip = path.join(out, lab + '-download.zip');
+  await (await download).saveAs(zip);
+  const submission = path.join(out, lab + '-submission');
+  fs.rmSync(submission, { recursive: true, force: true });
+  fs.mkdirSync(submission, { recursive: true });
+  execFileSync('python3', ['-m', 'zipfile', '-e', zip, submission]);
+  const folder = fs.readdirSync(path.join(submission, 'labs'))[0];
+  const graded = fs.readFileSync(path.join(submission, 'labs', folder, file), 'utf8');
+  check(graded === fixed, lab + ' the download holds labs/' + folder + '/' + file + ' as edited');
+  const grades = path.join(out, lab + '-grades');
+  fs.rmSync(grades, { recursive: true, force: true });
+  let table = '';
+  try {
+    table = execFileSync(path.join(args.bin, 'gsv-grade'), ['--submission', submission, '--labs', lab, '--out', grades],
+                         { encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
+  } catch (e) {
+    table = String(e.stdout || '') + String(e.stderr || '');
+  }
+  const total = /total\s+([\d.]+)\s*\/\s*([\d.]+)/.exec(table);
+  check(total && total[1] === total[2], lab + ' gsv-grade --submission grades the downloaded files: ' + (total ? total[0] : table.slice(-300)));
+  await page.evaluate(() => localStorage.clear());
+  await page.close();
+}
+
+(async () => {
+  const browser = await chromium.launch({
+    executablePath: process.env.GSV_CHROMIUM || '/usr/bin/chromium', headless: true,
+    args: ['--no-sandbox', ...rasterizers[args.rasterizer]],
+  });
+  const context = await browser.newContext({ acceptDownloads: true, viewport: { width: 1280, height: 900 } });
+  const probe = await context.newPage();
+  await probe.goto(args.base + '/site/index.html');
+  const renderer = await probe.evaluate(() => {
+    const gl = document.createElement('canvas').getContext('webgl2');
+    const info = gl && gl.getExtension('WEBGL_debug_renderer_info');
+    return gl ? (info ? gl.getParameter(info.UNMASKED_RENDERER_WEBGL) : gl.getParameter(gl.RENDERER)) : 'no WebGL 2';
+  });
+  console.log('     ' + args.rasterizer + ': WebGL 2 on ' + renderer);
+  await probe.screenshot({ path: path.join(out, 'index.png'), fullPage: true });
+  await probe.close();
+  for (const lab of labs) {
+    try {
+      await starterPage(context, lab);
+      await solutionPage(context, lab);
+    } catch (e) {
+      check(false, lab + ': ' + e.message.split('\n')[0]);
+    }
+  }
+  if (args.editor) {
+    try {
+      await oneTodoUndone(context, 'lab01', 'L01-T4');
+      await editor(context, 'lab01');
+    } catch (e) {
+      check(false, 'editor: ' + e.message.split('\n')[0]);
+    }
+  }
+  await browser.close();
+  console.log(args.rasterizer + ': ' + (checks - failures) + ' passed, ' + failures + ' failed');
+  process.exit(failures ? 1 : 0);
+})();
