@@ -65,7 +65,7 @@ endif()
 # beside it in build-web/solution-pages/ for the tests only.
 set(GSV_WEB_SITE ${CMAKE_BINARY_DIR}/site)
 set(GSV_WEB_LINK_FLAGS -fexceptions -lembind -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2 -sALLOW_MEMORY_GROWTH=1
-    -sFORCE_FILESYSTEM=1 -sENVIRONMENT=web -sINVOKE_RUN=0 "-sEXPORTED_RUNTIME_METHODS=[FS,callMain]")
+    -sFORCE_FILESYSTEM=1 -sENVIRONMENT=web -sINVOKE_RUN=0 --profiling-funcs "-sEXPORTED_RUNTIME_METHODS=[FS,callMain]")
 
 function(gsv_add_web_lab id dir)
   foreach(variant starter solution)

@@ -44,7 +44,7 @@ done
 status=0
 tests_start=$(date +%s)
 DISPLAY=$display node "$root/tests/web/check_pages.js" --base "http://127.0.0.1:$port" --out "$out" \
-  --rasterizer angle-llvmpipe --kit "$root" --bin "$build/bin" --editor || status=1
+  --rasterizer angle-llvmpipe --kit "$root" --bin "$build/bin" --editor --native || status=1
 node "$root/tests/web/check_pages.js" --base "http://127.0.0.1:$port" --out "$out" \
   --rasterizer swiftshader --kit "$root" --bin "$build/bin" || status=1
 echo "check_web: the pages' checks took $(( $(date +%s) - tests_start )) s; screenshots in $out"

@@ -8,6 +8,7 @@ window.gsvEditor = (function () {
   const shaderFile = /\.(vert|frag|glsl|comp)$/;
   const files = [];  // {name, path, starter, doc, tab}
   let labDir = '', folderName = '', current = null, onResult = null, editor = null, timer = 0, storageOk = true;
+  const pending = new Set();
   const storageKey = (name) => 'gsv-web:' + location.pathname + ':' + name;
   const page = () => window.gsvPage;
 
@@ -91,8 +92,9 @@ window.gsvEditor = (function () {
       f.doc.on('change', () => {
         f.text = f.doc.getValue();
         f.tab.classList.toggle('edited', f.text !== f.starter);
+        pending.add(f);
         clearTimeout(timer);
-        timer = setTimeout(() => apply(f), 300);
+        timer = setTimeout(applyPending, 300);
       });
       f.tab.classList.toggle('edited', f.text !== f.starter);
     }
@@ -111,9 +113,13 @@ window.gsvEditor = (function () {
     markError();
   }
 
-  function apply(f) {
-    Module.FS.writeFile(f.path, f.text);
-    store(f);
+  // Every file changed since the last rebuild is written, then one rebuild: an opened folder lands as a whole.
+  function applyPending() {
+    for (const f of pending) {
+      Module.FS.writeFile(f.path, f.text);
+      store(f);
+    }
+    pending.clear();
     reload();
   }
 

@@ -66,7 +66,7 @@
     try {
       Module.callMain(args);
     } catch (e) {
-      if (!(e && e.name === 'ExitStatus')) log(String(e));
+      if (!(e && e.name === 'ExitStatus')) log(String(e) + (e && e.stack ? '\n' + e.stack : ''));
     }
     try {
       return JSON.parse(Module.describe());
