@@ -64,7 +64,8 @@ endif()
 # The site gets the student's copy (labs/, the starters: no answer is shipped); the reference solutions are built
 # beside it in build-web/solution-pages/ for the tests only.
 set(GSV_WEB_SITE ${CMAKE_BINARY_DIR}/site)
-set(GSV_WEB_LINK_FLAGS -fexceptions -lembind -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2 -sALLOW_MEMORY_GROWTH=1
+# FULL_ES3: glMapBufferRange for writing (lab 05 writes its particles the seed's way), which WebGL 2 lacks.
+set(GSV_WEB_LINK_FLAGS -fexceptions -lembind -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2 -sFULL_ES3=1 -sALLOW_MEMORY_GROWTH=1
     -sFORCE_FILESYSTEM=1 -sENVIRONMENT=web -sINVOKE_RUN=0 --profiling-funcs "-sEXPORTED_RUNTIME_METHODS=[FS,callMain]")
 
 function(gsv_add_web_lab id dir)

@@ -101,7 +101,15 @@ Json result_json(const CaseResult& r) {
 // Runs every public case (or the one named: compare's view of it); the page's own values are put back afterwards.
 // Returns {"table": ..., "score": ..., "max_score": ..., "results": [...]}.
 std::string self_check(const std::string& only) {
-    Session& s = web_session();
+    Session* session = nullptr;
+    try {
+        session = &web_session();
+    } catch (const std::exception& e) {
+        Json out = Json::object();
+        out["error"] = e.what();
+        return out.dump(0);
+    }
+    Session& s = *session;
     const Params before = s.params;
     try {
         const LabCases lab = load_lab_cases(s.case_file());

@@ -26,9 +26,11 @@ void LabKit::require(const GlFeature& feature, const std::string& asked_by) cons
         throw UnsupportedError(asked_by + " " + missing_feature_message(feature, profile_, gl_version()));
 }
 
-const ShaderLibrary::Entry& LabKit::program(const std::string& name, const std::vector<std::string>& files) {
+const ShaderLibrary::Entry& LabKit::program(const std::string& name, const std::vector<std::string>& files,
+                                            const std::vector<std::string>& captured) {
     ProgramSpec spec;
     spec.name = name;
+    spec.captured = captured;
     for (const auto& f : files) spec.files.push_back(assets_.shader_file(f));
     return shaders_.add(std::move(spec), params_.defines());
 }

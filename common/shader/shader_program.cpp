@@ -72,6 +72,11 @@ ShaderProgram ShaderProgram::build(const ProgramSpec& spec, const PreprocessOpti
         glBindAttribLocation(program.name_.get(), kNormalSlot, "aNormal");
         glBindAttribLocation(program.name_.get(), kTexCoord0Slot, "aTexCoord0");
     }
+    if (!spec.captured.empty()) {
+        std::vector<const char*> names;
+        for (const auto& name : spec.captured) names.push_back(name.c_str());
+        glTransformFeedbackVaryings(program.name_.get(), static_cast<GLsizei>(names.size()), names.data(), GL_SEPARATE_ATTRIBS);
+    }
     glLinkProgram(program.name_.get());
     GLint linked = GL_FALSE;
     glGetProgramiv(program.name_.get(), GL_LINK_STATUS, &linked);
@@ -157,7 +162,9 @@ void ShaderProgram::assign_texture_units(const std::string& program_name) {
             ++next;
         }
     }
-    glUseProgram(static_cast<GLuint>(previous));
+    // The one before may have been deleted while in use (a rebuild replaces it): then it went when this one took its
+    // place, and nothing is left in use.
+    glUseProgram(previous && glIsProgram(static_cast<GLuint>(previous)) ? static_cast<GLuint>(previous) : 0);
 }
 
 int ShaderProgram::texture_unit(const std::string& sampler) const {
