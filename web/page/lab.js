@@ -38,12 +38,31 @@
     return;
   }
 
+  // An extension hidden from the lab, to see the page without it (and to test that): ?without=OES_texture_float_linear.
+  for (const name of query.getAll('without')) {
+    const proto = WebGL2RenderingContext.prototype;
+    const supported = proto.getSupportedExtensions, get = proto.getExtension;
+    proto.getSupportedExtensions = function () { return (supported.call(this) || []).filter((e) => e !== name); };
+    proto.getExtension = function (e) { return e === name ? null : get.call(this, e); };
+  }
+
   window.Module = {
     canvas: $('canvas'),
     noInitialRun: true,
     print: (line) => log(line),
-    // The lab's stderr is its messages (the GL it got, a refusal): the page's log and status, not console errors.
-    printErr: (line) => log(line),
+    // The lab's stderr is its messages (the GL it got, a refusal, a note such as "frames render into RGBA8"): the
+    // page's log, and once it runs its status line, not console errors.
+    printErr: (line) => {
+      log(line);
+      if (!page.ready || !line.startsWith(lab + ':')) return;
+      say(line, 'warning');
+      // What the browser's driver lacks (an extension, so a fallback) stays in view after the status line moves on.
+      if (/ lacks GL_| needs GL_/.test(line)) {
+        const note = $('driver-note');
+        if (!note.textContent.includes(line)) note.textContent += (note.textContent ? '\n' : '') + line;
+        note.hidden = false;
+      }
+    },
     onRuntimeInitialized: () => start(),
     onAbort: (what) => say('The lab stopped: ' + what + ' (reload the page; your edits are kept).', 'error'),
   };
@@ -126,6 +145,7 @@
       const ms = Module.draw();
       if (ms >= 0) {
         page.frames++;
+        if (page.frames === 1) page.firstFrameMs = performance.now();  // since navigation began
         page.lastFrameMs = ms;
         $('frame-time').textContent = 'frame ' + ms.toFixed(1) + ' ms, ' + frameTimeNote();
       } else {
