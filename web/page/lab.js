@@ -156,12 +156,10 @@
     requestAnimationFrame(loop);
   }
 
-  // glFinish brackets the frame natively; in Chromium, WebGL's finish() waits for its GPU process to finish the
-  // frame's commands, elsewhere it may return earlier.
+  // glFinish brackets the frame natively; in the page, WebGL's finish() returns early, so the frame is bracketed by a
+  // one-pixel read-back, which waits for the browser's GPU process to run every command before it.
   function frameTimeNote() {
-    return /Chrome\//.test(navigator.userAgent)
-      ? 'bracketed by glFinish (Chromium waits for its GPU process)'
-      : 'bracketed by glFinish, which this browser may return from before the GPU is done: a lower bound';
+    return 'bracketed by a one-pixel read-back, which waits for the GPU';
   }
 
   function changed(error) {
