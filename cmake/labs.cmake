@@ -32,6 +32,16 @@ function(gsv_add_lab id dir)
     target_link_libraries(${target} PRIVATE ${GSV_LAB_LIBRARY})
     target_compile_definitions(${target} PRIVATE GSV_LAB_DIR="${src}" GSV_LAB_VARIANT="${variant}")
     set_target_properties(${target} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bin)
+    # The reference also measures against the instructor's CPU yardsticks (reference/): its own measuring code in
+    # reference/<dir>/ (which includes the lab's headers) and gsv_reference. Neither exists in the student
+    # edition or the grader's submission build; there the lab compiles without GSV_HAVE_REFERENCE.
+    if(variant STREQUAL "solution" AND TARGET gsv_reference)
+      file(GLOB reference_sources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/reference/${dir}/*.cpp)
+      target_sources(${target} PRIVATE ${reference_sources})
+      target_include_directories(${target} PRIVATE ${GSV_LABS_ROOT}/${src})
+      target_link_libraries(${target} PRIVATE gsv_reference)
+      target_compile_definitions(${target} PRIVATE GSV_HAVE_REFERENCE=1)
+    endif()
   endforeach()
   set(GSV_LABS ${GSV_LABS} ${id} CACHE INTERNAL "")
   set(GSV_LAB_DIR_${id} ${dir} CACHE INTERNAL "")

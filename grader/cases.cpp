@@ -1,6 +1,6 @@
 #include "grader/cases.h"
 
-#include "common/app/case_file.h"
+#include "common/params/case_file.h"
 #include "common/app/cli.h"
 #include "common/app/kit_layout.h"
 #include "common/core/error.h"

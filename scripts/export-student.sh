@@ -5,10 +5,12 @@
 #   scripts/export-student.sh [--include-untracked] [--labs lab01,lab02] DEST   (also: scripts/kit export-student ...)
 #
 # --labs releases only those labs (their labs/ folder, case file, golden images and golden arrays); a course
-# that hands labs out week by week exports again as each opens. Later labs give earlier answers away: lab 03's
-# shaders trace lab 02's LIC streamlines.
-# Left out: solutions/, tests/ (they need the solutions), grader/hidden/ (hidden grading cases), .github/ (the
-# instructor's workflows), build*/ folders, grade-results/, .git, and whatever git ignores. In a git checkout
+# that hands labs out week by week exports again as each opens. Later labs give earlier answers away (lab 03's
+# shaders trace lab 02's LIC streamlines): --labs refuses a lab without the labs whose answers its starter holds,
+# as the table "Answers a later lab holds" in labs/README.md declares them.
+# Left out: solutions/, reference/ (the instructor's CPU yardsticks, which answer TODOs), tests/ (they need the
+# solutions), grader/hidden/ (hidden grading cases), .github/ (the instructor's workflows), build*/ folders,
+# grade-results/, .git, and whatever git ignores. In a git checkout
 # only the files git tracks are exported (their working-tree content); --include-untracked adds the untracked
 # files that git does not ignore. Outside git, every file is copied but those excluded above and those matching
 # the kit's top-level .gitignore (simple patterns only).
@@ -29,7 +31,7 @@ while [ $# -gt 0 ]; do
   case "$1" in
     --include-untracked) include_untracked=1 ;;
     --labs) [ $# -ge 2 ] || usage; release_labs=$2; shift ;;
-    -h|--help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "export-student: unknown option '$1'" >&2; usage ;;
     *) [ -z "$dest" ] || usage; dest=$1 ;;
   esac
@@ -65,7 +67,9 @@ esac
 # The labs not released (--labs): their folders, case files and golden images stay behind.
 withheld=()
 if [ -n "$release_labs" ]; then
-  known=$(sed -n 's/^set(GSV_LAB_LIST \(.*\))$/\1/p' "$root/cmake/labs.cmake")
+  # The list may run over several lines: from "set(GSV_LAB_LIST" to the first ")".
+  known=$(sed -n '/^set(GSV_LAB_LIST/,/)/p' "$root/cmake/labs.cmake" | tr '\n' ' ' |
+          sed -n 's/^set(GSV_LAB_LIST \([^)]*\)).*/\1/p' | tr -s ' ')
   [ -n "$known" ] || die "cannot read the lab list from cmake/labs.cmake"
   IFS=, read -r -a wanted <<<"$release_labs"
   for lab in "${wanted[@]}"; do
@@ -78,6 +82,23 @@ if [ -n "$release_labs" ]; then
   done
 fi
 
+# A later lab's starter that holds an earlier lab's answers (labs/README.md, "Answers a later lab holds": rows
+# | later | earlier | `files` | ... |) goes out only with that earlier lab.
+held_answers() {
+  [ -f "$root/labs/README.md" ] || return 0
+  sed -n 's/^| *\(lab[0-9][0-9]\) *| *\(lab[0-9][0-9]\) *| *\([^|]*[^ |]\) *|.*/\1 \2 \3/p' "$root/labs/README.md" | tr -d '`'
+}
+if [ -n "$release_labs" ]; then
+  while read -r later earlier files; do
+    case ",$release_labs," in *",$later,"*) ;; *) continue ;; esac
+    case ",$release_labs," in *",$earlier,"*) continue ;; esac
+    die "--labs: ${later}'s starter holds ${earlier}'s answers (${files}): release $earlier too, after its deadline"
+  done < <(held_answers)
+elif [ -n "$(held_answers)" ]; then
+  echo "export-student: every lab goes out, and later labs' starters hold earlier labs' answers (labs/README.md," \
+       "\"Answers a later lab holds\"); release week by week with --labs" >&2
+fi
+
 # What never goes to students, whichever way the file list is made.
 excluded() {
   local w
@@ -85,7 +106,7 @@ excluded() {
     case "$1" in "$w"*) return 0 ;; esac
   done
   case "$1" in
-    solutions|solutions/*|tests|tests/*|grader/hidden|grader/hidden/*|.github/*) return 0 ;;
+    solutions|solutions/*|reference|reference/*|tests|tests/*|grader/hidden|grader/hidden/*|.github/*) return 0 ;;
     build*/*|*/build*/*) return 0 ;;
     grade-results/*|*/grade-results/*) return 0 ;;
     .git|.git/*|*/.git|*/.git/*) return 0 ;;
@@ -155,7 +176,7 @@ else
   while IFS= read -r -d '' f; do
     f=${f#./}
     ignored "$f" || add "$f"
-  done < <(cd "$root" && find . \( -name .git -o -path ./solutions -o -path ./tests -o -path ./grader/hidden \
+  done < <(cd "$root" && find . \( -name .git -o -path ./solutions -o -path ./reference -o -path ./tests -o -path ./grader/hidden \
                                    -o -path ./.github -o -name 'build*' -type d -o -name grade-results \) -prune \
                                 -o \( -type f -o -type l \) -print0)
 fi

@@ -6,7 +6,7 @@
 set -euo pipefail
 
 debian_packages=(
-  cmake ninja-build g++ pkg-config
+  cmake ninja-build g++ pkg-config ccache
   libglfw3-dev libglm-dev catch2 libstb-dev fonts-dejavu-core zlib1g-dev libtinyobjloader-dev
   nlohmann-json3-dev
   libegl-dev libgl-dev libgl1-mesa-dri libegl-mesa0 libosmesa6-dev

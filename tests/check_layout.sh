@@ -1,7 +1,11 @@
 #!/usr/bin/env bash
 # The kit's layering (CONTRIBUTING.md): the framework in common/ stands in folders by concern and knows nothing
 # of the labs' domain code (support/), the labs, their solutions or the grader; support/ knows nothing of the
-# labs or the grader. Prints every breach and exits 1, so a newcomer's shortcut is caught where it is made.
+# labs or the grader. Neither knows the instructor's yardsticks in reference/, nor do the grader and the tools
+# (all four ship in the student edition, which has no reference/); reference/ builds on common/ and support/, and
+# a lab includes it only under #ifdef GSV_HAVE_REFERENCE (its solution build), so the starters, the student
+# edition and the grader's submission build compile without it. Prints every breach and exits 1, so a newcomer's
+# shortcut is caught where it is made.
 set -euo pipefail
 cd "${1:-$(dirname "$0")/..}"
 fail=0
@@ -10,10 +14,25 @@ breach() { echo "check_layout: $*"; fail=1; }
 loose=$(find common support -maxdepth 1 -type f ! -name CMakeLists.txt ! -name README.md)
 [ -z "$loose" ] || breach "files standing directly in common/ or support/ (put each in the folder of its concern): $loose"
 
-inward=$(grep -rnE '#include "(support|labs|solutions|grader|tests)/' common || true)
-[ -z "$inward" ] || breach "the framework includes domain, lab or grader code:"$'\n'"$inward"
-outward=$(grep -rnE '#include "(labs|solutions|grader|tests)/' support || true)
-[ -z "$outward" ] || breach "support/ includes lab or grader code:"$'\n'"$outward"
+inward=$(grep -rnE '#include "(support|reference|labs|solutions|grader|tests)/' common || true)
+[ -z "$inward" ] || breach "the framework includes domain, reference, lab or grader code:"$'\n'"$inward"
+outward=$(grep -rnE '#include "(reference|labs|solutions|grader|tests)/' support || true)
+[ -z "$outward" ] || breach "support/ includes reference, lab or grader code:"$'\n'"$outward"
+shipped=$(grep -rnE '#include "reference/' grader tools 2>/dev/null || true)
+[ -z "$shipped" ] || breach "the grader or a tool includes reference/, which the student edition has not got:"$'\n'"$shipped"
+if [ -d reference ]; then
+  upward=$(grep -rnE '#include "(labs|solutions|grader|tests)/' reference || true)
+  [ -z "$upward" ] || breach "reference/ includes lab, grader or test code by path (a lab's own headers are found by name):"$'\n'"$upward"
+fi
+# In a lab, every #include "reference/..." sits inside #ifdef GSV_HAVE_REFERENCE ... #endif.
+unguarded=$(find solutions labs -type f \( -name '*.cpp' -o -name '*.h' \) -exec awk '
+  /^[ \t]*#[ \t]*if/ { depth++; guarded[depth] = ($0 ~ /^[ \t]*#[ \t]*ifdef[ \t]+GSV_HAVE_REFERENCE/) }
+  /^[ \t]*#[ \t]*endif/ { depth-- }
+  /^[ \t]*#[ \t]*include[ \t]+"reference\// {
+    ok = 0; for (d = 1; d <= depth; d++) if (guarded[d]) ok = 1
+    if (!ok) print FILENAME ":" FNR ": " $0
+  }' {} + || true)
+[ -z "$unguarded" ] || breach "a lab includes reference/ outside #ifdef GSV_HAVE_REFERENCE:"$'\n'"$unguarded"
 
 # A lab's own file names (its shaders, its C++) have no business in the framework, not even in a comment.
 names=$(find solutions -mindepth 2 -maxdepth 2 -type f ! -name lab.cpp ! -name README.md -printf '%f\n' | sort -u)
@@ -21,5 +40,5 @@ for name in $names; do
   hits=$(grep -rnwF "$name" common || true)
   [ -z "$hits" ] || breach "the framework names lab file '$name':"$'\n'"$hits"
 done
-[ $fail -eq 0 ] && echo "check_layout: common/ and support/ keep to their layers ($(find common -name '*.cpp' -o -name '*.h' | wc -l) framework files, $(find support -name '*.cpp' -o -name '*.h' | wc -l) support files)"
+[ $fail -eq 0 ] && echo "check_layout: common/, support/ and reference/ keep to their layers ($(find common -name '*.cpp' -o -name '*.h' | wc -l) framework files, $(find support -name '*.cpp' -o -name '*.h' | wc -l) support files, $(find reference -name '*.cpp' -o -name '*.h' 2>/dev/null | wc -l) reference files)"
 exit $fail

@@ -27,6 +27,16 @@ inline std::vector<std::string> labs_with_mutants() {
 
 inline Json mutant_spec(const std::string& lab) { return read_json_file(source_root() / "tests" / "mutants" / (lab + ".json")); }
 
+// A submission (in a fresh temp folder named after `name`) whose labs/ hold the lab's reference solution, for the
+// grader to build like any student's.
+inline std::filesystem::path solution_submission(const std::string& lab, const std::string& name) {
+    const std::string lab_dir = mutant_spec(lab).string_at("lab_dir");
+    const auto submission = temp_dir(name);
+    std::filesystem::create_directories(submission / "labs");
+    std::filesystem::copy(source_root() / "solutions" / lab_dir, submission / "labs" / lab_dir, std::filesystem::copy_options::recursive);
+    return submission;
+}
+
 // Applies one {find, replace} edit (or each of "edits") to the file named by `edit`'s "file".
 inline void apply_edits(const std::filesystem::path& lab_folder, const Json& edit) {
     const std::filesystem::path file = lab_folder / edit.string_at("file");

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The student edition works: `scripts/kit export-student` leaves out solutions/, tests/ and grader/hidden/; the
+# The student edition works: `scripts/kit export-student` leaves out solutions/, reference/, tests/ and grader/hidden/;
+# --labs refuses a lab whose starter holds an unreleased lab's answers (labs/README.md); the
 # export configures and builds on its own; its self-check (golden references) gives the shipped lab01 starter 0
 # points and the reference solution, copied into the export's labs/, full marks. Slow: it builds the export
 # (lab01 and gsv-grade only, 2 cores). Exit 0: pass, 1: fail.
@@ -24,9 +25,10 @@ run() { "$@" >"$log" 2>&1; }
 step "export"
 run "$root/scripts/kit" export-student --include-untracked "$kit" || fail "scripts/kit export-student failed"
 tail -n 1 "$log"
-for p in solutions tests grader/hidden build grade-results .git; do
+for p in solutions reference tests grader/hidden build grade-results .git; do
   [ ! -e "$kit/$p" ] || fail "$p was exported"
 done
+grep -q "later labs' starters hold earlier labs' answers" "$log" || fail "a full export does not say that later labs hold earlier answers"
 for p in labs/lab01_gooch grader/golden/lab01 grader/cases/lab01.json README.md .github/workflows/self-check.yml \
          grader/ci/classroom_points.py; do
   [ -e "$kit/$p" ] || fail "$p is missing from the export"
@@ -56,6 +58,20 @@ print("\n".join(missing))
 sys.exit(1 if missing else 0)
 PY
 if ! { [ -x "$kit/.ci/run" ] && [ -x "$kit/scripts/kit" ]; }; then fail "scripts lost their executable bit"; fi
+
+# Week by week: a lab goes out only with the labs whose answers its starter holds (labs/README.md's table).
+step "export --labs"
+run "$root/scripts/kit" export-student --labs lab01,lab03 "$tmp/week3" && fail "--labs lab01,lab03 was not refused (lab03 holds lab02's answers)"
+grep -q "lab03's starter holds lab02's answers (lic_time.frag): release lab02 too" "$log" ||
+  fail "no clear message for releasing lab03 without lab02"
+[ ! -e "$tmp/week3/labs" ] || fail "a refused --labs export left files behind"
+run "$root/scripts/kit" export-student --labs lab01,lab02,lab03 "$tmp/week3" || fail "--labs lab01,lab02,lab03 failed"
+for p in labs/lab03_texture_arrays grader/cases/lab02.json grader/golden/lab03; do
+  [ -e "$tmp/week3/$p" ] || fail "--labs lab01,lab02,lab03 left out $p"
+done
+for p in labs/lab04_terrain grader/cases/lab04.json grader/golden/lab07 reference; do
+  [ ! -e "$tmp/week3/$p" ] || fail "--labs lab01,lab02,lab03 exported $p"
+done
 
 # DEST must be new or empty, and outside the kit.
 run "$root/scripts/kit" export-student "$kit" && fail "exporting into a non-empty folder was not refused"

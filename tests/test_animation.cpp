@@ -215,7 +215,7 @@ public:
         return info;
     }
     void declare(Params& params) override {
-        ParamSpec& phase = params.add_float("phase", 0.25, 0, 1, "the animated parameter");
+        gsv::Param<float> phase = params.add_float("phase", 0.25, 0, 1, "the animated parameter");
         if (animated_) phase.animated();
         params.add_float("tint", 0, 0, 1, "green, set with --set or a case");
         params.add_bool("poison", false, "NaN from phase 0.5 on");

@@ -1,8 +1,9 @@
-// The framework's change tracking (common/app/change_tracker.h): what a build read is what decides a rebuild.
+// The framework's change tracking (common/params/change_tracker.h): what a build read is what decides a rebuild.
 #include "catch.hpp"
+#include "common/shader/param_uniforms.h"
 
-#include "common/app/change_tracker.h"
-#include "common/app/params.h"
+#include "common/params/change_tracker.h"
+#include "common/params/params.h"
 #include "common/shader/shader_program.h"
 #include "gl_fixture.h"
 
@@ -104,14 +105,14 @@ TEST_CASE("change tracking: a program in use counts its active uniforms and ever
     p.add_float("ignored", 0.5, 0, 1, "declared in the shader, dropped as unused");
     p.add_float("camera_yaw", 0, -360, 360, "no uniform of that name in the shader");
     p.add_effect("glow", false, "compiled in");
-    const ShaderProgram program = test::test_program(*context, Profile::Core, {"quad.vert", "tracked.frag"}, p.defines());
+    const ShaderProgram program = test::test_program(*context, Profile::Core, {"quad.vert", "tracked.frag"}, param_defines(p));
     ChangeTracker drawn;
     int draws = 0;
     const auto draw = [&] {
         return drawn.run_if_changed(p, [&] {
             ++draws;
             program.use();
-            p.apply_uniforms(program);
+            apply_param_uniforms(p, program);
         });
     };
     CHECK(draw());

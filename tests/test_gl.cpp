@@ -403,8 +403,11 @@ TEST_CASE("timing: interleaved rounds, quartiles, ratios with the rounds' spread
     CHECK(times.round_medians[1].size() == 3);
     const TimeRatio ratio = times.ratio(1, 0);
     CHECK(ratio.median == Approx(3.0).epsilon(0.25));
-    CHECK(ratio.low <= ratio.median + 1e-12);
-    CHECK(ratio.high >= ratio.median - 1e-12);
+    // The rounds' own ratios spread around it; the ratio of the overall medians need not lie between the lowest and
+    // highest of them (it did not once under load: 2.98921 over a highest of 2.98898), so each is held to 3 itself.
+    CHECK(ratio.low <= ratio.high);
+    CHECK(ratio.low == Approx(3.0).epsilon(0.25));
+    CHECK(ratio.high == Approx(3.0).epsilon(0.25));
     // A frame of a fraction of a millisecond is timed in batches of them: still its own time per frame.
     int tiny = 0;
     const InterleavedTimes batched = time_interleaved({{nullptr, [&] { ++tiny; sleep_ms(1); }}}, 0, 2, 2);

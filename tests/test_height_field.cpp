@@ -3,7 +3,7 @@
 #include "common/core/error.h"
 #include "gl_fixture.h"
 #include "support/terrain/height_field.h"
-#include "support/terrain/terrain_normal.h"
+#include "reference/terrain/terrain_normal.h"
 #include "support/terrain/terrain_procedural.h"
 #include "test_support.h"
 

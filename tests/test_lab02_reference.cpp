@@ -481,7 +481,7 @@ TEST_CASE("lab02 reference: the comparison rejects a backward loop that steps fo
          "return all(greaterThanEqual(st, vec2(0.0))) && all(lessThanEqual(st, vec2(1.0)));", "return true;",
          {"field=source", "length=40"}},
         // The half step computed and then ignored: Euler with the midpoint's name.
-        {"midpoint-is-euler", "streamline.glsl", "stepDirection(flowAt(half_step))", "stepDirection(flowAt(st))",
+        {"midpoint-is-euler", "streamline.glsl", "stepDirection(flowAt(halfStep))", "stepDirection(flowAt(st))",
          {"field=rotation", "step=midpoint", "length=80"}},
         // normalized=on ignored (the starter's stepDirection): slow regions keep their short streaks.
         {"normalized-ignored", "streamline.glsl", "return safeNormalize(v, vec2(0.0));", "return v;",

@@ -13,7 +13,7 @@
 #include "common/image/image_compare.h"
 #include "common/scene/mesh_data.h"
 #include "support/flow/flow_field.h"
-#include "support/flow/time_slices.h"
+#include "reference/flow/time_slices.h"
 
 #include <cctype>
 #include <cmath>

@@ -8,7 +8,7 @@
 #include "common/gl/gl.h"
 #include "common/gl/texture.h"
 #include "gl_fixture.h"
-#include "support/particles/particle_cpu.h"
+#include "reference/particles/particle_cpu.h"
 #include "support/particles/particle_grid.h"
 #include "support/particles/particle_motion.h"
 

@@ -156,7 +156,7 @@ TEST_CASE("lab06: bad settings, network files and volumes give one line naming t
         {{"shader=handwritten", "compositing=mip"}, "raycaster.shader = 'handwritten' draws only compositing dvr"},
         {{"network=" + bad_network.string()}, "bad.network:2: "},
         {{"network=" + open_network.string()}, "are not connected"},
-        {{"network=" + bad_value.string()}, "raycaster.samples_per_voxel = 'lots' is not a number"},
+        {{"network=" + bad_value.string()}, "parameter 'samples_per_voxel' = 'lots' is not a number"},
         {{"volume=file"}, "volume=file needs volume_file=PATH"},
         {{"volume=file", "volume_file=" + not_nifti.string()}, "head.nii"},
         {{"samples_per_voxel=0"}, "samples_per_voxel"},
@@ -167,6 +167,43 @@ TEST_CASE("lab06: bad settings, network files and volumes give one line naming t
         CHECK(run.exit_code() != 0);
         CHECK(run.process.output.find(c.says) != std::string::npos);
         CHECK_FALSE(fs::exists(run.png));
+    }
+}
+
+TEST_CASE("lab06: samples_per_voxel out of range is the same one line from the command line, a case file and a network file", "[lab][lab06]") {
+    // Declared once, by the ray caster (ray_traversal.cpp): one range and one parser (Params::set) wherever it is set.
+    const std::string says = "parameter 'samples_per_voxel' = 100 is out of range [0.05, 32]";
+    test::TempDir dir;
+    const fs::path root = dir.path("kit");
+    test::copy_lab_kit(test::source_root(), root, "lab06_raycasting");
+    const fs::path cases = root / "grader" / "cases" / "lab06.json";
+    fs::create_directories(cases.parent_path());
+    std::string text = test::read_text(test::source_root() / "grader" / "cases" / "lab06.json");
+    const std::string from = "\"samples_per_voxel=4\"";
+    REQUIRE(text.find(from) != std::string::npos);
+    text.replace(text.find(from), from.size(), "\"samples_per_voxel=100\"");
+    std::ofstream(cases) << text;
+    std::string network = test::read_text(test::source_root() / "solutions" / "lab06_raycasting" / "raycast.network");
+    const std::string raycaster = "processor RayTraversal raycaster";
+    REQUIRE(network.find(raycaster) != std::string::npos);
+    network.insert(network.find(raycaster) + raycaster.size(), " samples_per_voxel=100");
+    const fs::path network_file = dir.write("far.network", network);
+    const std::vector<std::string> env{"GSV_ROOT=" + root.string()};
+    const std::vector<std::pair<std::string, test::LabRun>> runs = {
+        {"command line", test::render(kLab, {"samples_per_voxel=100"}, dir.path(), "cli", {}, env)},
+        {"case file", test::run_lab(kLab, {"render", "--case", "corrected", "--out", "case.png"}, dir.path(), env)},
+        {"network file", test::render(kLab, {"network=" + network_file.string()}, dir.path(), "network", {}, env)},
+    };
+    for (const auto& [where, run] : runs) {
+        INFO(where << ": " << run.process.output);
+        CHECK(run.exit_code() != 0);
+        CHECK(run.process.output.find(says) != std::string::npos);
+        // One line: the message ends its line, and no other line speaks of the parameter.
+        const std::string& out = run.process.output;
+        const std::size_t at = out.find(says);
+        CHECK((at == std::string::npos || at + says.size() == out.size() || out[at + says.size()] == '\n'));
+        CHECK(out.find("samples_per_voxel") == at + std::string("parameter '").size());
+        CHECK(out.find("samples_per_voxel", at + says.size()) == std::string::npos);
     }
 }
 

@@ -12,6 +12,7 @@
 #include "common/gl/gpu_mesh.h"
 #include "common/image/image.h"
 #include "common/shader/shader_program.h"
+#include "reference/spectral/lagrange_basis.h"
 #include "support/spectral/lagrange.h"
 #include "support/spectral/spectral_mesh.h"
 

@@ -2,13 +2,14 @@
 #include "catch.hpp"
 #include "test_support.h"
 
-#include "common/app/case_file.h"
+#include "common/params/case_file.h"
 #include "common/app/sweep_report.h"
 #include "gl_fixture.h"
 #include "grader_fixture.h"
 #include "lab_runner.h"
 
 #include "common/image/image_compare.h"
+#include "grader/cases.h"
 #include "grader/grade.h"
 
 #include <algorithm>
@@ -162,33 +163,35 @@ TEST_CASE("lab01: core and compat profiles, EGL and OSMesa backends give the sam
     }
 }
 
-// Tagged [timing] (ctest runs it alone): live grading times the solution against itself.
-TEST_CASE("every lab: the solution scores full marks against the goldens and live, and the starter fails every TODO", "[lab][labs][timing]") {
-  for (const std::string lab : labs_on_gl41()) {
-    INFO(lab);
-    const std::string lab_dir = test::mutant_spec(lab).string_at("lab_dir");
-    // A submission whose labs/ are the reference solution, built by the grader like any other.
-    const auto submission = test::temp_dir("grade-solution-submission-" + lab);
-    fs::create_directories(submission / "labs");
-    fs::copy(test::source_root() / "solutions" / lab_dir, submission / "labs" / lab_dir, fs::copy_options::recursive);
+namespace {
+
+GradeOptions grading_options(const std::string& lab) {
     GradeOptions options;
     options.kit_root = test::source_root();
     options.bin_dir = test::bin_dir();
     options.labs = {lab};
     options.allow_readable_kit = true;  // grading, not the walls, is tested here
+    return options;
+}
+
+// The solution scores full marks against the goldens and live (hidden cases included), and the shipped starter fails
+// every TODO. Timing is graded apart (below), alone: here the labs run beside other tests.
+void solution_full_marks_starter_zero(const std::string& lab) {
+    GradeOptions options = grading_options(lab);
+    options.timing = false;
+    options.seed = 11;
+    // The live solution run and the starter's share their references: one render of each case.
+    options.reference_cache = std::make_shared<ReferenceCache>();
     for (bool self_check : {true, false}) {
-        options.submission = submission;
+        options.submission = test::solution_submission(lab, "grade-solution-submission-" + lab);
         options.self_check = self_check;
         // Relative, as `scripts/kit grade` passes it: the lab processes run in per-case folders.
-        const fs::path out = test::temp_dir(self_check ? "grade-golden" : "grade-live");
+        const fs::path out = test::temp_dir(self_check ? "grade-golden-" + lab : "grade-live-" + lab);
         fs::current_path(out.parent_path());
         options.out_dir = out.filename();
-        // Live: the hidden cases and the timing against itself too, which noise must not fail.
-        options.seed = 11;
         const GradeReport report = grade(options);
         CHECK(report.mode == (self_check ? "self-check" : "instructor"));
         CHECK(report.hidden_included == !self_check);
-        CHECK(report.timing_included == !self_check);
         REQUIRE(report.results.size() >= 8);
         for (const auto& r : report.results) {
             INFO(r.name << " " << r.kind << ": " << status_name(r.status) << " " << r.detail << "\n" << r.output);
@@ -200,8 +203,7 @@ TEST_CASE("every lab: the solution scores full marks against the goldens and liv
     // The shipped starter: it builds and runs, and every TODO's check fails.
     options.submission.clear();
     options.self_check = false;
-    options.out_dir = test::temp_dir("grade-starter");
-    options.timing = false;
+    options.out_dir = test::temp_dir("grade-starter-" + lab);
     std::set<std::string> todos_failed, todos;
     for (const auto& r : grade(options).results) {
         INFO(r.name << ": " << status_name(r.status) << " " << r.detail);
@@ -212,6 +214,42 @@ TEST_CASE("every lab: the solution scores full marks against the goldens and liv
         if (r.points == 0) todos_failed.insert(r.todo);
     }
     CHECK(todos_failed == todos);
+}
+
+}  // namespace
+
+TEST_CASE("lab01: the solution scores full marks against the goldens and live, and the starter fails every TODO", "[lab][labs]") { solution_full_marks_starter_zero("lab01"); }
+TEST_CASE("lab02: the solution scores full marks against the goldens and live, and the starter fails every TODO", "[lab][labs]") { solution_full_marks_starter_zero("lab02"); }
+TEST_CASE("lab03: the solution scores full marks against the goldens and live, and the starter fails every TODO", "[lab][labs]") { solution_full_marks_starter_zero("lab03"); }
+TEST_CASE("lab04: the solution scores full marks against the goldens and live, and the starter fails every TODO", "[lab][labs]") { solution_full_marks_starter_zero("lab04"); }
+TEST_CASE("lab06: the solution scores full marks against the goldens and live, and the starter fails every TODO", "[lab][labs]") { solution_full_marks_starter_zero("lab06"); }
+TEST_CASE("lab07: the solution scores full marks against the goldens and live, and the starter fails every TODO", "[lab][labs]") { solution_full_marks_starter_zero("lab07"); }
+
+TEST_CASE("every lab on OpenGL 4.1 has its full-marks test above", "[lab][labs]") {
+    CHECK(labs_on_gl41() == std::vector<std::string>{"lab01", "lab02", "lab03", "lab04", "lab06", "lab07"});
+}
+
+// Tagged [timing] (ctest runs it alone): live grading times the solution against itself, which noise must not fail.
+// Only the timed cases: the rest of live grading is the test above, run beside other tests.
+TEST_CASE("every lab: the solution's timed cases pass their timing against itself", "[lab][labs][timing]") {
+  for (const std::string lab : labs_on_gl41()) {
+    INFO(lab);
+    GradeOptions options = grading_options(lab);
+    options.submission = test::solution_submission(lab, "grade-timing-submission-" + lab);
+    options.hidden = false;
+    for (const GradeCase& c : load_lab_cases(test::source_root() / "grader" / "cases" / (lab + ".json")).cases)
+        if (c.timing.points > 0) options.cases.push_back(c.name);
+    REQUIRE_FALSE(options.cases.empty());
+    options.out_dir = test::temp_dir("grade-timing-" + lab);
+    const GradeReport report = grade(options);
+    CHECK(report.timing_included);
+    int timed = 0;
+    for (const auto& r : report.results) {
+        INFO(r.name << " " << r.kind << ": " << status_name(r.status) << " " << r.detail << "\n" << r.output);
+        CHECK(r.status == CaseStatus::Passed);
+        timed += r.kind == "timing";
+    }
+    CHECK(timed == static_cast<int>(options.cases.size()));
   }
 }
 

@@ -4,6 +4,7 @@
 #include "catch.hpp"
 
 #include "common/core/error.h"
+#include "reference/spectral/lagrange_basis.h"
 #include "support/spectral/lagrange.h"
 #include "support/spectral/spectral_mesh.h"
 

@@ -7,7 +7,7 @@
 #include "test_support.h"
 
 #include "support/flow/flow_field.h"
-#include "support/flow/lic_reference.h"
+#include "reference/flow/lic_reference.h"
 #include "support/flow/noise.h"
 
 #include <glm/glm.hpp>

@@ -1,7 +1,8 @@
 #include "catch.hpp"
 
 #include "common/core/error.h"
-#include "support/particles/particle_cpu.h"
+#include "reference/particles/grid_lookup.h"
+#include "reference/particles/particle_cpu.h"
 #include "support/particles/particle_grid.h"
 #include "support/particles/particle_motion.h"
 #include "test_support.h"
@@ -217,9 +218,9 @@ TEST_CASE("particles: grid lookup gives texels at centres, the trilinear mix bet
     for (int i : {0, 3, 15})
         for (int j : {0, 7, 15})
             for (int k : {0, 9, 15}) {
-                const glm::dvec3 got = grid.lookup(glm::dvec3(position(i), position(j), position(k)));
+                const glm::dvec3 got = grid_lookup(grid, glm::dvec3(position(i), position(j), position(k)));
                 CHECK(got == glm::dvec3(grid.texel(i, j, k)));
-                CHECK(grid.lookup(glm::vec3(position(i), position(j), position(k))) == grid.texel(i, j, k));
+                CHECK(grid_lookup(grid, glm::vec3(position(i), position(j), position(k))) == grid.texel(i, j, k));
             }
 
     // Between centres: the weighted sum of the eight neighbours.
@@ -233,22 +234,22 @@ TEST_CASE("particles: grid lookup gives texels at centres, the trilinear mix bet
         const double weight = (corner.x ? f.x : 1 - f.x) * (corner.y ? f.y : 1 - f.y) * (corner.z ? f.z : 1 - f.z);
         want += weight * glm::dvec3(grid.texel(i0.x + corner.x, i0.y + corner.y, i0.z + corner.z));
     }
-    const glm::dvec3 got = grid.lookup(p);
+    const glm::dvec3 got = grid_lookup(grid, p);
     for (int a = 0; a < 3; ++a) CHECK(got[a] == Approx(want[a]).epsilon(1e-14).margin(1e-15));
-    const glm::vec3 got_f = grid.lookup(glm::vec3(p));
+    const glm::vec3 got_f = grid_lookup(grid, glm::vec3(p));
     for (int a = 0; a < 3; ++a) CHECK(got_f[a] == Approx(want[a]).margin(1e-6));
 
     // Clamped: the outer half texel and beyond take the edge texels.
-    CHECK(grid.lookup(glm::dvec3(1, 1, 1)) == glm::dvec3(grid.texel(15, 15, 15)));
-    CHECK(grid.lookup(glm::dvec3(-1, -1, -1)) == glm::dvec3(grid.texel(0, 0, 0)));
-    CHECK(grid.lookup(glm::dvec3(7, -3, position(9))) == glm::dvec3(grid.texel(15, 0, 9)));
-    CHECK(grid.lookup(glm::vec3(1, 1, 1)) == grid.texel(15, 15, 15));
+    CHECK(grid_lookup(grid, glm::dvec3(1, 1, 1)) == glm::dvec3(grid.texel(15, 15, 15)));
+    CHECK(grid_lookup(grid, glm::dvec3(-1, -1, -1)) == glm::dvec3(grid.texel(0, 0, 0)));
+    CHECK(grid_lookup(grid, glm::dvec3(7, -3, position(9))) == glm::dvec3(grid.texel(15, 0, 9)));
+    CHECK(grid_lookup(grid, glm::vec3(1, 1, 1)) == grid.texel(15, 15, 15));
 
     // Trilinear interpolation of a linear field is the field itself, between the outermost centres.
     const VelocityGrid linear = VelocityGrid::sample(ParticleScene::Rotation, n);
     for (const glm::dvec3& q : inner_points(50, 0.9, 3)) {
         const glm::dvec3 exact = gsv::field_velocity<double>(ParticleScene::Rotation, q);
-        CHECK(glm::length(linear.lookup(q) - exact) < 1e-14);
+        CHECK(glm::length(grid_lookup(linear, q) - exact) < 1e-14);
     }
 }
 

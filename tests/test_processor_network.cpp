@@ -17,14 +17,14 @@ using gsv::RunState;
 using gsv::test::gsv_error_message;
 
 // Processors that pass numbers: a source, a doubler, an adder with an optional input, a sink. Each fails
-// with the text of its "fail" property when that is set, so a test can break any one of them.
+// with the text of its "fail" parameter when that is set, so a test can break any one of them.
 class NumberProcessor : public gsv::Processor {
 public:
     using Processor::Processor;
 
 protected:
     void fail_if_told() const {
-        if (!property("fail").empty()) throw gsv::Error(property("fail"));
+        if (!param_text("fail").empty()) throw gsv::Error(param_text("fail"));
     }
 };
 
@@ -32,7 +32,7 @@ class NumberSource : public NumberProcessor {
 public:
     explicit NumberSource(double value = 1) : NumberProcessor("NumberSource"), value_(value) {
         add_output("value", PortType::Volume);
-        add_property("fail", "");
+        params().add_text("fail", "", "the error process() throws, when not empty");
     }
     void process() override {
         fail_if_told();
@@ -48,7 +48,7 @@ public:
     Doubler() : NumberProcessor("Doubler") {
         add_input("in", PortType::Volume);
         add_output("out", PortType::Volume);
-        add_property("fail", "");
+        params().add_text("fail", "", "the error process() throws, when not empty");
     }
     void process() override {
         fail_if_told();
@@ -62,7 +62,7 @@ public:
         add_input("a", PortType::Volume);
         add_optional_input("b", PortType::Volume);
         add_output("sum", PortType::Volume);
-        add_property("fail", "");
+        params().add_text("fail", "", "the error process() throws, when not empty");
     }
     void process() override {
         fail_if_told();
@@ -75,7 +75,7 @@ class Sink : public NumberProcessor {
 public:
     Sink() : NumberProcessor("Sink") {
         add_input("in", PortType::Volume);
-        add_property("fail", "");
+        params().add_text("fail", "", "the error process() throws, when not empty");
     }
     void process() override {
         fail_if_told();
@@ -115,9 +115,9 @@ class VolumeSource : public TextProcessor {
 public:
     VolumeSource() : TextProcessor("VolumeSource") {
         add_output("volume", PortType::Volume);
-        add_property("file", "data/volumes/anatomical.nii");
+        params().add_text("file", "data/volumes/anatomical.nii", "the volume's file");
     }
-    void process() override { out("volume", "volume(" + property("file") + ")"); }
+    void process() override { out("volume", "volume(" + param_text("file") + ")"); }
 };
 
 class ProxySource : public TextProcessor {
@@ -148,15 +148,15 @@ public:
         add_input("volume", PortType::Volume);
         add_input("entry", PortType::Image);
         add_input("exit", PortType::Image);
-        add_property("compositing", "dvr", {"dvr", "mip", "iso"});
-        add_property("gradient", "central", {"central", "forward", "none"});
-        add_property("shading", "phong", {"phong", "none"});
+        params().add_choice("compositing", "dvr", {"dvr", "mip", "iso"}, "the compositing");
+        params().add_choice("gradient", "central", {"central", "forward", "none"}, "the gradient");
+        params().add_choice("shading", "phong", {"phong", "none"}, "the shading");
         add_output("image", PortType::Image);
     }
     void process() override {
         // What a shader that does not compile looks like from the network's side.
-        if (property("compositing") == "iso") throw gsv::Error("raycast.frag:12: 'uIsoValue' : undeclared identifier");
-        out("image", property("compositing") + "(" + in("volume") + ", " + in("entry") + ", " + in("exit") + ")");
+        if (param_text("compositing") == "iso") throw gsv::Error("raycast.frag:12: 'uIsoValue' : undeclared identifier");
+        out("image", param_text("compositing") + "(" + in("volume") + ", " + in("entry") + ", " + in("exit") + ")");
     }
 };
 
@@ -375,7 +375,7 @@ TEST_CASE("network: a failing processor marks everything downstream not run whil
     network.connect("left_twice.out", "left_sink.in");
     network.connect("right.value", "right_twice.in");
     network.connect("right_twice.out", "right_sink.in");
-    network.processor("left_twice").set_property("fail", "double.frag:3: syntax error");
+    network.processor("left_twice").set_param("fail", "double.frag:3: syntax error");
 
     const gsv::RunReport report = network.run();
     CHECK_FALSE(report.ok());
@@ -408,8 +408,8 @@ TEST_CASE("network: a skip two steps down names the failures that caused it", "[
     network.connect("b.value", "add.b");
     network.connect("add.sum", "twice.in");
     network.connect("twice.out", "sink.in");
-    network.processor("a").set_property("fail", "cannot read a.nii");
-    network.processor("b").set_property("fail", "cannot read b.nii");
+    network.processor("a").set_param("fail", "cannot read a.nii");
+    network.processor("b").set_param("fail", "cannot read b.nii");
     const gsv::RunReport report = network.run();
     CHECK(report.text() ==
           "a: failed: cannot read a.nii\n"
@@ -424,11 +424,11 @@ TEST_CASE("network: a second run starts clean", "[unit][network]") {
     network.add<NumberSource>("source", 4.0);
     network.add<Sink>("sink");
     network.connect("source.value", "sink.in");
-    network.processor("source").set_property("fail", "broken");
+    network.processor("source").set_param("fail", "broken");
     CHECK(network.run().text() == "source: failed: broken\nsink: not run: source failed\n");
     CHECK(network.processor("source").outputs()[0].data.empty());
 
-    network.processor("source").set_property("fail", "");
+    network.processor("source").set_param("fail", "");
     CHECK(network.run().ok());
     CHECK(network.processor("source").error().empty());
     CHECK(network.processor("sink").state() == RunState::Ran);
@@ -475,46 +475,48 @@ TEST_CASE("network: any exception from process is reported but a missing GL feat
     CHECK(network.processor("old_gl").error() == "compute shaders need OpenGL 4.3");
 }
 
-TEST_CASE("network: properties are declared with defaults and choices and unknown ones list the known", "[unit][network]") {
+TEST_CASE("network: parameters are declared with defaults and choices and unknown ones list the known", "[unit][network]") {
     RayTraversal raycaster;
-    CHECK(raycaster.property("compositing") == "dvr");
-    CHECK_FALSE(raycaster.properties()[0].set);
-    CHECK(gsv_error_message([&] { raycaster.set_property("shadng", "none"); }) ==
-          "RayTraversal has no property 'shadng' (its properties: compositing, gradient, shading)");
+    CHECK(raycaster.param_text("compositing") == "dvr");
+    CHECK_FALSE(raycaster.is_set("compositing"));
+    CHECK(gsv_error_message([&] { raycaster.set_param("shadng", "none"); }) ==
+          "RayTraversal has no parameter 'shadng' (its parameters: compositing, gradient, shading)");
     gsv::Network network;
     gsv::Processor& named = network.add("raycaster", std::make_unique<RayTraversal>());
-    named.set_property("compositing", "mip");
-    CHECK(named.property("compositing") == "mip");
-    CHECK(named.properties()[0].set);
-    CHECK(gsv_error_message([&] { named.set_property("compositing", "dvx"); }) ==
-          "raycaster.compositing = 'dvx' is not one of: dvr, mip, iso");
-    CHECK(gsv_error_message([&] { (void)named.property("shadng"); }) ==
-          "raycaster (RayTraversal) has no property 'shadng' (its properties: compositing, gradient, shading)");
+    named.set_param("compositing", "mip");
+    CHECK(named.param_text("compositing") == "mip");
+    CHECK(named.is_set("compositing"));
+    CHECK_FALSE(named.is_set("shading"));
+    // The one parser of every parameter (Params::set): the same words as on the command line.
+    CHECK(gsv_error_message([&] { named.set_param("compositing", "dvx"); }) ==
+          "parameter 'compositing' = 'dvx' is not one of: dvr, mip, iso");
+    CHECK(gsv_error_message([&] { (void)named.param_text("shadng"); }) ==
+          "raycaster (RayTraversal) has no parameter 'shadng' (its parameters: compositing, gradient, shading)");
 
     class Sloppy : public gsv::Processor {
     public:
         explicit Sloppy(int mistake) : Processor("Sloppy") {
-            add_property("mode", "a", {"a", "b"});
+            params().add_choice("mode", "a", {"a", "b"}, "a mode");
             add_input("in", PortType::Image);
             add_output("out", PortType::Image);
-            if (mistake == 0) add_property("mode", "b");
-            if (mistake == 1) add_property("level", "high", {"low", "mid"});
+            if (mistake == 0) params().add_choice("mode", "b", {"a", "b"}, "a mode");
+            if (mistake == 1) params().add_choice("level", "high", {"low", "mid"}, "a level");
             if (mistake == 2) add_optional_input("in", PortType::Volume);
             if (mistake == 3) add_output("out", PortType::Volume);
             if (mistake == 4) add_output("out.png", PortType::Image);
-            if (mistake == 5) add_property("a=b", "");
+            if (mistake == 5) params().add_text("a=b", "", "a name no file can hold");
         }
         void process() override {}
     };
-    CHECK(gsv_error_message([] { Sloppy(0); }) == "Sloppy: property 'mode' declared twice");
+    CHECK(gsv_error_message([] { Sloppy(0); }) == "parameter 'mode' declared twice");
     CHECK(gsv_error_message([] { Sloppy(1); }) ==
-          "Sloppy: property 'level' defaults to 'high', which is not one of: low, mid");
+          "parameter 'level' defaults to 'high', which is not one of its choices");
     CHECK(gsv_error_message([] { Sloppy(2); }) == "Sloppy: input 'in' declared twice");
     CHECK(gsv_error_message([] { Sloppy(3); }) == "Sloppy: output 'out' declared twice");
     CHECK(gsv_error_message([] { Sloppy(4); }) ==
           "Sloppy: output name 'out.png' may only use letters, digits, '_' and '-'");
     CHECK(gsv_error_message([] { Sloppy(5); }) ==
-          "Sloppy: property name 'a=b' may only use letters, digits, '_' and '-'");
+          "parameter name 'a=b' may only use letters, digits, '_' and '-'");
 }
 
 TEST_CASE("network: processor names are unique and file-safe and unknown ones list the known", "[unit][network]") {
@@ -559,7 +561,7 @@ TEST_CASE("network: the registry creates known types and lists them for an unkno
 TEST_CASE("network file: the lab network parses and runs from source to canvas", "[unit][network]") {
     gsv::Network network = gsv::parse_network(kLabNetwork, "dvr.txt", lab_registry());
     CHECK(order_names(network) == std::vector<std::string>{"source", "proxy", "entry_exit", "raycaster", "output"});
-    CHECK(network.processor("raycaster").property("shading") == "phong");
+    CHECK(network.processor("raycaster").param_text("shading") == "phong");
     CHECK(network.connections().size() == 6);
     CHECK(network.run().ok());
     CHECK(static_cast<Canvas&>(network.processor("output")).shown ==
@@ -567,7 +569,7 @@ TEST_CASE("network file: the lab network parses and runs from source to canvas",
           "back(cube(volume(data/volumes/anatomical.nii))))");
 
     // A shader that fails on the raycaster shows there; the canvas says why it has nothing.
-    network.processor("raycaster").set_property("compositing", "iso");
+    network.processor("raycaster").set_param("compositing", "iso");
     const gsv::RunReport report = network.run();
     CHECK(report.text() ==
           "source: ran\n"
@@ -591,7 +593,7 @@ TEST_CASE("network file: blanks and quotes and comments and CRLF line ends", "[u
         "connect points.entry -> filter.image\n"
         "connect filter.image -> output.image\n";
     gsv::Network network = gsv::parse_network(text, "win.txt", lab_registry());
-    CHECK(network.processor("source").property("file") == "my data/head #1.nii");
+    CHECK(network.processor("source").param_text("file") == "my data/head #1.nii");
     CHECK(network.run().ok());
     CHECK(static_cast<Canvas&>(network.processor("output")).shown ==
           "filter(front(cube(volume(my data/head #1.nii))))");
@@ -623,12 +625,12 @@ TEST_CASE("network file: every mistake is one line naming the file and line", "[
          "net.txt:1: unknown processor type 'RayTravesal' (known: VolumeSource, ProxySource, EntryExitPoints, "
          "RayTraversal, Canvas, ImageFilter)"},
         {"# shading\nprocessor RayTraversal raycaster shadng=phong\n",
-         "net.txt:2: raycaster (RayTraversal) has no property 'shadng' (its properties: compositing, gradient, "
+         "net.txt:2: raycaster (RayTraversal) has no parameter 'shadng' (its parameters: compositing, gradient, "
          "shading)"},
         {"processor RayTraversal raycaster compositing=dvx\n",
-         "net.txt:1: raycaster.compositing = 'dvx' is not one of: dvr, mip, iso"},
+         "net.txt:1: parameter 'compositing' = 'dvx' is not one of: dvr, mip, iso"},
         {"processor RayTraversal raycaster compositing=dvr compositing=mip\n",
-         "net.txt:1: property 'compositing' is set twice for raycaster"},
+         "net.txt:1: parameter 'compositing' is set twice for raycaster"},
         {"processor VolumeSource source\n\nprocessor Canvas source\n",
          "net.txt:3: processor name 'source' is already used on line 1"},
         {"processor Canvas out.put\n", "net.txt:1: processor name 'out.put' may only use letters, digits, '_' and '-'"},
@@ -689,7 +691,7 @@ TEST_CASE("network file: required inputs left open are reported after the last l
 }
 
 TEST_CASE("network file: written text parses back to the same network", "[unit][network]") {
-    // Canonical form: properties that were set, in declared order; a blank line; connections in order made.
+    // Canonical form: parameters that were set, in declared order; a blank line; connections in order made.
     const std::string canonical =
         "processor VolumeSource source file=\"my data/head.nii\"\n"
         "processor ProxySource proxy\n"
@@ -725,7 +727,7 @@ TEST_CASE("network file: written text parses back to the same network", "[unit][
 
     // A network built in code, through a file and back.
     gsv::Network built;
-    built.add<VolumeSource>("source").set_property("file", "");
+    built.add<VolumeSource>("source").set_param("file", "");
     built.add<ImageFilter>("unused");
     built.add<ProxySource>("proxy");
     built.connect("source.volume", "proxy.volume");
@@ -744,7 +746,7 @@ TEST_CASE("network file: written text parses back to the same network", "[unit][
           dir.path("built.txt").string() + ": unused.image is not connected");
 
     gsv::Network unwritable;
-    unwritable.add<VolumeSource>("source").set_property("file", "say \"hi\".nii");
+    unwritable.add<VolumeSource>("source").set_param("file", "say \"hi\".nii");
     CHECK(gsv_error_message([&] { gsv::network_text(unwritable); }) ==
           "source.file = 'say \"hi\".nii' cannot be written to a network file (no double quotes or line breaks)");
 }
@@ -797,7 +799,7 @@ TEST_CASE("network: port images are named processor.port.png and written for ima
                      });
 
     // A failed raycaster has no image to show, but the entry and exit points that fed it still do.
-    network.processor("raycaster").set_property("compositing", "iso");
+    network.processor("raycaster").set_param("compositing", "iso");
     network.run();
     written.clear();
     CHECK(network.write_port_images(dir.path("ports"), write).size() == 2);

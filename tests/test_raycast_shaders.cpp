@@ -17,6 +17,7 @@
 #include "common/shader/shader_source.h"
 #include "support/raycast/raycast_components.h"
 #include "support/raycast/raycast_config.h"
+#include "support/volume/sobel_gradient.h"
 
 #include <glm/glm.hpp>
 
@@ -115,22 +116,14 @@ std::vector<float> make_volume(int n, const std::function<float(int, int, int)>&
     return v;
 }
 
-// Central differences at the voxels, neighbours clamped to the grid, unit spacing: what the precomputed
-// gradient module reads.
-std::vector<float> central_gradients(int n, const std::vector<float>& v) {
-    auto at = [&](int i, int j, int k) {
-        auto c = [n](int x) { return std::clamp(x, 0, n - 1); };
-        return v[(static_cast<std::size_t>(c(k)) * n + c(j)) * n + c(i)];
-    };
-    std::vector<float> g;
-    for (int k = 0; k < n; ++k)
-        for (int j = 0; j < n; ++j)
-            for (int i = 0; i < n; ++i) {
-                g.push_back(0.5f * (at(i + 1, j, k) - at(i - 1, j, k)));
-                g.push_back(0.5f * (at(i, j + 1, k) - at(i, j - 1, k)));
-                g.push_back(0.5f * (at(i, j, k + 1) - at(i, j, k - 1)));
-            }
-    return g;
+// The Sobel gradient at the voxels, neighbours clamped to the grid, unit spacing: what the precomputed gradient
+// module reads (lab 06 makes it with the same function).
+std::vector<float> precomputed_gradients(int n, const std::vector<float>& v) {
+    gsv::Volume volume;
+    volume.nx = volume.ny = volume.nz = n;
+    volume.values = v;
+    volume.name = "test";
+    return gsv::sobel_gradient_volume(volume);
 }
 
 // Each pixel's ray as entry and exit texture coordinates (RGB) with alpha 1 where it hits, bottom row first.
@@ -198,7 +191,7 @@ public:
         entry_ = Texture::create_2d(rays.width, rays.height, TexelFormat::RGBA32F, rays.entry.data(), nearest);
         exit_ = Texture::create_2d(rays.width, rays.height, TexelFormat::RGBA32F, rays.exit.data(), nearest);
         volume_ = Texture::create_3d(n, n, n, TexelFormat::R32F, volume.data());
-        const std::vector<float> gradients = central_gradients(n, volume);
+        const std::vector<float> gradients = precomputed_gradients(n, volume);
         gradients_ = Texture::create_3d(n, n, n, TexelFormat::RGB32F, gradients.data());
         // A transfer function with colour and opacity that both change: opaque from 0.2 up, in steps.
         std::vector<float> tf;
@@ -297,12 +290,15 @@ TEST_CASE("raycast_config: names print and parse, and a bad name is one line nam
     CHECK_THROWS_WITH(parse_gradient("centre"), "unknown raycast gradient 'centre' (known: none, forward, central, precomputed)");
     CHECK_THROWS_WITH(parse_classification(""), "unknown raycast classification '' (known: raw, tf)");
     CHECK_THROWS_WITH(parse_shading("Phong"), "unknown raycast shading 'Phong' (known: none, phong)");
-    CHECK_THROWS_WITH(parse_compositing("max"), "unknown raycast compositing 'max' (known: dvr, mip, iso, fhp)");
+    std::string known;  // the table's rows, dvr, mip, iso, fhp first
+    for (const std::string& name : compositing_names()) known += (known.empty() ? "" : ", ") + name;
+    CHECK(known.rfind("dvr, mip, iso, fhp", 0) == 0);
+    CHECK_THROWS_WITH(parse_compositing("max"), "unknown raycast compositing 'max' (known: " + known + ")");
     CHECK(describe(make_config(K::Dvr, G::Central, C::TransferFunction, S::Phong)) ==
           "compositing dvr, gradient central, classification tf, shading phong, early termination on");
 }
 
-TEST_CASE("raycast_config: Phong without a gradient is refused in one line, and 56 configurations remain", "[unit][raycast]") {
+TEST_CASE("raycast_config: Phong without a gradient is refused in one line, and 14 configurations a compositing mode remain", "[unit][raycast]") {
     const std::string refusal = "raycast shading 'phong' needs a gradient for its normal, and gradient is 'none' "
                                 "(pick forward, central or precomputed, or shading none)";
     for (K k : {K::Dvr, K::Mip, K::Isosurface, K::FirstHit}) {
@@ -312,7 +308,10 @@ TEST_CASE("raycast_config: Phong without a gradient is refused in one line, and 
         CHECK_THROWS_WITH(raycast_uber_uniforms(bad), refusal);
     }
     const std::vector<Config> configs = all_raycast_configs();
-    CHECK(configs.size() == 4 * 2 * 2 * 4 - 8);
+    // 4 gradients x 2 classifications x 2 shadings, less Phong without a gradient, for each row of the compositing
+    // table (4 of them: 56): a new mode's row brings its 14.
+    CHECK(compositing_names().size() >= 4);
+    CHECK(configs.size() == compositing_names().size() * (4 * 2 * 2 - 2));
     std::set<std::string> distinct;
     for (const Config& c : configs) {
         CHECK_NOTHROW(validate(c));
@@ -371,6 +370,48 @@ TEST_CASE("raycast_config: a module the compositing cannot use is dropped, and t
     CHECK(raycast_uber_uniforms(make_config(K::Mip, G::Central, C::TransferFunction, S::Phong)) == modes);
 }
 
+TEST_CASE("raycast: every compositing mode has its file, its four functions, a legend, its configurations and an uber-shader branch", "[unit][raycast]") {
+    // What the module table (support/raycast/raycast_config.cpp) promises for each row: a mode missing any piece fails here.
+    const std::vector<std::string> names = compositing_names();
+    REQUIRE(names.size() >= 4);
+    const std::vector<Config> configs = all_raycast_configs();
+    const std::string uber = generate_raycast_uber_header();
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        INFO(names[i]);
+        const K mode = parse_compositing(names[i]);
+        CHECK(static_cast<std::size_t>(mode) == i);
+        CHECK(name_of(mode) == names[i]);
+        // Its GLSL file, in the lab's folder, defines the four functions the placeholders expand to.
+        const std::string header = generate_raycast_header(make_config(mode));
+        const std::size_t include = header.rfind("#include \"");
+        REQUIRE(include != std::string::npos);
+        const std::string file = header.substr(include + 10, header.find('"', include + 10) - include - 10);
+        const std::size_t start = header.find("#define RC_START(ray) rcStart");
+        REQUIRE(start != std::string::npos);
+        const std::string x = header.substr(start + 29, header.find('(', start + 29) - start - 29);
+        REQUIRE(fs::is_regular_file(kRaycast / file));
+        const std::string glsl = test::read_text(kRaycast / file);
+        for (const std::string& function : {"RcState rcStart" + x + "(", "void rcComposite" + x + "(", "bool rcTerminate" + x + "(",
+                                            "vec4 rcFinish" + x + "("}) {
+            INFO(function);
+            CHECK(glsl.find(function) != std::string::npos);
+        }
+        // A legend that says something, or says it has none.
+        const CompositingLegend legend = compositing_legend(mode);
+        CHECK(legend.shown == (std::string(legend.note) != ""));
+        // Among the configurations every test and sweep runs.
+        CHECK(std::count_if(configs.begin(), configs.end(), [&](const Config& c) { return c.compositing == mode; }) > 0);
+        // In the uber-shader: its file, and a branch of its own in each placeholder (the last row is the fallback).
+        CHECK(uber.find("#include \"" + file + "\"") != std::string::npos);
+        for (const std::string& function : {"rcStart", "rcComposite", "rcTerminate", "rcFinish"}) {
+            INFO(function);
+            CHECK(uber.find(function + x + "(") != std::string::npos);
+        }
+        if (i + 1 < names.size()) CHECK(uber.find("uCompositingMode == " + std::to_string(i) + ")") != std::string::npos);
+    }
+    CHECK(uber.find("uCompositingMode == " + std::to_string(names.size() - 1) + ")") == std::string::npos);
+}
+
 TEST_CASE("raycast: each configuration's preprocessed source holds exactly the modules it uses", "[unit][raycast]") {
     for (const Config& config : configs_with_termination_off()) {
         PreprocessOptions options = shader_options();
@@ -401,7 +442,7 @@ TEST_CASE("raycast: every configuration passes glslangValidator, the front end s
         return;
     }
     test::TempDir dir;
-    std::vector<std::pair<std::string, std::vector<GeneratedFile>>> shaders = {{"raycast_uber.frag", {}},
+    std::vector<std::pair<std::string, std::vector<GeneratedFile>>> shaders = {{"raycast_uber.frag", {raycast_uber_file()}},
                                                                               {"raycast_dvr_handwritten.frag", {}}};
     for (const Config& config : configs_with_termination_off())
         shaders.push_back({"raycast.frag", {raycast_config_file(config)}});
@@ -422,7 +463,7 @@ TEST_CASE("raycast: every valid configuration compiles and links on a GL 4.1 cor
     auto context = test::headless_context();
     REQUIRE(context->effective_version() == GlVersion{4, 1});
     const std::vector<Config> configs = configs_with_termination_off();
-    CHECK(configs.size() == 56 + 14);
+    CHECK(configs.size() == all_raycast_configs().size() + 14);  // DVR's 14 again, with early termination off
     for (const Config& config : configs) {
         INFO(describe(config));
         ShaderProgram program;
@@ -435,10 +476,8 @@ TEST_CASE("raycast: every valid configuration compiles and links on a GL 4.1 cor
         REQUIRE(program.compiled_sources().size() == 2);
         CHECK(program.compiled_sources()[1].find(describe(effective_config(config))) != std::string::npos);
     }
-    for (const std::string& fragment : {"raycast_uber.frag", "raycast_dvr_handwritten.frag"}) {
-        INFO(fragment);
-        CHECK_NOTHROW(build_program(*context, fragment, {}));
-    }
+    CHECK_NOTHROW(build_program(*context, "raycast_uber.frag", {raycast_uber_file()}));
+    CHECK_NOTHROW(build_program(*context, "raycast_dvr_handwritten.frag", {}));
 }
 
 TEST_CASE("raycast: every uniform of every program the ray caster builds is set by exactly one module's component", "[raycast][gl]") {
@@ -467,10 +506,10 @@ TEST_CASE("raycast: every uniform of every program the ray caster builds is set 
     }
     ShaderComponents uber = modules;
     uber.push_back(&modes);
-    check(build_program(*context, "raycast_uber.frag", {}), uber);
+    check(build_program(*context, "raycast_uber.frag", {raycast_uber_file()}), uber);
     check(build_program(*context, "raycast_dvr_handwritten.frag", {}), modules);
     // Without the uber-shader's modes, five of its uniforms have no owner: the check sees what is left out.
-    CHECK(uniform_ownership_problems(build_program(*context, "raycast_uber.frag", {}), modules).size() == 5);
+    CHECK(uniform_ownership_problems(build_program(*context, "raycast_uber.frag", {raycast_uber_file()}), modules).size() == 5);
 }
 
 TEST_CASE("raycast: MIP compiles no gradient and no shading, DVR with central gradients and Phong exactly those", "[raycast][gl]") {
@@ -703,7 +742,7 @@ TEST_CASE("raycast: early termination at 0.95 changes alpha by at most 0.05", "[
 TEST_CASE("raycast: the uber-shader and the hand-written DVR draw what the specialised shader draws", "[raycast][gl]") {
     const int n = 16;
     Scene scene(oblique_rays(), n, make_volume(n, blob));
-    const ShaderProgram uber = build_program(scene.context(), "raycast_uber.frag", {});
+    const ShaderProgram uber = build_program(scene.context(), "raycast_uber.frag", {raycast_uber_file()});
     Settings s;
     s.step = 1.0f / 37;
     s.reference = 1.0f / 16;

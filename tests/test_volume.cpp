@@ -1,14 +1,15 @@
 // Lab 06's data layer: Volume and its GL_LINEAR emulation, the NIfTI-1 reader and writer, the
-// Marschner-Lobb signal with its exact gradient and ray hits, ray/box spans, and the gradient modules'
-// CPU reference.
+// Marschner-Lobb signal with its exact gradient and ray hits, ray/box spans, the gradient modules' CPU
+// reference (reference/volume/gradient.h), and the Sobel gradient volume of the precomputed module.
 #include "catch.hpp"
 
 #include "common/core/error.h"
 #include "common/core/splitmix64.h"
 #include "support/geometry/ray_box.h"
-#include "support/volume/gradient.h"
+#include "reference/volume/gradient.h"
 #include "support/volume/marschner_lobb.h"
 #include "support/volume/nifti_file.h"
+#include "support/volume/sobel_gradient.h"
 #include "support/volume/volume.h"
 #include "test_support.h"
 
@@ -955,6 +956,70 @@ TEST_CASE("gradient: central differences of a sampled smooth Marschner-Lobb volu
         const double h = 2.0 / n;
         CHECK(worst < 0.33 * h * h + 1e-7 / h);
         if (previous > 0) CHECK(previous / worst == Approx(4.0).margin(0.4));
+        previous = worst;
+    }
+}
+
+TEST_CASE("sobel gradient: a linear volume's gradient is its slope inside, anisotropic spacing too, a constant one's is 0",
+          "[unit][volume]") {
+    // The same linear field as the differences' test above: every interior 3x3x3 neighbourhood sees the slope.
+    Volume volume;
+    volume.nx = 5, volume.ny = 4, volume.nz = 6;
+    volume.spacing = {0.5, 2.0, 0.25};
+    volume.name = "linear";
+    for (int k = 0; k < volume.nz; ++k)
+        for (int j = 0; j < volume.ny; ++j)
+            for (int i = 0; i < volume.nx; ++i)
+                volume.values.push_back(float(3 * (i + 0.5) * 0.5 - (j + 0.5) * 2.0 + 8 * (k + 0.5) * 0.25));
+    const glm::dvec3 slope(3, -1, 8);
+    CHECK(gsv::sobel_gradient(volume, 2, 1, 3) == slope);
+    CHECK(gsv::sobel_gradient(volume, 1, 2, 2) == slope);
+    // At a border the clamped neighbour is the voxel itself, as with central differences: half the slope across it.
+    CHECK(gsv::sobel_gradient(volume, 0, 1, 3) == glm::dvec3(1.5, -1, 8));
+    const Volume flat = constant_volume(7, 5, 3, 0.1f);
+    for (float g : gsv::sobel_gradient_volume(flat)) REQUIRE(g == 0.0f);
+    CHECK(contains(gsv_error_message([&] { gsv::sobel_gradient(volume, 5, 0, 0); }), "outside the 5x4x6 grid"));
+    volume.spacing.y = -1;
+    CHECK(contains(gsv_error_message([&] { gsv::sobel_gradient_volume(volume); }), "not positive and finite"));
+}
+
+TEST_CASE("sobel gradient: the whole volume, axis by axis, equals the 27-voxel operator at every voxel", "[unit][volume]") {
+    Volume volume;
+    volume.nx = 6, volume.ny = 5, volume.nz = 4;
+    volume.spacing = {1.0, 0.7, 2.5};
+    volume.name = "noise";
+    std::uint64_t state = 7;
+    for (int v = 0; v < volume.nx * volume.ny * volume.nz; ++v)
+        volume.values.push_back(float(double(gsv::splitmix64_next(state) >> 11) * 0x1.0p-53));
+    const std::vector<float> all = gsv::sobel_gradient_volume(volume);
+    REQUIRE(all.size() == 3 * volume.values.size());
+    std::size_t at = 0;
+    for (int k = 0; k < volume.nz; ++k)
+        for (int j = 0; j < volume.ny; ++j)
+            for (int i = 0; i < volume.nx; ++i, at += 3) {
+                const glm::dvec3 one = gsv::sobel_gradient(volume, i, j, k);
+                CAPTURE(i, j, k);
+                for (int axis = 0; axis < 3; ++axis)
+                    REQUIRE(all[at + static_cast<std::size_t>(axis)] == Approx(one[axis]).margin(1e-6));
+            }
+}
+
+TEST_CASE("sobel gradient: on a smooth Marschner-Lobb volume it converges to the exact gradient at second order",
+          "[unit][volume]") {
+    // The smoothing across the axis adds its own h^2 error to the central difference's, so a smooth field's
+    // gradient still comes out within a constant times h^2: doubling n divides the error by about 4.
+    const MarschnerLobb smooth{6, 0};
+    double previous = 0;
+    for (int n : {21, 41, 81}) {
+        const Volume volume = gsv::make_marschner_lobb_volume(n, smooth);
+        double worst = 0;
+        for (int k = 1; k < n - 1; ++k) {
+            const int i = n / 3, j = n / 2;
+            const glm::dvec3 p(-1 + (2.0 * i + 1) / n, -1 + (2.0 * j + 1) / n, -1 + (2.0 * k + 1) / n);
+            worst = std::max(worst, glm::length(gsv::sobel_gradient(volume, i, j, k) - gsv::marschner_lobb_gradient(p, smooth)));
+        }
+        CAPTURE(n, worst, previous);
+        if (previous > 0) CHECK(previous / worst == Approx(4.0).margin(0.5));
         previous = worst;
     }
 }

@@ -30,11 +30,11 @@ cd "$out"
 export GSV_ROOT="$out/kit"
 # Frames: 3 the picture with its panel (own.png), 5 hide, 7 the picture alone (screenshot-1), 8 show again,
 # 10 the last screenshot (screenshot-2); with --inspect, three port images at 12, 14 and 16.
-# The lab quits by itself after a wall time long enough for its frames on a loaded 2-core machine.
-presses=(--press S@3 --press U@5 --press S@7 --press U@8 --quit-after 25s)
+# The script ends the lab once it has survived the broken edit; --quit-after is a safety net.
+presses=(--press S@3 --press U@5 --press S@7 --press U@8 --quit-after 120s)
 last=2
 if [ $inspect -eq 1 ]; then
-  presses+=(--press I@11 --press S@12 --press I@13 --press S@14 --press I@15 --press S@16 --quit-after 35s)
+  presses+=(--press I@11 --press S@12 --press I@13 --press S@14 --press I@15 --press S@16)
   last=5
 fi
 xvfb-run -a -s "-screen 0 1600x900x24" bash -c '
@@ -43,13 +43,17 @@ xvfb-run -a -s "-screen 0 1600x900x24" bash -c '
   shift 2
   "$0" window --screenshot-after 10 --out own.png "$@" > lab.log 2>&1 &
   pid=$!
-  for i in $(seq 1 300); do [ -s "$wait_for" ] && break; sleep 0.1; done
+  for i in $(seq 1 600); do [ -s "$wait_for" ] && break; sleep 0.1; done
   sleep 0.5
   import -window root screen.png
   echo "this line is not GLSL" >> "$victim"
-  for i in $(seq 1 50); do grep -q "compile error" lab.log && break; sleep 0.1; done
+  for i in $(seq 1 150); do grep -q "compile error" lab.log && break; sleep 0.1; done
+  sleep 1  # frames drawn with the last good program
   kill -0 $pid || { echo "window_xvfb: the lab stopped after a broken shader edit"; exit 1; }
-  wait $pid
+  # Ended here rather than by a wall time, which a loaded machine reaches before the edit (the lab flushes its output
+  # every frame; --quit-after only ends a lab this script has lost).
+  kill $pid
+  wait $pid || true
 ' "$lab" "$victim" "$id-screenshot-$last.png" "${presses[@]}" "$@"
 cat lab.log
 fail() { echo "window_xvfb: $*"; exit 1; }

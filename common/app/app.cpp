@@ -4,6 +4,7 @@
 #include "common/core/error.h"
 #include "common/core/version.h"
 #include "common/gl/gl.h"
+#include "common/shader/param_uniforms.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -32,13 +33,15 @@ const ShaderLibrary::Entry& LabKit::program(const std::string& name, const std::
     spec.name = name;
     spec.captured = captured;
     for (const auto& f : files) spec.files.push_back(assets_.shader_file(f));
-    return shaders_.add(std::move(spec), params_.defines());
+    return shaders_.add(std::move(spec), param_defines(params_));
 }
+
+std::vector<ShaderDefine> LabKit::defines() const { return param_defines(params_); }
 
 const ShaderProgram& LabKit::use(const ShaderLibrary::Entry& entry) const {
     const ShaderProgram& program = entry.program();
     program.use();
-    params_.apply_uniforms(program);
+    apply_param_uniforms(params_, program);
     return program;
 }
 
@@ -84,7 +87,7 @@ void Session::open(Backend backend, int extra_width) {
     context->require(needs, needs_why);
     kit = std::make_unique<LabKit>(*context, params, *assets, options.profile);
     lab->setup(*kit);
-    compiled_defines_ = params.defines();
+    compiled_defines_ = param_defines(params);
 }
 
 const Assets& Session::find_assets() {
@@ -138,7 +141,7 @@ std::optional<std::string> Session::sync_params() {
     // compiler would give for them.
     lab->params_changed(*kit);
     std::optional<std::string> error;
-    std::vector<ShaderDefine> defines = params.defines();
+    std::vector<ShaderDefine> defines = param_defines(params);
     if (defines != compiled_defines_) {
         error = kit->shaders().rebuild_all(defines);
         compiled_defines_ = std::move(defines);

@@ -1,13 +1,13 @@
 #pragma once
 // The lab app. A lab declares what it is (parameters with their ranges, effects and accuracy knob) and how it
-// draws; its named cases come from its public case file (common/app/case_file.h). The framework gives it the
+// draws; its named cases come from its public case file (common/params/case_file.h). The framework gives it the
 // window, headless rendering, sweeps, the command line, hot reload, timing and image output. A lab's main() is
 // one line: return gsv::run_lab<MyLab>(argc, argv);
 #include "common/app/assets.h"
-#include "common/app/case_file.h"
+#include "common/params/case_file.h"
 #include "common/app/depth_readback.h"
 #include "common/app/inspect_stage.h"
-#include "common/app/params.h"
+#include "common/params/params.h"
 #include "common/context/context.h"
 #include "common/gl/gl_features.h"
 #include "common/image/image.h"
@@ -121,6 +121,8 @@ public:
                                         const std::vector<std::string>& captured = {});
     // Binds the program and sets every runtime parameter as its uniform; set the rest yourself.
     const ShaderProgram& use(const ShaderLibrary::Entry& entry) const;
+    // The #defines the parameters give every program (common/shader/param_uniforms.h).
+    std::vector<ShaderDefine> defines() const;
     void set_transforms(const ShaderProgram& program, const Transforms& transforms) const {
         apply_transforms(program, transforms, profile_);
     }

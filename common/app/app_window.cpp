@@ -2,6 +2,7 @@
 // hot reload of shader files, screenshots, and the command line that reproduces what is on screen.
 #include "common/app/app_session.h"
 #include "common/app/live_controls.h"
+#include "common/shader/param_uniforms.h"
 #include "common/app/window_reference.h"
 #include "common/core/error.h"
 #include "common/core/number_text.h"
@@ -276,8 +277,8 @@ int run_window(Session& s) {
         if (input.reload || now - last_reload_check > 0.25) {
             last_reload_check = now;
             legend_stale = true;  // a saved colour function shows in the legend too
-            std::optional<std::string> error = input.reload ? s.kit->shaders().rebuild_all(s.params.defines())
-                                                            : s.kit->shaders().reload_changed(s.params.defines());
+            std::optional<std::string> error = input.reload ? s.kit->shaders().rebuild_all(param_defines(s.params))
+                                                            : s.kit->shaders().reload_changed(param_defines(s.params));
             if (error) {
                 // Keep drawing with the last good program; show and print what broke.
                 panel_state.status = *error;

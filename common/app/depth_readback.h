@@ -2,9 +2,8 @@
 // Reads a framebuffer's depth back in every profile: desktop GL reads it directly; OpenGL ES reads back colour
 // only, so there the depth texture is drawn into a float target (gsv/depth_to_color.frag) and that is read.
 // The program is built the first time depth is asked for on ES.
+#include "common/app/gpu_probe.h"
 #include "common/gl/framebuffer.h"
-#include "common/gl/gpu_mesh.h"
-#include "common/shader/shader_library.h"
 
 #include <vector>
 
@@ -19,8 +18,7 @@ public:
     std::vector<float> read(LabKit& kit, const Framebuffer& target);
 
 private:
-    const ShaderLibrary::Entry* program_ = nullptr;
-    GpuMesh quad_;
+    GpuProbe probe_{"depth readback", "gsv/depth_to_color.frag"};
 };
 
 }  // namespace gsv

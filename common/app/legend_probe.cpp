@@ -1,9 +1,7 @@
 #include "common/app/legend_probe.h"
 
 #include "common/core/error.h"
-#include "common/gl/framebuffer.h"
 #include "common/gl/gl.h"
-#include "common/gl/saved_draw_state.h"
 #include "common/gl/texture.h"
 
 #include <algorithm>
@@ -13,28 +11,14 @@ namespace gsv {
 std::vector<LegendColor> LegendProbe::colors(LabKit& kit, const std::vector<double>& values,
                                              const std::function<void(const ShaderProgram&)>& set_uniforms) {
     if (values.empty()) return {};
-    if (!program_) {
-        program_ = &kit.program("legend probe (" + fragment_ + ")", {"gsv/fullscreen.vert", fragment_});
-        quad_ = GpuMesh(make_fullscreen_quad(), kit.profile());
-    }
     const int count = static_cast<int>(values.size());
     const std::vector<float> texels(values.begin(), values.end());
     const Texture value_texture =
         Texture::create_2d(count, 1, TexelFormat::R32F, texels.data(), Sampling{GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE});
-    const Framebuffer target(count, 1, ColorFormat::RGBA32F, false);
-    ImageF pixels;
-    {
-        const SavedDrawState saved;
-        target.bind();
-        glDisable(GL_DEPTH_TEST);
-        glDisable(GL_BLEND);
-        const ShaderProgram& program = kit.use(*program_);
+    const ImageF pixels = probe_.draw(kit, count, 1, [&](const ShaderProgram& program) {
         program.bind("uLegendValues", value_texture);
         if (set_uniforms) set_uniforms(program);
-        quad_.draw();
-        check_gl_error("drawing the legend probe");
-        pixels = target.read_rgba32f();
-    }
+    }, "drawing the legend probe");
     std::vector<LegendColor> out;
     out.reserve(values.size());
     for (int i = 0; i < count; ++i) {

@@ -12,7 +12,7 @@
 // legend is asked for (a grader's render never pays for it), from the lab's shaders with the lab's defines, and is
 // rebuilt with them (hot reload, compile-time parameters): an edit to the colour function shows in the legend.
 #include "common/app/app.h"
-#include "common/gl/gpu_mesh.h"
+#include "common/app/gpu_probe.h"
 #include "common/image/legend.h"
 
 #include <functional>
@@ -24,7 +24,7 @@ namespace gsv {
 class LegendProbe {
 public:
     // `fragment`: the lab's probe shader, found as its other shaders are.
-    explicit LegendProbe(std::string fragment) : fragment_(std::move(fragment)) {}
+    explicit LegendProbe(const std::string& fragment) : probe_("legend probe (" + fragment + ")", fragment) {}
 
     // The colour the probe writes at each value, clamped to [0, 1]; NaN comes back magenta, as in a render.
     // kit.use() sets the lab's parameters as uniforms; `set_uniforms` sets the rest (a range the lab computes).
@@ -36,9 +36,7 @@ public:
                                  const std::function<void(const ShaderProgram&)>& set_uniforms = {});
 
 private:
-    std::string fragment_;
-    const ShaderLibrary::Entry* program_ = nullptr;
-    GpuMesh quad_;
+    GpuProbe probe_;
 };
 
 }  // namespace gsv

@@ -1,7 +1,7 @@
 #pragma once
 // What the live views (the window, the browser page) do to parameters on their own: play the animated parameter,
 // orbit and zoom the camera with the mouse. One place, so a drag turns the camera as far in the page as in the window.
-#include "common/app/params.h"
+#include "common/params/params.h"
 
 namespace gsv {
 

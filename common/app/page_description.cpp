@@ -1,6 +1,6 @@
 #include "common/app/page_description.h"
 
-#include "common/app/params.h"
+#include "common/params/params.h"
 
 namespace gsv {
 namespace {

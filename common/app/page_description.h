@@ -5,7 +5,7 @@
 //
 // The one place outside params.cpp that reads parameter declarations for the page: when the Params API changes,
 // this file follows it and the page does not.
-#include "common/app/case_file.h"
+#include "common/params/case_file.h"
 #include "common/io/json.h"
 
 #include <vector>

@@ -4,6 +4,16 @@
 
 namespace gsv {
 
+std::vector<std::string> BoundShaderComponent::uniforms() const {
+    std::vector<std::string> names;
+    for (const Binding& binding : bindings()) names.push_back(binding.uniform);
+    return names;
+}
+
+void BoundShaderComponent::apply(const ShaderProgram& program) const {
+    for (const Binding& binding : bindings()) binding.set(program, binding.uniform);
+}
+
 void apply_components(const ShaderProgram& program, const ShaderComponents& components) {
     for (const ShaderComponent* component : components) component->apply(program);
 }

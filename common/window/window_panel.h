@@ -3,7 +3,7 @@
 // Dear ImGui where the build found it (sliders, docked beside the picture), the window title otherwise (keys still
 // work).
 #include "common/app/inspect_stage.h"
-#include "common/app/params.h"
+#include "common/params/params.h"
 #include "common/gl/gl_version.h"
 #include "common/image/legend.h"
 

@@ -223,7 +223,8 @@ private:
             }
             return changed;
         }
-        case ParamType::File: {
+        case ParamType::File:
+        case ParamType::Text: {
             const std::string& file = params.get_file(spec.name);
             ImGui::Text("%s: %s", label.c_str(), file.empty() ? "(none)" : file.c_str());
             return false;

@@ -4,7 +4,7 @@
 // The lesson is in the shaders (lic.frag, streamline.glsl); this file makes the two textures LIC reads
 // (white noise or a photograph, and the flow in texels per step) and draws one full-screen quad.
 #include "common/app/app.h"
-#include "common/app/change_tracker.h"
+#include "common/params/change_tracker.h"
 #include "common/gl/gl.h"
 #include "common/gl/gpu_mesh.h"
 #include "common/gl/texture.h"
@@ -12,10 +12,12 @@
 #include "common/scene/mesh_data.h"
 #include "support/flow/flow_field.h"
 #include "support/flow/lic_contrast_pass.h"
-#include "support/flow/lic_reference.h"
 #include "support/flow/lic_view_params.h"
 #include "support/flow/moving_frame.h"
 #include "support/flow/noise.h"
+#ifdef GSV_HAVE_REFERENCE
+#include "reference/lab02_lic/exact_lic_images.h"  // the instructor's exact LIC (cmake/labs.cmake)
+#endif
 
 #include <algorithm>
 #include <optional>
@@ -70,25 +72,26 @@ public:
         });
     }
 
+#ifdef GSV_HAVE_REFERENCE
     // Where the field has a formula and the input is the noise, each image of the sweep is measured against LIC of
     // the same length along the field's exact streamlines, so that the error is the step's alone: against a longer
-    // LIC, Euler's and midpoint's errors came out the same.
+    // LIC, Euler's and midpoint's errors came out the same. The exact LIC is the instructor's (reference/): a
+    // student's sweep measures against the long midpoint LIC below.
     std::optional<gsv::Image> sweep_exact_image(gsv::LabKit& kit, const gsv::Frame& frame) override {
         const auto& p = kit.params();
         gsv::check_sweepable(gsv::lic_contrast_from_name(p.get_choice("contrast")));
         exact_applies_ = p.get_choice("field") != "file" && p.get_choice("input") == "noise";
         if (!exact_applies_) return std::nullopt;
-        exact_.update(p, [&] {
-            return gsv::ExactLic(exact_field(p, frame), noise(p, frame), frame.width, frame.height, {p.get_bool("normalized")});
-        }, frame.width, frame.height);
-        return exact_->image(p.get_int("length"));
+        return exact_.image(p, frame, [&] { return exact_field(p, frame); }, [&] { return noise(p, frame); });
     }
+#endif
     std::string sweep_reference_name() const override {
-        if (exact_applies_)
-            return "LIC of the same length along the exact streamlines of the analytic field: RK4 in double on the CPU, " +
-                   std::to_string(gsv::kLicSubsteps) + " substeps per step, bilinear noise lookups";
-        return "midpoint LIC of length 200, there being no exact LIC of a field from a file or of the photograph: a longer "
-               "filter, so the error measures the length as well as the accuracy";
+#ifdef GSV_HAVE_REFERENCE
+        if (exact_applies_) return lab02::ExactLicImages::description();
+#endif
+        return "midpoint LIC of length 200, there being no exact LIC of a field from a file, of the photograph, or in a build "
+               "without the instructor's reference/: a longer filter, so the error measures the length as well as the "
+               "accuracy";
     }
     std::vector<std::string> sweep_reference() const override { return {"step=midpoint", "length=200"}; }
     // Called at every point of any sweep, the lab's knob or another.
@@ -172,9 +175,11 @@ private:
     gsv::Image photo_;
     gsv::Tracked<gsv::Texture> input_, flow_;
     gsv::Tracked<gsv::FlowSequence> file_;
-    gsv::Tracked<gsv::ExactLic> exact_;
     gsv::LicContrastPass contrast_;
-    bool exact_applies_ = false;
+#ifdef GSV_HAVE_REFERENCE
+    lab02::ExactLicImages exact_;
+    bool exact_applies_ = false;  // the last sweep point was measured against the exact LIC
+#endif
 };
 
 }  // namespace

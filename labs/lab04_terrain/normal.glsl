@@ -10,8 +10,8 @@ uniform float uDelta;        // finite-difference step in samples: the accuracy 
 uniform int uMipLevel;       // with mipmaps: -1 lets the hardware pick a level, k >= 0 reads level k
 
 // The height at fractional sample index (i, j), i east and j north, each sample at its texel centre.
-float heightAt(vec2 sample_index) {
-    vec2 st = (sample_index + 0.5) / vec2(textureSize(uHeights, 0));
+float heightAt(vec2 sampleIndex) {
+    vec2 st = (sampleIndex + 0.5) / vec2(textureSize(uHeights, 0));
 #ifdef EFFECT_MIPMAPS
     if (uMipLevel >= 0) return textureLod(uHeights, st, float(uMipLevel)).r;
 #endif

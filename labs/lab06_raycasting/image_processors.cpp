@@ -8,7 +8,7 @@ namespace lab06 {
 GeometryRenderer::GeometryRenderer() : LabProcessor("GeometryRenderer") {
     add_input("geometry", gsv::PortType::Geometry);
     add_output("image", gsv::PortType::Image);
-    add_property("geometry_color", "0.95,0.55,0.15");
+    geometry_color_ = params().add_vec3("geometry_color", {0.95f, 0.55f, 0.15f}, 0, 1, "the opaque geometry's colour");
 }
 
 void GeometryRenderer::process() {
@@ -27,7 +27,7 @@ void GeometryRenderer::process() {
     set_transforms(program, geometry->box.model_from_texture_matrix());
     // The normals are in model space, not in the texture space the positions are in.
     program.set("uNormalMatrix", glm::mat3(v.view));
-    program.set("uGeometryColor", vec3("geometry_color"));
+    program.set("uGeometryColor", geometry_color_.get());
     geometry->draw();
     glDisable(GL_DEPTH_TEST);
     set_output("image", image_);
@@ -37,7 +37,7 @@ Canvas::Canvas() : LabProcessor("Canvas") {
     add_input("image", gsv::PortType::Image);
     add_optional_input("geometry", gsv::PortType::Image);
     add_output("image", gsv::PortType::Image);
-    add_property("background", "0.08,0.09,0.12");
+    background_ = params().add_vec3("background", {0.08f, 0.09f, 0.12f}, 0, 1, "the canvas behind everything");
 }
 
 void Canvas::process() {
@@ -56,7 +56,7 @@ void Canvas::process() {
     program.bind("uImage", volume->color());
     program.bind("uGeometryImage", (geometry ? geometry : volume)->color());
     program.set("uHasGeometry", geometry != nullptr);
-    program.set("uBackground", vec3("background"));
+    program.set("uBackground", background_.get());
     quad_.draw();
     set_output("image", image_);
 }

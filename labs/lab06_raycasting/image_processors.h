@@ -14,6 +14,7 @@ public:
     void process() override;
 
 private:
+    gsv::Param<glm::vec3> geometry_color_;
     const gsv::ShaderLibrary::Entry* program_ = nullptr;
     std::shared_ptr<ImageData> image_;
 };
@@ -25,6 +26,7 @@ public:
     const std::shared_ptr<ImageData>& image() const { return image_; }  // kept when a later run fails
 
 private:
+    gsv::Param<glm::vec3> background_;
     const gsv::ShaderLibrary::Entry* program_ = nullptr;
     gsv::GpuMesh quad_;
     std::shared_ptr<ImageData> image_;

@@ -1,25 +1,17 @@
 #include "lab_processor.h"
 
 #include "common/core/error.h"
-#include "common/core/number_text.h"
 #include "common/scene/transforms.h"
-#include "support/volume/gradient.h"
+#include "support/volume/sobel_gradient.h"
 
-#include <sstream>
 #include <vector>
 
 namespace lab06 {
 
 const gsv::Texture& VolumeData::gradients() {
     if (!gradients_.id()) {
-        std::vector<float> g;
-        g.reserve(volume.values.size() * 3);
-        for (int k = 0; k < volume.nz; ++k)
-            for (int j = 0; j < volume.ny; ++j)
-                for (int i = 0; i < volume.nx; ++i) {
-                    const glm::dvec3 d = gsv::central_difference(volume, i, j, k);
-                    g.insert(g.end(), {float(d.x), float(d.y), float(d.z)});
-                }
+        // Computed once, so it can afford the smoother 27-voxel Sobel operator.
+        const std::vector<float> g = gsv::sobel_gradient_volume(volume);
         gradients_ = gsv::Texture::create_3d(volume.nx, volume.ny, volume.nz, gsv::TexelFormat::RGB32F, g.data());
     }
     return gradients_;
@@ -28,42 +20,6 @@ const gsv::Texture& VolumeData::gradients() {
 const FrameView& LabProcessor::view() const {
     if (!view_ || !view_->kit) throw gsv::Error(describe() + " has no frame to draw (set_view was not called)");
     return *view_;
-}
-
-double LabProcessor::number(const std::string& name, double min, double max) const {
-    const std::string& text = property(name);
-    const std::optional<double> value = gsv::parse_finite_number(text);
-    if (!value || *value < min || *value > max) {
-        std::ostringstream range;
-        range << "[" << min << ", " << max << "]";
-        throw gsv::Error(this->name() + "." + name + " = '" + text + "' is not a number in " + range.str());
-    }
-    return *value;
-}
-
-bool LabProcessor::flag(const std::string& name) const {
-    const std::string& text = property(name);
-    if (text == "on" || text == "true" || text == "1") return true;
-    if (text == "off" || text == "false" || text == "0") return false;
-    throw gsv::Error(this->name() + "." + name + " = '" + text + "' is not on or off");
-}
-
-glm::vec3 LabProcessor::vec3(const std::string& name) const {
-    const std::string& text = property(name);
-    glm::vec3 v(0.0f);
-    std::stringstream in(text);
-    std::string part;
-    int count = 0;
-    while (std::getline(in, part, ',')) {
-        const std::optional<double> x = gsv::parse_finite_number(part);
-        if (!x || count == 3) {
-            count = 4;
-            break;
-        }
-        v[count++] = static_cast<float>(*x);
-    }
-    if (count != 3) throw gsv::Error(this->name() + "." + name + " = '" + text + "' is not three numbers x,y,z");
-    return v;
 }
 
 void LabProcessor::set_transforms(const gsv::ShaderProgram& program, const glm::mat4& model) const {

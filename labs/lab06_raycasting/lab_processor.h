@@ -1,6 +1,6 @@
 #pragma once
 // What lab 06's processors share: the frame they draw (size, camera, the kit for shaders and data), the
-// data their ports carry, and reading their text properties as numbers with one-line errors.
+// data their ports carry. Each declares its own typed parameters (gsv::Processor::params), which the lab adopts.
 #include "common/app/app.h"
 #include "common/gl/framebuffer.h"
 #include "common/gl/gpu_mesh.h"
@@ -65,11 +65,6 @@ public:
 protected:
     const FrameView& view() const;
     gsv::LabKit& kit() const { return *view().kit; }
-    // The property as a number in [min, max]; throws "raycaster.samples_per_voxel = 'x' is not a number in
-    // [0.01, 64]" otherwise.
-    double number(const std::string& property, double min, double max) const;
-    bool flag(const std::string& property) const;  // on/off, true/false, 1/0
-    glm::vec3 vec3(const std::string& property) const;  // "x,y,z"
     // The frame's camera with `model` (a box's model_from_texture_matrix: meshes here are in texture
     // coordinates) on `program`, which must be in use.
     void set_transforms(const gsv::ShaderProgram& program, const glm::mat4& model) const;

@@ -2,94 +2,14 @@
 
 #include "common/app/sweep_metrics.h"
 #include "common/timing/timing.h"
-#include "support/geometry/ray_box.h"
-#include "support/volume/gradient.h"
-#include "support/volume/marschner_lobb.h"
 
-#include <glm/gtc/matrix_inverse.hpp>
-
-#include <cmath>
 #include <string>
 
 namespace lab06 {
-namespace {
-
-glm::dvec3 unproject(const glm::dmat4& inverse, double x, double y, double z) {
-    const glm::dvec4 p = inverse * glm::dvec4(x, y, z, 1.0);
-    return glm::dvec3(p) / p.w;
-}
-
-}  // namespace
-
-gsv::SweepMetrics measure_hits(gsv::LabKit& kit, const RayTraversal& raycaster, const FrameView& view) {
-    const gsv::Params& p = kit.params();
-    const std::string& compositing = p.get_choice("compositing");
-    if (p.get_choice("volume") != "marschner_lobb" || compositing != "iso" ||
-        p.get_bool("probe") || !p.get_file("network").empty() || p.get_vec3("clip_normal") != glm::vec3(0.0f) ||
-        !raycaster.image())
-        return {};
-    const gsv::Volume volume = gsv::make_marschner_lobb_volume(p.get_int("ml_size"));
-    const std::string gradient = p.get_choice("gradient");
-    const bool normals = gradient == "forward" || gradient == "central";
-    const double iso = p.get_float("iso_value");
-    const ImageData& image = *raycaster.image();
-    const std::vector<float> depth = kit.read_depth(image);
-    const glm::dmat4 inverse = glm::inverse(glm::dmat4(view.projection) * glm::dmat4(view.view));
-    const glm::dvec3 eye(view.eye);
-
-    double sum2 = 0, worst = 0, angle2 = 0;
-    int both = 0, one = 0, rays = 0, on_surface = 0;
-    for (int y = 0; y < image.height(); y += 4)
-        for (int x = 0; x < image.width(); x += 4) {
-            const double nx = 2.0 * (x + 0.5) / image.width() - 1.0;
-            const double ny = 1.0 - 2.0 * (y + 0.5) / image.height();  // row 0 is the top
-            const glm::dvec3 far = unproject(inverse, nx, ny, 1.0);
-            std::optional<double> exact = gsv::marschner_lobb_ray_hit(eye, far - eye, 0.0, 1.0, iso);
-            bool cut_face = false;
-            // A ray that enters the box where rho >= iso already (the bottom face, z = -1, is inside the
-            // surface) hits at its entry, as the isosurface module says: the object is cut open there.
-            if (const auto span = gsv::ray_box_span(eye, far - eye, glm::dvec3(-1.0), glm::dvec3(1.0))) {
-                const double entry = std::max(span->entry, 0.0);
-                if (entry <= span->exit && gsv::marschner_lobb(eye + entry * (far - eye)) >= iso) {
-                    exact = entry;
-                    cut_face = true;
-                }
-            }
-            const float d = depth[static_cast<std::size_t>(y) * image.width() + x];
-            ++rays;
-            if (!exact && d >= 1.0f) continue;
-            if (!exact || d >= 1.0f) {
-                ++one;
-                continue;
-            }
-            const glm::dvec3 hit = unproject(inverse, nx, ny, 2.0 * d - 1.0);
-            const glm::dvec3 truth = eye + *exact * (far - eye);
-            const double e = glm::length(hit - truth);
-            sum2 += e * e;
-            worst = std::max(worst, e);
-            ++both;
-            // On a cut face the surface is the box, not rho = iso, and differences there reach past the
-            // edge, where the texture clamps: the schemes are compared on the isosurface only.
-            if (normals && !cut_face) {
-                const glm::dvec3 t = gsv::marschner_lobb_texcoord(hit);
-                const glm::dvec3 g = gradient == "forward" ? gsv::forward_difference(volume, t) : gsv::central_difference(volume, t);
-                const glm::dvec3 exact_g = gsv::marschner_lobb_gradient(hit);  // same point: the scheme alone
-                const double c = glm::dot(gsv::safe_normalize(g), gsv::safe_normalize(exact_g));
-                const double a = std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / 3.141592653589793;
-                angle2 += a * a;
-                ++on_surface;
-            }
-        }
-    gsv::SweepMetrics m;
-    m.emplace_back("iso_err_rms", both ? std::sqrt(sum2 / both) : 0.0);
-    m.emplace_back("iso_err_max", worst);
-    m.emplace_back("iso_missed", rays ? static_cast<double>(one) / rays : 0.0);
-    if (normals) m.emplace_back("normal_err_deg", on_surface ? std::sqrt(angle2 / on_surface) : 0.0);
-    return m;
-}
 
 gsv::SweepMetrics compare_shaders(RayTraversal& raycaster) {
-    const std::string chosen = raycaster.property("shader");
+    // Set on its parameters, not with set_param: not marked as set, so the lab's parameter still leads.
+    const std::string chosen = raycaster.params().get_choice("shader");
     gsv::RaycastConfig dvr;
     dvr.gradient = gsv::RaycastConfig::Gradient::Central;
     dvr.classification = gsv::RaycastConfig::Classification::TransferFunction;
@@ -99,7 +19,7 @@ gsv::SweepMetrics compare_shaders(RayTraversal& raycaster) {
     if (gsv::effective_config(raycaster.config()) == dvr) shaders.push_back("handwritten");
     std::vector<gsv::TimedWork> work;
     for (const auto& shader : shaders)
-        work.push_back({[&raycaster, shader] { raycaster.set_property("shader", shader); }, [&raycaster] { raycaster.process(); }});
+        work.push_back({[&raycaster, shader] { raycaster.params().set("shader", shader); }, [&raycaster] { raycaster.process(); }});
     gsv::SweepMetrics m;
     try {
         const gsv::InterleavedTimes times = gsv::time_interleaved(work, gsv::kCompareWarmup, gsv::kCompareFrames, gsv::kCompareRounds);
@@ -111,10 +31,10 @@ gsv::SweepMetrics compare_shaders(RayTraversal& raycaster) {
             gsv::add_ratio(m, "specialised_over_handwritten", times.ratio(0, 2));
         }
     } catch (...) {
-        raycaster.set_property("shader", chosen);
+        raycaster.params().set("shader", chosen);
         throw;
     }
-    raycaster.set_property("shader", chosen);
+    raycaster.params().set("shader", chosen);
     return m;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
-// Lab 06: the ray caster as a processor. Its compositing, gradient, classification and shading properties
-// pick the modules; the `shader` property picks how they are put together:
+// Lab 06: the ray caster as a processor. Its compositing, gradient, classification and shading parameters
+// pick the modules; the `shader` parameter picks how they are put together:
 //   specialised: raycast.frag with a generated rc_config.glsl holding only the chosen modules (the lesson),
 //   uber:        raycast_uber.frag, every module compiled in and chosen per draw by uniforms,
 //   handwritten: raycast_dvr_handwritten.frag, one configuration written out by hand.
@@ -9,6 +9,7 @@
 
 #include "common/gl/gpu_mesh.h"
 #include "common/gl/texture.h"
+#include "common/params/change_tracker.h"
 #include "common/shader/shader_library.h"
 #include "support/raycast/raycast_components.h"
 #include "support/raycast/raycast_config.h"
@@ -22,7 +23,7 @@ public:
     RayTraversal();
     void process() override;
 
-    // The configuration the properties ask for (before effective_config drops what the compositing cannot use).
+    // The configuration the parameters ask for (before effective_config drops what the compositing cannot use).
     gsv::RaycastConfig config() const;
     // The program the last process() drew with: the specialised one's generated source can be read from it.
     const gsv::ShaderLibrary::Entry* last_program() const { return last_; }
@@ -30,6 +31,8 @@ public:
     const std::shared_ptr<ImageData>& image() const { return image_; }
     // The transfer function's table as the classification module reads it (the legend samples it there too).
     const gsv::Texture& transfer_function();
+    std::string transfer_function_name() const { return transfer_function_name_.get(); }
+    double iso_value() const { return iso_value_.in_double().get(); }
 
 private:
     const gsv::ShaderLibrary::Entry& program_for(const std::string& shader, const gsv::RaycastConfig& config);
@@ -39,9 +42,12 @@ private:
     const gsv::ShaderLibrary::Entry* uber_ = nullptr;
     const gsv::ShaderLibrary::Entry* handwritten_ = nullptr;
     const gsv::ShaderLibrary::Entry* last_ = nullptr;
+    gsv::Param<std::string> compositing_, gradient_, classification_, shading_, shader_, transfer_function_name_;
+    gsv::Param<double> samples_per_voxel_;
+    gsv::Param<bool> opacity_correction_;
+    gsv::Param<float> early_ray_threshold_, iso_value_, ambient_, diffuse_, specular_, shininess_;
     gsv::GpuMesh quad_;
-    gsv::Texture transfer_function_;
-    std::string transfer_function_name_;
+    gsv::Tracked<gsv::Texture> transfer_function_;
     std::shared_ptr<ImageData> image_;
 };
 

@@ -44,82 +44,75 @@ gsv::MeshData to_texture_space(gsv::MeshData mesh, const gsv::VolumeBox& box) {
 
 VolumeSource::VolumeSource() : LabProcessor("VolumeSource") {
     add_output("volume", gsv::PortType::Volume);
-    add_property("volume", "marschner_lobb", {"marschner_lobb", "anatomical", "constant", "file"});
-    add_property("volume_file", "");
-    add_property("ml_size", "41");
+    gsv::Params& p = params();
+    kind_ = p.add_choice("volume", "marschner_lobb", {"marschner_lobb", "anatomical", "constant", "file"},
+                         "the test signal (exact values known), the MRI head, a constant (zero gradient), or volume_file");
+    file_ = p.add_file("volume_file", "", "a NIfTI-1 volume (.nii or .nii.gz), with volume=file").applies_when("volume", {"file"});
+    ml_size_ = p.add_int("ml_size", 41, 8, 256, "voxels per side of the Marschner-Lobb volume").applies_when("volume", {"marschner_lobb"});
 }
 
 void VolumeSource::process() {
-    const std::string kind = property("volume");
-    const std::string file = property("volume_file");
-    const int ml_size = static_cast<int>(number("ml_size", 2, 512));
-    const std::string key = kind + "|" + file + "|" + std::to_string(ml_size);
-    if (key != loaded_ || !data_) {
+    data_.update(params(), [&] {
         auto data = std::make_shared<VolumeData>();
-        data->volume = load_volume(kind, file, ml_size, kit().assets());
+        data->volume = load_volume(kind_.get(), file_.get(), ml_size_.get(), kit().assets());
         const gsv::Volume& v = data->volume;
         data->texture = gsv::Texture::create_3d(v.nx, v.ny, v.nz, gsv::TexelFormat::R32F, v.values.data());
         data->box = gsv::VolumeBox(v.extent());
-        data_ = std::move(data);
-        loaded_ = key;
-    }
-    set_output("volume", data_);
+        return data;
+    });
+    set_output("volume", *data_);
 }
 
 ProxySource::ProxySource() : LabProcessor("ProxySource") {
     add_input("volume", gsv::PortType::Volume);
     add_output("geometry", gsv::PortType::Geometry);
-    add_property("clip_normal", "0,0,0");
-    add_property("clip_offset", "0");
+    gsv::Params& p = params();
+    clip_normal_ = p.add_vec3("clip_normal", {0.0f, 0.0f, 0.0f}, -1, 1, "a clipping plane's normal in texture space (0,0,0: none)");
+    clip_offset_ = p.add_float("clip_offset", 0, -1, 1, "keeps dot(n, t - centre) <= offset |n|").with_step(0.05).in_double();
 }
 
 void ProxySource::process() {
     auto volume = input<VolumeData>("volume");
-    const glm::dvec3 n(vec3("clip_normal"));
-    const double offset = number("clip_offset", -2, 2);
     const glm::dvec3 e = volume->box.extent();
-    const std::string key = property("clip_normal") + "|" + property("clip_offset") + "|" + std::to_string(e.x) +
-                            "," + std::to_string(e.y) + "," + std::to_string(e.z);
-    if (key != built_ || !data_) {
+    data_.update(params(), [&] {
+        const glm::dvec3 n(clip_normal_.get());
         std::vector<gsv::Plane> planes;
         if (n != glm::dvec3(0.0)) {
             const glm::dvec3 unit = glm::normalize(n);
-            planes.push_back({unit, offset + glm::dot(unit, glm::dvec3(0.5))});
+            planes.push_back({unit, clip_offset_.get() + glm::dot(unit, glm::dvec3(0.5))});
         }
         auto data = std::make_shared<GeometryData>();
         data->proxy.emplace(planes);
         data->mesh = data->proxy->mesh();
         if (!data->mesh.indices.empty()) data->gpu = gsv::GpuMesh(data->mesh, kit().profile());
         data->box = volume->box;
-        data_ = std::move(data);
-        built_ = key;
-    }
-    set_output("geometry", data_);
+        return data;
+    }, e.x, e.y, e.z);
+    set_output("geometry", *data_);
 }
 
 ProbeSource::ProbeSource() : LabProcessor("ProbeSource") {
     add_input("volume", gsv::PortType::Volume);
     add_output("geometry", gsv::PortType::Geometry);
-    add_property("probe_position", "0.3,-0.2,0.4");
-    add_property("probe_radius", "0.25");
+    gsv::Params& p = params();
+    position_ = p.add_vec3("probe_position", {0.3f, -0.2f, 0.4f}, -1.5, 1.5, "the probe's centre (model space, the box's largest side 2)");
+    radius_ = p.add_float("probe_radius", 0.25, 0.02, 1, "the probe's radius (model units)").with_step(0.02);
 }
 
 void ProbeSource::process() {
     auto volume = input<VolumeData>("volume");
-    const glm::vec3 centre = vec3("probe_position");
-    const float radius = static_cast<float>(number("probe_radius", 0.01, 2));
-    const std::string key = property("probe_position") + "|" + property("probe_radius");
-    if (key != built_ || !data_ || data_->box.extent() != volume->box.extent()) {
-        gsv::MeshData sphere = gsv::make_uv_sphere(48, 24, radius);
+    const glm::dvec3 e = volume->box.extent();
+    data_.update(params(), [&] {
+        gsv::MeshData sphere = gsv::make_uv_sphere(48, 24, radius_.get());
+        const glm::vec3 centre = position_.get();
         for (auto& p : sphere.positions) p += centre;
         auto data = std::make_shared<GeometryData>();
         data->mesh = to_texture_space(std::move(sphere), volume->box);
         data->gpu = gsv::GpuMesh(data->mesh, kit().profile());
         data->box = volume->box;
-        data_ = std::move(data);
-        built_ = key;
-    }
-    set_output("geometry", data_);
+        return data;
+    }, e.x, e.y, e.z);
+    set_output("geometry", *data_);
 }
 
 }  // namespace lab06

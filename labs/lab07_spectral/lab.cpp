@@ -9,6 +9,9 @@
 #include "common/gl/gl.h"
 #include "element_data.h"
 #include "element_measure.h"
+#ifdef GSV_HAVE_REFERENCE
+#include "reference/lab07_spectral/value_measure.h"  // the instructor's measurements (cmake/labs.cmake)
+#endif
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -99,14 +102,25 @@ public:
     }
 
     std::vector<std::string> sweep_reference() const override { return {"degree=16", "node_set=gll"}; }
+#ifdef GSV_HAVE_REFERENCE
+    // The values' errors are measured against the instructor's CPU evaluation (reference/); a student's sweep has
+    // the images' errors, the times and the bytes.
     std::string sweep_error_column() const override { return "err_max"; }
     std::string sweep_reference_name() const override {
         return "values (err): the exact field in double at each pixel's point of the element; images: the highest "
                "degree on GLL nodes";
     }
+#endif
 
     gsv::SweepMetrics sweep_metrics(gsv::LabKit& kit, const gsv::Frame& frame) override {
-        return lab07::measure_elements(kit, data_, programs_, transforms(kit.params(), frame), frame.width, frame.height);
+        const gsv::Transforms t = transforms(kit.params(), frame);
+        gsv::SweepMetrics metrics;
+#ifdef GSV_HAVE_REFERENCE
+        metrics = lab07::measure_values(kit, data_, programs_, t, frame.width, frame.height);
+#endif
+        const gsv::SweepMetrics costs = lab07::measure_costs(kit, data_, programs_, t, frame.width, frame.height);
+        metrics.insert(metrics.end(), costs.begin(), costs.end());
+        return metrics;
     }
 
 private:

@@ -4,13 +4,13 @@
 // normalize() of a zero vector is NaN, and NaN spreads through every later operation; below a
 // tiny length there is no direction to keep, so fall back to one the caller chooses.
 vec3 safeNormalize(vec3 v, vec3 fallback) {
-    float length_squared = dot(v, v);
-    return length_squared > 1e-20 ? v * inversesqrt(length_squared) : fallback;
+    float lengthSquared = dot(v, v);
+    return lengthSquared > 1e-20 ? v * inversesqrt(lengthSquared) : fallback;
 }
 
 vec2 safeNormalize(vec2 v, vec2 fallback) {
-    float length_squared = dot(v, v);
-    return length_squared > 1e-20 ? v * inversesqrt(length_squared) : fallback;
+    float lengthSquared = dot(v, v);
+    return lengthSquared > 1e-20 ? v * inversesqrt(lengthSquared) : fallback;
 }
 
 // The angle between two directions in radians, accurate for tiny angles where acos(dot) loses

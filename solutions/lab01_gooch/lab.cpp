@@ -5,7 +5,7 @@
 // the lab's parameters and draws one mesh.
 #include "common/app/app.h"
 #include "common/core/error.h"
-#include "common/app/change_tracker.h"
+#include "common/params/change_tracker.h"
 #include "common/gl/framebuffer.h"
 #include "common/gl/gl.h"
 #include "common/gl/gpu_mesh.h"

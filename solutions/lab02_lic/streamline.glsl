@@ -33,8 +33,8 @@ vec2 advance(vec2 st, float direction, vec2 texel) {
     // TODO(L02-T5): the second-order (midpoint) step: a half step to the midpoint, then the whole
     // step with the velocity found there. Circles stay circles far longer than with Euler.
 //@solution L02-T5
-    vec2 half_step = st + 0.5 * direction * stepDirection(flowAt(st)) * texel;
-    return st + direction * stepDirection(flowAt(half_step)) * texel;
+    vec2 halfStep = st + 0.5 * direction * stepDirection(flowAt(st)) * texel;
+    return st + direction * stepDirection(flowAt(halfStep)) * texel;
 //@starter
 //    return st + direction * stepDirection(flowAt(st)) * texel;
 //@end

@@ -19,8 +19,8 @@ void main() {
     for (int direction = -1; direction <= 1; direction += 2) {
         vec2 st = vTexCoord;
         for (int i = 0; i < uLength; ++i) {
-            vec2 half_way = st + 0.5 * float(direction) * flowAt(st) * uFlowTexel;
-            st += float(direction) * flowAt(half_way) * uFlowTexel;
+            vec2 halfWay = st + 0.5 * float(direction) * flowAt(st) * uFlowTexel;
+            st += float(direction) * flowAt(halfWay) * uFlowTexel;
             if (!inside(st)) break;
             sum += texture(uNoise, st).r;
             count += 1.0;

@@ -4,7 +4,7 @@
 // from the heights around it (normal.glsl). Beside it, real geometry: an N x N grid displaced by the same
 // heights, to see what the trick saves and where it shows.
 #include "common/app/app.h"
-#include "common/app/change_tracker.h"
+#include "common/params/change_tracker.h"
 #include "common/app/legend_probe.h"
 #include "common/core/number_text.h"
 #include "common/gl/gl.h"
@@ -12,6 +12,9 @@
 #include "common/gl/texture.h"
 #include "common/scene/mesh_data.h"
 #include "terrain_source.h"
+#ifdef GSV_HAVE_REFERENCE
+#include "reference/lab04_terrain/normal_measure.h"  // the instructor's measurements (cmake/labs.cmake)
+#endif
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -76,6 +79,8 @@ public:
     }
 
     std::vector<std::string> sweep_reference() const override { return {"delta=1"}; }
+#ifdef GSV_HAVE_REFERENCE
+    // Measured against the instructor's CPU normals (reference/); a student's sweep has the images' errors only.
     // The plotted error is the normals' against the truth where a formula gives it; real data have no truer
     // normals than their own samples' finest differences.
     std::string sweep_error_column() const override { return "normal_err_mean_deg"; }
@@ -90,6 +95,7 @@ public:
         return lab04::measure_normals(kit, *terrain_, *probe_, quad_,
                                       [&](const gsv::ShaderProgram& program) { set_terrain_uniforms(program); });
     }
+#endif
 
     // The colours by height as color.glsl draws them, over the terrain's heights.
     std::optional<gsv::Legend> legend(gsv::LabKit& kit) override {

@@ -10,8 +10,8 @@ uniform float uDelta;        // finite-difference step in samples: the accuracy 
 uniform int uMipLevel;       // with mipmaps: -1 lets the hardware pick a level, k >= 0 reads level k
 
 // The height at fractional sample index (i, j), i east and j north, each sample at its texel centre.
-float heightAt(vec2 sample_index) {
-    vec2 st = (sample_index + 0.5) / vec2(textureSize(uHeights, 0));
+float heightAt(vec2 sampleIndex) {
+    vec2 st = (sampleIndex + 0.5) / vec2(textureSize(uHeights, 0));
 #ifdef EFFECT_MIPMAPS
     if (uMipLevel >= 0) return textureLod(uHeights, st, float(uMipLevel)).r;
 #endif
@@ -30,9 +30,9 @@ vec2 terrainSlope(vec2 st) {
     vec2 lo = max(here - uDelta, vec2(0.0));
     vec2 hi = min(here + uDelta, size - 1.0);
     vec2 span = (hi - lo) * uSpacing;
-    float rise_x = heightAt(vec2(hi.x, here.y)) - heightAt(vec2(lo.x, here.y));
-    float rise_y = heightAt(vec2(here.x, hi.y)) - heightAt(vec2(here.x, lo.y));
-    return vec2(span.x > 0.0 ? rise_x / span.x : 0.0, span.y > 0.0 ? rise_y / span.y : 0.0);
+    float riseX = heightAt(vec2(hi.x, here.y)) - heightAt(vec2(lo.x, here.y));
+    float riseY = heightAt(vec2(here.x, hi.y)) - heightAt(vec2(here.x, lo.y));
+    return vec2(span.x > 0.0 ? riseX / span.x : 0.0, span.y > 0.0 ? riseY / span.y : 0.0);
 //@starter
 //    return vec2(0.0);
 //@end

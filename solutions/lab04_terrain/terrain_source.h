@@ -1,12 +1,10 @@
 #pragma once
-// Lab 04's support code, not part of the lesson: the terrain to draw, where it sits in the world, and the
-// sweep's measurement of the shader's normals.
+// Lab 04's support code, not part of the lesson: the terrain to draw and where it sits in the world. (The sweep's
+// measurement of the shader's normals is the instructor's: reference/lab04_terrain/.)
 #include "common/app/app.h"
-#include "common/gl/gpu_mesh.h"
 #include "support/terrain/height_field.h"
 #include "support/terrain/terrain_procedural.h"
 
-#include <functional>
 #include <optional>
 #include <string>
 
@@ -24,13 +22,5 @@ Terrain load_terrain(gsv::LabKit& kit);
 // The uniforms that place the terrain in the world: the larger side spans 2 model units, heights at the
 // same scale (times the exaggeration), the middle height at y = 0; and the spacing and height range.
 void set_placement(const gsv::ShaderProgram& program, const Terrain& terrain);
-
-// The shader's normals (normal_probe.frag, one fragment per sample) against the exact normals of a
-// procedural terrain or, for a real model, the normals of its full-resolution differences (delta 1): mean and
-// largest angle in degrees; and the largest angle between the shader's normals and the same differences in
-// double precision at the same delta (finite_difference_normal for a whole step), which only rounding should
-// separate, until a step far below a sample makes float32 cancel.
-gsv::SweepMetrics measure_normals(gsv::LabKit& kit, const Terrain& terrain, const gsv::ShaderLibrary::Entry& probe,
-                                  const gsv::GpuMesh& quad, const std::function<void(const gsv::ShaderProgram&)>& set_uniforms);
 
 }  // namespace lab04

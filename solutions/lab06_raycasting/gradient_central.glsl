@@ -1,5 +1,5 @@
 // Lab 06, gradient module: central differences, (v(x + h) - v(x - h)) / (2 spacing) per axis.
-// Six lookups; second-order accurate. Matches gsv::central_difference at step 1.
+// Six lookups; second-order accurate.
 #pragma once
 #include "volume_geometry.glsl"
 

@@ -3,6 +3,8 @@
 // sphere to embed in the volume.
 #include "lab_processor.h"
 
+#include "common/params/change_tracker.h"
+
 #include <memory>
 #include <string>
 
@@ -18,8 +20,9 @@ public:
     void process() override;
 
 private:
-    std::string loaded_;  // the properties the current volume was made from
-    std::shared_ptr<VolumeData> data_;
+    gsv::Param<std::string> kind_, file_;
+    gsv::Param<int> ml_size_;
+    gsv::Tracked<std::shared_ptr<VolumeData>> data_;
 };
 
 // The volume's box as proxy geometry, cut by one clipping plane: texture space, keeping the points t with
@@ -30,8 +33,9 @@ public:
     void process() override;
 
 private:
-    std::string built_;
-    std::shared_ptr<GeometryData> data_;
+    gsv::Param<glm::vec3> clip_normal_;
+    gsv::Param<double> clip_offset_;
+    gsv::Tracked<std::shared_ptr<GeometryData>> data_;
 };
 
 // A sphere of probe_radius model units at probe_position (model space: the box is centred at the origin,
@@ -42,8 +46,9 @@ public:
     void process() override;
 
 private:
-    std::string built_;
-    std::shared_ptr<GeometryData> data_;
+    gsv::Param<glm::vec3> position_;
+    gsv::Param<float> radius_;
+    gsv::Tracked<std::shared_ptr<GeometryData>> data_;
 };
 
 }  // namespace lab06

@@ -3,7 +3,7 @@
 // floats whatever the number of elements), every element's node values in one buffer texture, and the
 // patches that place the elements. Rebuilt when the mesh, field, degree, node set or time changes.
 #include "common/app/app.h"
-#include "common/app/change_tracker.h"
+#include "common/params/change_tracker.h"
 #include "common/gl/buffer_texture.h"
 #include "common/gl/gpu_mesh.h"
 #include "common/shader/shader_program.h"

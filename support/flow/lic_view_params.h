@@ -1,7 +1,7 @@
 #pragma once
 // What makes a LIC worth projecting, declared alike by every LIC lab (02, 03): an observer moving along +x, in whose
 // frame the vortex street's drifting vortices show, and a tone curve after the LIC (support/flow/lic_contrast.h).
-#include "common/app/params.h"
+#include "common/params/params.h"
 
 namespace gsv {
 

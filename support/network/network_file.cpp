@@ -91,10 +91,10 @@ private:
             if (eq == std::string::npos || eq == 0) fail("'" + words[i] + "' is not key=value");
             const std::string key = words[i].substr(0, eq);
             if (std::find(keys.begin(), keys.end(), key) != keys.end())
-                fail("property '" + key + "' is set twice for " + name);
+                fail("parameter '" + key + "' is set twice for " + name);
             keys.push_back(key);
             try {
-                processor->set_property(key, words[i].substr(eq + 1));
+                processor->set_param(key, words[i].substr(eq + 1));
             } catch (const Error& e) {
                 fail(e.what());
             }
@@ -117,10 +117,10 @@ private:
     std::map<std::string, int> declared_on_;  // instance name -> line, for a name used twice
 };
 
-std::string value_text(const Processor& processor, const Property& property) {
-    const std::string& v = property.value;
+std::string value_text(const Processor& processor, const std::string& name) {
+    const std::string v = processor.param_text(name);
     if (v.find_first_of("\"\n\r") != std::string::npos)
-        throw Error(processor.name() + "." + property.name + " = '" + v +
+        throw Error(processor.name() + "." + name + " = '" + v +
                     "' cannot be written to a network file (no double quotes or line breaks)");
     const bool needs_quotes = v.empty() || std::any_of(v.begin(), v.end(), is_blank);
     return needs_quotes ? "\"" + v + "\"" : v;
@@ -150,8 +150,8 @@ std::string network_text(const Network& network) {
     std::string out;
     for (const auto& p : network.processors()) {
         out += "processor " + p->type_name() + " " + p->name();
-        for (const Property& property : p->properties())
-            if (property.set) out += " " + property.name + "=" + value_text(*p, property);
+        for (const ParamSpec& spec : p->params().specs())
+            if (p->is_set(spec.name)) out += " " + spec.name + "=" + value_text(*p, spec.name);
         out += "\n";
     }
     if (!network.connections().empty()) out += "\n";

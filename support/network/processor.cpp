@@ -83,36 +83,27 @@ void Processor::add_output(const std::string& name, PortType type) {
     outputs_.push_back(Port{name, type, false, {}});
 }
 
-void Processor::add_property(const std::string& name, const std::string& default_value,
-                             std::vector<std::string> choices) {
-    if (!is_network_name(name))
-        throw Error(type_name_ + ": property name '" + name + "' may only use letters, digits, '_' and '-'");
-    for (const Property& p : properties_)
-        if (p.name == name) throw Error(type_name_ + ": property '" + name + "' declared twice");
-    if (!choices.empty() && std::find(choices.begin(), choices.end(), default_value) == choices.end())
-        throw Error(type_name_ + ": property '" + name + "' defaults to '" + default_value +
-                    "', which is not one of: " + list_or_none(choices));
-    properties_.push_back(Property{name, default_value, default_value, std::move(choices), false});
-}
-
-std::size_t Processor::property_index(const std::string& name) const {
-    for (std::size_t i = 0; i < properties_.size(); ++i)
-        if (properties_[i].name == name) return i;
+std::size_t Processor::param_index(const std::string& name) const {
+    const std::vector<ParamSpec>& specs = params_.specs();
+    for (std::size_t i = 0; i < specs.size(); ++i)
+        if (specs[i].name == name) return i;
     std::vector<std::string> known;
-    for (const Property& p : properties_) known.push_back(p.name);
-    throw Error(describe() + " has no property '" + name + "' (its properties: " + list_or_none(known) + ")");
+    for (const ParamSpec& s : specs) known.push_back(s.name);
+    throw Error(describe() + " has no parameter '" + name + "' (its parameters: " + list_or_none(known) + ")");
 }
 
-void Processor::set_property(const std::string& name, const std::string& value) {
-    Property& p = properties_[property_index(name)];
-    if (!p.choices.empty() && std::find(p.choices.begin(), p.choices.end(), value) == p.choices.end())
-        throw Error(qualified(name) + " = '" + value + "' is not one of: " + list_or_none(p.choices));
-    p.value = value;
-    p.set = true;
+void Processor::set_param(const std::string& name, const std::string& value) {
+    const std::size_t i = param_index(name);
+    params_.set(name, value);
+    set_.resize(params_.specs().size());
+    set_[i] = true;
 }
 
-const std::string& Processor::property(const std::string& name) const {
-    return properties_[property_index(name)].value;
+std::string Processor::param_text(const std::string& name) const { return params_.text_at(param_index(name)); }
+
+bool Processor::is_set(const std::string& name) const {
+    const std::size_t i = param_index(name);
+    return i < set_.size() && set_[i];
 }
 
 const Port& Processor::input_port(const std::string& port) const {

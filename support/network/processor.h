@@ -1,11 +1,14 @@
 #pragma once
 // A processor of lab 06's data-flow network, after Voreen (Meyer-Spradow et al., GRAPP 2010; IEEE CG&A 2009): one step
 // of a visualization (read a volume, draw its proxy geometry, cast the rays) with typed input and output
-// ports and named string properties. A processor never sees the network: the network fills its inputs
+// ports and its own typed parameters (common/params/params.h; Inviwo's properties are the model). A processor
+// never sees the network: the network fills its inputs
 // from the outputs they are connected to, calls process() in dependency order, and remembers how it went.
 //
 // Nothing here touches GL, so a network can be built, checked and run in a unit test; the lab's
 // processors put their textures, framebuffers and meshes into the ports.
+#include "common/params/params.h"
+
 #include <memory>
 #include <string>
 #include <typeinfo>
@@ -47,16 +50,6 @@ struct Port {
     PortData data;          // filled by run(): an output by its processor, an input from its connection
 };
 
-struct Property {
-    std::string name;
-    std::string value;
-    std::string default_value;
-    std::vector<std::string> choices;  // the values allowed; empty: any text
-    // Set from code or a file, even to the default: written back to a network file, so a file that names
-    // a setting keeps naming it when saved.
-    bool set = false;
-};
-
 // Where a processor stands after the network's last run.
 enum class RunState {
     Pending,  // not run yet
@@ -81,7 +74,7 @@ public:
     const std::string& name() const { return name_; }
     std::string describe() const;  // "raycaster (RayTraversal)", or "RayTraversal" before it has a name
 
-    // Reads the inputs (input<T>), reads properties, sets the outputs (set_output). Throws gsv::Error when it
+    // Reads the inputs (input<T>), reads its parameters, sets the outputs (set_output). Throws gsv::Error when it
     // cannot: the network marks this processor failed with the message, skips what depends on it, and
     // goes on with the rest. A processor that leaves a connected output empty fails, too.
     virtual void process() = 0;
@@ -91,10 +84,16 @@ public:
     const Port* find_input(const std::string& port) const;   // nullptr when there is none of that name
     const Port* find_output(const std::string& port) const;
 
-    // Throws gsv::Error for an unknown property (listing the known ones) or a value not among its choices.
-    void set_property(const std::string& name, const std::string& value);
-    const std::string& property(const std::string& name) const;
-    const std::vector<Property>& properties() const { return properties_; }
+    // Its parameters, declared in the subclass's constructor (params().add_float(...) gives the typed handle it
+    // reads). A network file and set_param set them by name, each parsed and checked by Params::set.
+    Params& params() { return params_; }
+    const Params& params() const { return params_; }
+    // Throws gsv::Error for an unknown parameter (listing the known ones) or a value its type or range refuses.
+    void set_param(const std::string& name, const std::string& value);
+    std::string param_text(const std::string& name) const;  // throws as set_param does for an unknown one
+    // Set from code or a file, even to the default: written back to a network file, so a file that names a
+    // setting keeps naming it when saved, and kept when the lab's parameters change.
+    bool is_set(const std::string& name) const;
 
     // The last run: a failed processor's error, "not run: <upstream> failed" for a skipped one, else empty.
     // The GL lab shows it on the processor, as Voreen shows a shader's compile log on its owner.
@@ -107,8 +106,6 @@ protected:
     void add_input(const std::string& name, PortType type);
     void add_optional_input(const std::string& name, PortType type);
     void add_output(const std::string& name, PortType type);
-    void add_property(const std::string& name, const std::string& default_value,
-                      std::vector<std::string> choices = {});
 
     // What the input holds, as a T. nullptr for an optional input left unconnected. Throws gsv::Error naming
     // the port for an unknown input, a required input that holds nothing, or a value of another C++ type.
@@ -131,19 +128,20 @@ private:
     const Port& input_port(const std::string& port) const;
     Port& output_port(const std::string& port);
     [[noreturn]] void fail_input_type(const std::string& port) const;
-    std::size_t property_index(const std::string& name) const;  // throws listing the known properties
+    std::size_t param_index(const std::string& name) const;  // throws listing the known parameters
     std::string qualified(const std::string& member) const;    // "raycaster.entry"
 
     std::string type_name_;
     std::string name_;
     std::vector<Port> inputs_;
     std::vector<Port> outputs_;
-    std::vector<Property> properties_;
+    Params params_;
+    std::vector<bool> set_;  // per parameter, as declared
     RunState state_ = RunState::Pending;
     std::string error_;
 };
 
-// Processor, port and property names end up in file names ("raycaster.image.png") and in network files,
+// Processor, port and parameter names end up in file names ("raycaster.image.png") and in network files,
 // where '.', '=', '#' and blanks mean something: letters, digits, '_' and '-' only, and not empty.
 bool is_network_name(const std::string& name);
 

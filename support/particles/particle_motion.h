@@ -1,11 +1,10 @@
 #pragma once
-// Particle advection for lab 05, on the CPU: the scenes, their velocity fields, the three integrators and
-// one step of one particle, written once as templates so that the same lines run in double (the
-// correctness reference) and in float (what the compute shader does, in the shader's order of operations,
-// so a float CPU run and the GPU agree to a few ulps rather than only to the method's error).
+// Lab 05's particles on the CPU: the scenes, their velocity fields and the initial particles the lab uploads.
+// How a particle moves (the integrators, the lab's TODOs) is not here: the instructor's CPU yardstick of them
+// is in reference/particles/particle_step.h, which neither the student edition nor a student's build sees.
 //
-// The domain is D = [-1,1]^3. A particle that ends a step outside D (some |p_i| > 1, strictly) starts over
-// at its origin, so a finite buffer shows a steady stream instead of emptying.
+// The domain is D = [-1,1]^3. A particle that leaves it starts over at its origin, so a finite buffer shows a
+// steady stream instead of emptying.
 #include <glm/glm.hpp>
 
 #include <cstddef>
@@ -14,8 +13,6 @@
 #include <vector>
 
 namespace gsv {
-
-class VelocityGrid;  // support/particles/particle_grid.h
 
 // A particle's starting state, to which it returns when it leaves the domain. Two vec4s, 32 bytes, the
 // layout of the GLSL struct { vec4 position; vec4 velocity; } in a std430 buffer.
@@ -49,12 +46,6 @@ const char* particle_scene_name(ParticleScene scene);
 Integrator integrator_from_name(const std::string& name);
 const char* integrator_name(Integrator integrator);
 
-// What one step of `integrator` does to a particle's distance from the axis of the rotation u = (-y, x, 0): the
-// exact flow keeps it, a step multiplies it by |R(ih)|, R the method's stability polynomial (1 + z for Euler,
-// 1 + z + z^2/2 for midpoint, up to z^4/24 for RK4). So n steps take a radius r to r |R(ih)|^n: after one turn
-// at h = 0.1, 1.368 for Euler, 1.0008 for midpoint, 0.9999996 for RK4.
-double rotation_radius_growth_per_step(Integrator integrator, double h);
-
 // The analytic field in domain units per unit time, for T = float or double (computed in T throughout, as
 // the shader computes in float):
 //   Rotation  u = (-y, x, 0)    circles about the z axis, period 2 pi; stagnation point at the origin
@@ -65,38 +56,6 @@ double rotation_radius_growth_per_step(Integrator integrator, double h);
 // Throws gsv::Error for Gravity, which has no field.
 template <class T>
 glm::tvec3<T> field_velocity(ParticleScene scene, glm::tvec3<T> p);
-
-// One step's settings. `grid`, when set, replaces the analytic field of a field scene by its trilinear
-// lookup (the 3D texture the shader samples); it must outlive the steps. Gravity ignores it, and
-// check_step_spec refuses the pair, since a grid there is surely a caller's mistake.
-struct StepSpec {
-    ParticleScene scene = ParticleScene::Rotation;
-    Integrator integrator = Integrator::Rk4;
-    double h = 0.01;     // the time step
-    double gravity = 2;  // G of g = (0, -G, 0), Gravity only
-    const VelocityGrid* grid = nullptr;
-};
-
-// Throws gsv::Error for a step h or gravity that is not finite, a scene or integrator outside the enums, a
-// grid given with Gravity, or a grid whose side or texel count is not one VelocityGrid::sample makes.
-// step_particle itself checks nothing (it runs per particle per step): callers check once, as advance_cpu
-// and advance_reference do.
-void check_step_spec(const StepSpec& spec);
-
-// One step of one particle in T = float or double, h and G rounded to T first:
-//   Gravity (p' = v, v' = g):
-//     euler               p1 = p + h v;               v1 = v + h g
-//     midpoint and rk4    p1 = p + h v + (h h / 2) g;  v1 = v + h g   (exact for constant acceleration)
-//   field scenes (u = the analytic field, or spec.grid's lookup):
-//     euler     k1 = u(p); p1 = p + h k1
-//     midpoint  k1 = u(p); k2 = u(p + (h/2) k1); p1 = p + h k2
-//     rk4       ... k3 = u(p + (h/2) k2); k4 = u(p + h k3); p1 = p + (h/6) (k1 + 2 k2 + 2 k3 + k4)
-//     v1 = k1, the velocity where the step began (it colours the particle).
-// Then, if some |p1_i| > 1, the particle returns to its origin: p1 = p0, v1 = v0; on the boundary it stays.
-// Returns true when it returned. Defined for float and double only.
-template <class T>
-bool step_particle(const StepSpec& spec, glm::tvec3<T>& p, glm::tvec3<T>& v, const glm::tvec3<T>& p0,
-                   const glm::tvec3<T>& v0);
 
 // The initial particles of a scene, the same for a seed on every machine (hash64 draws of splitmix64.h;
 // particle i uses only its own draws, so a smaller count gives a prefix of a larger one):

@@ -35,6 +35,11 @@ const char* name_of(RaycastConfig::Gradient gradient);
 const char* name_of(RaycastConfig::Classification classification);
 const char* name_of(RaycastConfig::Shading shading);
 const char* name_of(RaycastConfig::Compositing compositing);
+// Each table's names in its enum's order: the choices of the ray caster's parameters.
+std::vector<std::string> gradient_names();
+std::vector<std::string> classification_names();
+std::vector<std::string> shading_names();
+std::vector<std::string> compositing_names();
 // Throw gsv::Error, one line naming the bad value and the known ones.
 RaycastConfig::Gradient parse_gradient(const std::string& name);
 RaycastConfig::Classification parse_classification(const std::string& name);
@@ -55,8 +60,16 @@ void validate(const RaycastConfig& config);
 // changes. The generated header names the result.
 RaycastConfig effective_config(const RaycastConfig& config);
 
-// Every configuration validate() accepts, early termination on: 56 of the 4 x 2 x 2 x 4 (Phong without a
-// gradient is refused), for tests and sweeps.
+// What a legend says of a compositing mode's picture, from its row of the module table.
+struct CompositingLegend {
+    bool shown;            // false where the colours are not data (first hit's are positions)
+    const char* note;      // one sentence under the colour bar
+    bool marks_iso_value;  // a mark at the iso value
+};
+CompositingLegend compositing_legend(RaycastConfig::Compositing compositing);
+
+// Every configuration validate() accepts, early termination on, over every row of every module table: 56 of the
+// 4 x 2 x 2 x 4 (Phong without a gradient is refused), for tests and sweeps.
 std::vector<RaycastConfig> all_raycast_configs();
 
 // The name raycast.frag includes and the text of it for `config`: #include lines for the chosen modules,
@@ -66,6 +79,13 @@ inline constexpr const char* kRaycastConfigFile = "rc_config.glsl";
 std::string generate_raycast_header(const RaycastConfig& config);
 // {kRaycastConfigFile, generate_raycast_header(config)}: ready for ProgramSpec::generated.
 GeneratedFile raycast_config_file(const RaycastConfig& config);
+
+// The uber-shader's modules, generated from the same tables (raycast_uber.frag includes it): every module's
+// file, the mode uniforms, and the RC_* placeholders defined as functions that pick a module per draw by those
+// uniforms, one branch a row, so no mode can fall through to another's.
+inline constexpr const char* kRaycastUberFile = "rc_uber.glsl";
+std::string generate_raycast_uber_header();
+GeneratedFile raycast_uber_file();  // {kRaycastUberFile, generate_raycast_uber_header()}
 
 // The mode uniforms raycast_uber.frag reads (uGradientMode, uClassificationMode, uShadingMode,
 // uCompositingMode, uEarlyTermination) for the effective configuration, so the uber-shader computes the

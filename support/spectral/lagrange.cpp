@@ -84,43 +84,4 @@ std::vector<double> barycentric_weights(const std::vector<double>& nodes) {
     return w;
 }
 
-std::vector<double> lagrange_basis(const std::vector<double>& nodes, const std::vector<double>& weights, double x) {
-    std::vector<double> l(nodes.size(), 0.0);
-    for (std::size_t j = 0; j < nodes.size(); ++j)
-        if (x == nodes[j]) {
-            l[j] = 1.0;
-            return l;
-        }
-    double sum = 0;
-    for (std::size_t j = 0; j < nodes.size(); ++j) {
-        l[j] = weights[j] / (x - nodes[j]);
-        sum += l[j];
-    }
-    for (double& v : l) v /= sum;
-    return l;
-}
-
-double lagrange_interpolate(const std::vector<double>& nodes, const std::vector<double>& weights,
-                            const std::vector<double>& values, double x) {
-    const std::vector<double> l = lagrange_basis(nodes, weights, x);
-    double sum = 0;
-    for (std::size_t j = 0; j < l.size(); ++j) sum += values.at(j) * l[j];
-    return sum;
-}
-
-double lebesgue_constant(NodeSet set, int degree, int samples) {
-    const std::vector<double> x = lagrange_nodes(set, degree);
-    const std::vector<double> w = barycentric_weights(x);
-    std::vector<double> points;
-    for (int i = 0; i <= samples; ++i) points.push_back(-1.0 + 2.0 * i / samples);
-    for (std::size_t j = 0; j + 1 < x.size(); ++j) points.push_back(0.5 * (x[j] + x[j + 1]));
-    double worst = 0;
-    for (double t : points) {
-        double sum = 0;
-        for (double l : lagrange_basis(x, w, t)) sum += std::abs(l);
-        worst = std::max(worst, sum);
-    }
-    return worst;
-}
-
 }  // namespace gsv

@@ -1,7 +1,7 @@
 #pragma once
-// Lagrange interpolation on one axis of a spectral element: the node sets, barycentric weights, and an
-// evaluation that is exact at the nodes and never divides by zero. Lab 07 evaluates the same formula per
-// fragment; this is its double-precision reference.
+// Lagrange interpolation on one axis of a spectral element: the node sets and their barycentric weights, which
+// lab 07 uploads. Evaluating the basis with them is the lab's TODO L07-T1; the instructor's double-precision
+// yardstick of it is reference/spectral/lagrange_basis.h.
 //
 // Convention: "degree p" means a polynomial of degree p per axis, through p + 1 nodes per axis, (p + 1)^2
 // values per 2D element. (The seed, Peng and Forsberg 2002, counts n + 2 points per axis for "order n":
@@ -30,21 +30,5 @@ std::vector<double> lagrange_nodes(NodeSet set, int degree);
 // divides the scale out; float32 then holds them at any degree here). Throws gsv::Error for fewer than two
 // nodes or two equal nodes.
 std::vector<double> barycentric_weights(const std::vector<double>& nodes);
-
-// Every l_j(x), j = 0 .. p, by the second (true) barycentric formula
-//   l_j(x) = (w_j / (x - x_j)) / sum_k (w_k / (x - x_k)),
-// except where x equals a node exactly: there l_j is 1 at that node and 0 elsewhere, which is the limit,
-// and 0/0 is never formed. Away from the nodes the sum of the l_j is 1 to rounding. `x` may lie outside
-// [-1, 1] (extrapolation).
-std::vector<double> lagrange_basis(const std::vector<double>& nodes, const std::vector<double>& weights, double x);
-
-// sum_j values[j] l_j(x).
-double lagrange_interpolate(const std::vector<double>& nodes, const std::vector<double>& weights,
-                            const std::vector<double>& values, double x);
-
-// max over [-1, 1] of sum_j |l_j(x)|, sampled at `samples` evenly spaced points plus the midpoints between
-// neighbouring nodes (where the maximum of each lobe lies closely for these sets): how much interpolation
-// can amplify an error in the values.
-double lebesgue_constant(NodeSet set, int degree, int samples = 20000);
 
 }  // namespace gsv

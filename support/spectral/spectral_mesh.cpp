@@ -68,31 +68,6 @@ std::vector<float> sample_element_values(const ElementMesh& mesh, SpectralField 
     return values;
 }
 
-double evaluate_element(const std::vector<float>& values, const std::vector<double>& nodes,
-                        const std::vector<double>& weights, int element, double xi, double eta) {
-    const std::size_t n = nodes.size();
-    const std::size_t base = static_cast<std::size_t>(element) * n * n;
-    if (element < 0 || base + n * n > values.size())
-        throw Error("element " + std::to_string(element) + " has no values (" + std::to_string(values.size()) + " values)");
-    const std::vector<double> lx = lagrange_basis(nodes, weights, xi);
-    const std::vector<double> ly = lagrange_basis(nodes, weights, eta);
-    double sum = 0;
-    for (std::size_t j = 0; j < n; ++j)
-        for (std::size_t i = 0; i < n; ++i) sum += static_cast<double>(values[base + j * n + i]) * lx[i] * ly[j];
-    return sum;
-}
-
-double evaluate_corners(const std::vector<float>& values, int degree, int element, double xi, double eta) {
-    const std::size_t n = static_cast<std::size_t>(degree) + 1;
-    const std::size_t base = static_cast<std::size_t>(element) * n * n;
-    if (element < 0 || base + n * n > values.size())
-        throw Error("element " + std::to_string(element) + " has no values (" + std::to_string(values.size()) + " values)");
-    const double u = 0.5 * (xi + 1.0), v = 0.5 * (eta + 1.0);
-    const double f00 = values[base], f10 = values[base + n - 1];
-    const double f01 = values[base + (n - 1) * n], f11 = values[base + n * n - 1];
-    return (1 - v) * ((1 - u) * f00 + u * f10) + v * ((1 - u) * f01 + u * f11);
-}
-
 MeshData element_patches(const ElementMesh& mesh, int subdivisions) {
     validate(mesh);
     if (subdivisions < 1 || subdivisions > 64)

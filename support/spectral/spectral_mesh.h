@@ -46,14 +46,6 @@ double spectral_field(SpectralField field, glm::dvec2 p, double time);
 std::vector<float> sample_element_values(const ElementMesh& mesh, SpectralField field, const std::vector<double>& nodes,
                                          double time);
 
-// sum_ij values(e, j, i) l_i(xi) l_j(eta) in double, from the float values: what the GPU's per-fragment
-// evaluation computes, without its float32 arithmetic.
-double evaluate_element(const std::vector<float>& values, const std::vector<double>& nodes,
-                        const std::vector<double>& weights, int element, double xi, double eta);
-
-// The bilinear blend of the element's four corner values: what drawing the quad from its corners shows.
-double evaluate_corners(const std::vector<float>& values, int degree, int element, double xi, double eta);
-
 // Each element as a subdivisions x subdivisions grid of quads, 2 subdivisions^2 triangles per element, in
 // element order (so a fragment's element is gl_PrimitiveID / (2 subdivisions^2)). Positions are the
 // element's map (z = 0), texture coordinates the reference (xi, eta), normals +z. The subdivision only

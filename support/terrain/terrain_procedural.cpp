@@ -3,7 +3,6 @@
 
 #include "common/core/enum_names.h"
 #include "common/core/error.h"
-#include "support/terrain/terrain_normal.h"
 
 #include <cmath>
 #include <cstddef>
@@ -103,10 +102,6 @@ glm::dvec2 terrain_slope(const ProceduralTerrain& terrain, glm::dvec2 ground_m) 
     // The chain rule of u = x / extent: metres of height per metre of ground.
     return terrain.amplitude_m / terrain.extent_m *
            unit_gradient(terrain.kind, ground_m.x / terrain.extent_m, ground_m.y / terrain.extent_m);
-}
-
-glm::dvec3 exact_normal(const ProceduralTerrain& terrain, glm::dvec2 ground_m, double exaggeration) {
-    return normal_from_slopes(terrain_slope(terrain, ground_m), exaggeration);
 }
 
 HeightField make_procedural(const ProceduralTerrain& terrain, int width, int height) {

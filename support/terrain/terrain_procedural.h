@@ -1,12 +1,13 @@
 #pragma once
-// Procedural terrains whose exact normals are known, so lab 04 can measure the error of the normals its
-// shader computes by finite differences (normal_angle against exact_normal) rather than only look at them.
+// Procedural terrains whose exact slopes are known, so lab 04's sweep can measure the error of the normals its
+// shader computes by finite differences (against reference/terrain/terrain_normal.h's exact_normal, the
+// instructor's) rather than only look at them.
 // Everything in double precision; only make_procedural's stored heights are rounded to float.
 //
 // Each kind is a function f(u, v) on the unit square with its analytic gradient; a ProceduralTerrain
 // stretches it over a ground square of extent_m metres and scales it by amplitude_m:
 //   h(x, z) = amplitude_m * f(x / extent_m, z / extent_m),   (dh/dx, dh/dz) = amplitude_m / extent_m * grad f,
-// with x along the field's columns and z along its rows (the frame of terrain_normal.h).
+// with x along the field's columns and z along its rows (x east, z north).
 #include "support/terrain/height_field.h"
 
 #include <glm/glm.hpp>
@@ -45,11 +46,6 @@ struct ProceduralTerrain {
 // amplitude or a point that is not finite.
 double terrain_height(const ProceduralTerrain& terrain, glm::dvec2 ground_m);
 glm::dvec2 terrain_slope(const ProceduralTerrain& terrain, glm::dvec2 ground_m);
-
-// The exact unit upward normal of y = exaggeration * h(x, z) at ground point (x, z) (normal_from_slopes of
-// terrain_slope). exact_normal(terrain, sample_position(field, i, j), e) is the normal that
-// finite_difference_normal(field, i, j, e, step) approximates when field = make_procedural(terrain, ...).
-glm::dvec3 exact_normal(const ProceduralTerrain& terrain, glm::dvec2 ground_m, double exaggeration = 1);
 
 // The terrain sampled at the centres of a width x height grid over its square: dx_m = extent_m / width,
 // dy_m = extent_m / height (a non-square grid has non-square cells), heights rounded to float. Throws

@@ -1,13 +1,13 @@
-#include "common/app/params.h"
+#include "common/params/params.h"
 
 #include "common/core/error.h"
 #include "common/core/number_text.h"
-#include "common/shader/shader_program.h"
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 namespace gsv {
 namespace {
@@ -26,12 +26,6 @@ std::string uniform_name_for(const std::string& name) {
     return out;
 }
 
-std::string macro_name_for(const std::string& name) {
-    std::string out;
-    for (char c : name) out += (c == '-') ? '_' : static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return out;
-}
-
 double parse_number(const std::string& name, const std::string& text) {
     const std::optional<double> v = parse_finite_number(text);
     if (!v) throw Error("parameter '" + name + "' = '" + text + "' is not a number");
@@ -42,103 +36,174 @@ std::string range_text(const ParamSpec& s) {
     return "[" + format_number(s.min, 7) + ", " + format_number(s.max, 7) + "]";
 }
 
+const char* type_name(ParamType type) {
+    switch (type) {
+    case ParamType::Float: return "a float";
+    case ParamType::Int: return "an int";
+    case ParamType::Bool: return "a bool";
+    case ParamType::Choice: return "a choice";
+    case ParamType::Vec3: return "a vec3";
+    case ParamType::File: return "a file path";
+    case ParamType::Text: return "a text";
+    }
+    return "?";
+}
+
 }  // namespace
 
-ParamSpec& ParamSpec::at_compile_time(std::string macro) {
-    compile_time = true;
-    define = macro.empty() ? macro_name_for(name) : std::move(macro);
-    return *this;
+std::string macro_name_for(const std::string& name) {
+    std::string out;
+    for (char c : name) out += (c == '-') ? '_' : static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return out;
 }
 
-ParamSpec& ParamSpec::applies_when(std::string param, std::vector<std::string> values) {
-    applies_when_all.push_back({std::move(param), std::move(values)});
-    return *this;
-}
-
-ParamSpec& ParamSpec::accuracy_knob(std::vector<std::string> values) {
-    sweep_values = std::move(values);
-    return *this;
-}
-
-ParamSpec& Params::add(ParamSpec spec, Value value) {
+std::size_t Params::add(ParamSpec spec, Value value) {
+    // Names end up in `--set name=value`, case files and network files, where '=', '.', '#' and blanks mean something.
+    const bool file_safe = !spec.name.empty() && std::all_of(spec.name.begin(), spec.name.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
+    });
+    if (!file_safe) throw Error("parameter name '" + spec.name + "' may only use letters, digits, '_' and '-'");
+    spec.scope = scope_;
+    spec.owner = owner_;
     for (const auto& s : specs_)
-        if (s.name == spec.name) throw Error("parameter '" + spec.name + "' declared twice");
+        if (s.name == spec.name)
+            throw Error("parameter '" + spec.name + "' declared twice" +
+                        (s.owner.empty() && spec.owner.empty() ? std::string() : " (by " + (s.owner.empty() ? "the lab" : s.owner) +
+                                                                                 " and " + (spec.owner.empty() ? "the lab" : spec.owner) + ")"));
     spec.uniform = uniform_name_for(spec.name);
     specs_.push_back(std::move(spec));
     values_.push_back(std::move(value));
-    return specs_.back();
+    return specs_.size() - 1;
 }
 
-ParamSpec& Params::add_float(const std::string& name, double value, double min, double max, const std::string& help) {
+Param<float> Params::add_float(const std::string& name, double value, double min, double max, const std::string& help) {
     ParamSpec s;
     s.name = name, s.type = ParamType::Float, s.help = help, s.min = min, s.max = max;
     Value v;
     v.number = value;
-    return add(std::move(s), v);
+    return Param<float>(this, add(std::move(s), v));
 }
 
-ParamSpec& Params::add_int(const std::string& name, int value, int min, int max, const std::string& help) {
+Param<int> Params::add_int(const std::string& name, int value, int min, int max, const std::string& help) {
     ParamSpec s;
     s.name = name, s.type = ParamType::Int, s.help = help, s.min = min, s.max = max, s.step = 1;
     Value v;
     v.number = value;
-    return add(std::move(s), v);
+    return Param<int>(this, add(std::move(s), v));
 }
 
-ParamSpec& Params::add_bool(const std::string& name, bool value, const std::string& help) {
+Param<bool> Params::add_bool(const std::string& name, bool value, const std::string& help) {
     ParamSpec s;
     s.name = name, s.type = ParamType::Bool, s.help = help, s.min = 0, s.max = 1;
     Value v;
     v.number = value ? 1 : 0;
-    return add(std::move(s), v);
+    return Param<bool>(this, add(std::move(s), v));
 }
 
-ParamSpec& Params::add_choice(const std::string& name, const std::string& value, std::vector<std::string> choices,
-                              const std::string& help) {
+Param<std::string> Params::add_choice(const std::string& name, const std::string& value, std::vector<std::string> choices,
+                                      const std::string& help) {
     ParamSpec s;
     s.name = name, s.type = ParamType::Choice, s.help = help, s.choices = std::move(choices);
     s.max = static_cast<double>(s.choices.size()) - 1;
-    Value v;
-    v.choice = value;
     auto it = std::find(s.choices.begin(), s.choices.end(), value);
+    if (it == s.choices.end()) throw Error("parameter '" + name + "' defaults to '" + value + "', which is not one of its choices");
+    Value v;
+    v.word = value;
     v.number = static_cast<double>(it - s.choices.begin());
-    return add(std::move(s), v);
+    return Param<std::string>(this, add(std::move(s), v));
 }
 
-ParamSpec& Params::add_vec3(const std::string& name, glm::vec3 value, double min, double max, const std::string& help) {
+Param<glm::vec3> Params::add_vec3(const std::string& name, glm::vec3 value, double min, double max, const std::string& help) {
     ParamSpec s;
     s.name = name, s.type = ParamType::Vec3, s.help = help, s.min = min, s.max = max;
     Value v;
     v.vec = value;
-    return add(std::move(s), v);
+    return Param<glm::vec3>(this, add(std::move(s), v));
 }
 
-ParamSpec& Params::add_file(const std::string& name, const std::string& value, const std::string& help) {
+Param<std::string> Params::add_word(const std::string& name, ParamType type, const std::string& value, const std::string& help) {
     ParamSpec s;
-    s.name = name, s.type = ParamType::File, s.help = help;
+    s.name = name, s.type = type, s.help = help;
     Value v;
-    v.choice = value;
-    return add(std::move(s), v);
+    v.word = value;
+    return Param<std::string>(this, add(std::move(s), v));
 }
 
-ParamSpec& Params::add_effect(const std::string& name, bool on, const std::string& help) {
-    ParamSpec& s = add_bool(name, on, help);
-    s.effect = true;
-    return s.at_compile_time("EFFECT_" + macro_name_for(name));
+Param<std::string> Params::add_file(const std::string& name, const std::string& value, const std::string& help) {
+    return add_word(name, ParamType::File, value, help);
+}
+
+Param<std::string> Params::add_text(const std::string& name, const std::string& value, const std::string& help) {
+    return add_word(name, ParamType::Text, value, help);
+}
+
+Param<bool> Params::add_effect(const std::string& name, bool on, const std::string& help) {
+    Param<bool> p = add_bool(name, on, help);
+    specs_[p.index_].effect = true;
+    p.at_compile_time("EFFECT_" + macro_name_for(name));
+    return p;
+}
+
+ParamScope Params::scope(const std::string& path, const std::string& owner) { return ParamScope(*this, path, owner); }
+
+void Params::adopt(const std::string& path, const std::string& owner, const Params& from) {
+    const std::string scope = std::exchange(scope_, path), declarer = std::exchange(owner_, owner);
+    try {
+        for (std::size_t i = 0; i < from.specs_.size(); ++i) add(from.specs_[i], from.values_[i]);
+    } catch (...) {
+        scope_ = scope, owner_ = declarer;
+        throw;
+    }
+    scope_ = scope, owner_ = declarer;
+}
+
+std::size_t Params::find_index(const std::string& name) const {
+    for (std::size_t i = 0; i < specs_.size(); ++i)
+        if (specs_[i].name == name || (!specs_[i].scope.empty() && specs_[i].qualified_name() == name)) return i;
+    return npos;
 }
 
 std::size_t Params::index_of(const std::string& name) const {
-    for (std::size_t i = 0; i < specs_.size(); ++i)
-        if (specs_[i].name == name) return i;
+    const std::size_t i = find_index(name);
+    if (i != npos) return i;
     std::string known;
     for (const auto& s : specs_) known += (known.empty() ? "" : ", ") + s.name;
     throw Error("unknown parameter '" + name + "' (this lab has: " + known + ")");
 }
 
-std::size_t Params::read_index(const std::string& name) const {
+std::size_t Params::read_index(const std::string& name, ParamType type) const {
     const std::size_t i = index_of(name);
-    if (read_log_.log) read_log_.log->push_back(i);
+    const ParamType has = specs_[i].type;
+    const auto is_text = [](ParamType t) { return t == ParamType::Choice || t == ParamType::File || t == ParamType::Text; };
+    if (has != type && !(is_text(type) && is_text(has)))
+        throw Error("parameter '" + name + "' is " + type_name(has) + ", read as " + type_name(type));
+    note_read(i);
     return i;
+}
+
+template <>
+float Param<float>::get() const {
+    return static_cast<float>(params_->read_value(index_).number);
+}
+template <>
+double Param<double>::get() const {
+    return params_->read_value(index_).number;
+}
+template <>
+int Param<int>::get() const {
+    return static_cast<int>(params_->read_value(index_).number);
+}
+template <>
+bool Param<bool>::get() const {
+    return params_->read_value(index_).number != 0;
+}
+template <>
+glm::vec3 Param<glm::vec3>::get() const {
+    return params_->read_value(index_).vec;
+}
+template <>
+std::string Param<std::string>::get() const {
+    return params_->read_value(index_).word;
 }
 
 std::vector<std::size_t>* Params::swap_read_log(std::vector<std::size_t>* log) const {
@@ -153,9 +218,10 @@ void Params::note_reads(const std::vector<std::size_t>& indices) const {
 
 const ParamSpec& Params::spec(const std::string& name) const { return specs_[index_of(name)]; }
 
-void Params::set(const std::string& name, const std::string& text) {
-    const std::size_t i = index_of(name);
+void Params::set(const std::string& given, const std::string& text) {
+    const std::size_t i = index_of(given);
     const ParamSpec& s = specs_[i];
+    const std::string& name = s.name;
     Value& v = values_[i];
     switch (s.type) {
     case ParamType::Float:
@@ -180,14 +246,15 @@ void Params::set(const std::string& name, const std::string& text) {
             for (const auto& c : s.choices) list += (list.empty() ? "" : ", ") + c;
             throw Error("parameter '" + name + "' = '" + text + "' is not one of: " + list);
         }
-        v.choice = text;
+        v.word = text;
         v.number = static_cast<double>(it - s.choices.begin());
         break;
     }
     case ParamType::File:
         if (text.empty()) throw Error("parameter '" + name + "' needs a file path");
-        v.choice = text;
+        v.word = text;
         break;
+    case ParamType::Text: v.word = text; break;
     case ParamType::Vec3: {
         std::string t = text;
         std::replace(t.begin(), t.end(), ';', ',');
@@ -217,7 +284,11 @@ void Params::set_assignment(const std::string& assignment) {
     set(assignment.substr(0, eq), assignment.substr(eq + 1));
 }
 
-std::string Params::get_text(const std::string& name) const { return text_at(read_index(name)); }
+std::string Params::get_text(const std::string& name) const {
+    const std::size_t i = index_of(name);
+    note_read(i);
+    return text_at(i);
+}
 
 std::string Params::text_at(std::size_t i) const {
     const Value& v = values_.at(i);
@@ -226,31 +297,33 @@ std::string Params::text_at(std::size_t i) const {
     case ParamType::Int: return std::to_string(static_cast<long>(v.number));
     case ParamType::Bool: return v.number != 0 ? "on" : "off";
     case ParamType::Choice:
-    case ParamType::File: return v.choice;
+    case ParamType::File:
+    case ParamType::Text: return v.word;
     case ParamType::Vec3: return format_number(v.vec.x, 7) + "," + format_number(v.vec.y, 7) + "," + format_number(v.vec.z, 7);
     }
     return "";
 }
 
-float Params::get_float(const std::string& name) const { return static_cast<float>(values_[read_index(name)].number); }
-int Params::get_int(const std::string& name) const { return static_cast<int>(values_[read_index(name)].number); }
-bool Params::get_bool(const std::string& name) const { return values_[read_index(name)].number != 0; }
-const std::string& Params::get_choice(const std::string& name) const { return values_[read_index(name)].choice; }
-glm::vec3 Params::get_vec3(const std::string& name) const { return values_[read_index(name)].vec; }
-const std::string& Params::get_file(const std::string& name) const { return values_[read_index(name)].choice; }
+float Params::get_float(const std::string& name) const { return static_cast<float>(values_[read_index(name, ParamType::Float)].number); }
+int Params::get_int(const std::string& name) const { return static_cast<int>(values_[read_index(name, ParamType::Int)].number); }
+bool Params::get_bool(const std::string& name) const { return values_[read_index(name, ParamType::Bool)].number != 0; }
+const std::string& Params::get_choice(const std::string& name) const { return values_[read_index(name, ParamType::Choice)].word; }
+glm::vec3 Params::get_vec3(const std::string& name) const { return values_[read_index(name, ParamType::Vec3)].vec; }
+const std::string& Params::get_file(const std::string& name) const { return values_[read_index(name, ParamType::File)].word; }
 
 void Params::nudge(const std::string& name, int steps) {
     const std::size_t i = index_of(name);
     const ParamSpec& s = specs_[i];
     Value& v = values_[i];
     switch (s.type) {
-    case ParamType::File: break;  // no sensible next file; typed on the command line
+    case ParamType::File:
+    case ParamType::Text: break;  // no sensible next file or text; typed on the command line
     case ParamType::Bool: v.number = v.number != 0 ? 0 : 1; break;
     case ParamType::Choice: {
         const int n = static_cast<int>(s.choices.size());
         const int k = ((static_cast<int>(v.number) + steps) % n + n) % n;
         v.number = k;
-        v.choice = s.choices[static_cast<std::size_t>(k)];
+        v.word = s.choices[static_cast<std::size_t>(k)];
         break;
     }
     case ParamType::Float:
@@ -269,49 +342,6 @@ void Params::nudge(const std::string& name, int steps) {
                            glm::vec3(static_cast<float>(s.min)), glm::vec3(static_cast<float>(s.max)));
         break;
     }
-    }
-}
-
-std::vector<ShaderDefine> Params::defines() const {
-    std::vector<ShaderDefine> out;
-    for (std::size_t i = 0; i < specs_.size(); ++i) {
-        const ParamSpec& s = specs_[i];
-        if (!s.compile_time) continue;
-        const Value& v = values_[i];
-        switch (s.type) {
-        case ParamType::Bool:
-            if (v.number != 0) out.push_back({s.define, "1"});
-            break;
-        case ParamType::Choice:
-            out.push_back({s.define, std::to_string(static_cast<int>(v.number))});
-            out.push_back({s.define + "_" + macro_name_for(v.choice), "1"});
-            break;
-        case ParamType::Int: out.push_back({s.define, std::to_string(static_cast<long>(v.number))}); break;
-        case ParamType::Float: out.push_back({s.define, format_number(v.number, 7)}); break;
-        case ParamType::Vec3: out.push_back({s.define, "vec3(" + text_at(i) + ")"}); break;
-        case ParamType::File: break;
-        }
-    }
-    return out;
-}
-
-void Params::apply_uniforms(const ShaderProgram& program) const {
-    for (std::size_t i = 0; i < specs_.size(); ++i) {
-        const ParamSpec& s = specs_[i];
-        // A sampler of the same name (lab 02's `input` and its texture uInput) keeps the unit the program gave it.
-        const bool sampler = !s.compile_time && program.texture_unit(s.uniform) >= 0;
-        if (read_log_.log && (s.compile_time || (s.type != ParamType::File && !sampler && program.has(s.uniform))))
-            read_log_.log->push_back(i);
-        if (s.compile_time || sampler) continue;
-        const Value& v = values_[i];
-        switch (s.type) {
-        case ParamType::Float: program.set(s.uniform, static_cast<float>(v.number)); break;
-        case ParamType::Int:
-        case ParamType::Bool:
-        case ParamType::Choice: program.set(s.uniform, static_cast<int>(v.number)); break;
-        case ParamType::Vec3: program.set(s.uniform, v.vec); break;
-        case ParamType::File: break;
-        }
     }
 }
 
@@ -337,7 +367,7 @@ std::string Params::describe() const {
     std::ostringstream out;
     for (std::size_t i = 0; i < specs_.size(); ++i) {
         const ParamSpec& s = specs_[i];
-        out << "  " << s.name << " = " << get_text(s.name) << "  ";
+        out << "  " << s.name << " = " << text_at(i) << "  ";
         switch (s.type) {
         case ParamType::Float: out << "float " << range_text(s); break;
         case ParamType::Int: out << "int " << range_text(s); break;
@@ -349,11 +379,13 @@ std::string Params::describe() const {
         }
         case ParamType::Vec3: out << "x,y,z each in " << range_text(s); break;
         case ParamType::File: out << "file path"; break;
+        case ParamType::Text: out << "text"; break;
         }
-        if (s.type == ParamType::File) out << ", read by the lab";
+        if (s.type == ParamType::File || s.type == ParamType::Text) out << ", read by the lab";
         else if (s.compile_time) out << ", compiled in as " << s.define;
         else out << ", uniform " << s.uniform;
         if (!s.sweep_values.empty()) out << ", ACCURACY KNOB";
+        if (!s.owner.empty()) out << ", declared by " << s.owner;
         for (const auto& condition : s.applies_when_all) {
             out << ", only where " << condition.param << "=";
             for (std::size_t k = 0; k < condition.values.size(); ++k) out << (k ? "|" : "") << condition.values[k];

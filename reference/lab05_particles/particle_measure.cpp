@@ -4,8 +4,7 @@
 #include "common/gl/buffer.h"
 #include "common/gl/gl.h"
 #include "common/timing/timing.h"
-#include "support/particles/particle_cpu.h"
-#include "support/particles/particle_grid.h"
+#include "reference/particles/particle_cpu.h"
 
 #include <algorithm>
 #include <cmath>

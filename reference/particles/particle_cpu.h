@@ -3,7 +3,7 @@
 // the same work, and what the GPU's numbers should be to a few ulps) and a double-precision reference from
 // the initial state (what the numbers should be, to measure the integrators' error). Plus the memory
 // bandwidth and per-particle traffic that put a measured speed against the bound memory sets.
-#include "support/particles/particle_motion.h"
+#include "reference/particles/particle_step.h"
 
 #include <glm/glm.hpp>
 

@@ -1,4 +1,4 @@
-#include "support/flow/time_slices.h"
+#include "reference/flow/time_slices.h"
 
 #include "common/core/error.h"
 

@@ -11,6 +11,7 @@
 // difference at the last voxel of an axis is 0 along it. At a texture coordinate, the differences go
 // through Volume::sample, exactly as a shader's texture() calls do; at a texel centre, with a step of one
 // voxel, they equal the voxel versions.
+// In reference/, the instructor's: linked by the solutions and the tests, never by a student's build.
 #include "support/volume/volume.h"
 
 #include <glm/glm.hpp>

@@ -1,6 +1,6 @@
-#include "common/app/case_file.h"
+#include "common/params/case_file.h"
 
-#include "common/app/params.h"
+#include "common/params/params.h"
 #include "common/core/error.h"
 #include "common/io/json.h"
 

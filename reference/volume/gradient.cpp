@@ -1,5 +1,5 @@
 // Finite-difference gradients of a Volume in physical units, and their safe normalisation.
-#include "support/volume/gradient.h"
+#include "reference/volume/gradient.h"
 
 #include "common/core/error.h"
 

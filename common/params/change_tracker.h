@@ -8,7 +8,7 @@
 //   gsv::Tracked<gsv::Texture> flow_;
 //   flow_.update(kit.params(), [&] { return make_flow_texture(kit, frame); }, frame.width, frame.height);
 //   flow_->bind(1);
-#include "common/app/params.h"
+#include "common/params/params.h"
 
 #include <algorithm>
 #include <cstdint>

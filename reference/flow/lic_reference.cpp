@@ -1,4 +1,4 @@
-#include "support/flow/lic_reference.h"
+#include "reference/flow/lic_reference.h"
 
 #include "common/core/error.h"
 

@@ -1,7 +1,8 @@
 #pragma once
 // Which stored time slices make up the flow at a playhead, in double precision: the CPU reference of
 // lab 03's sliceCoordinate / nearestSlice / nextSlice (solutions/lab03_texture_arrays/flow_time.glsl).
-// T slices cover one period; slice k was sampled at time k * period / T.
+// T slices cover one period; slice k was sampled at time k * period / T. In reference/, the instructor's: linked by
+// the solutions and the tests, never by a student's build.
 namespace gsv {
 
 enum class TimeWrap { Repeat, Clamp };  // a periodic flow wraps: after slice T - 1 comes slice 0

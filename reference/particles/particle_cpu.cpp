@@ -1,5 +1,5 @@
 // The multi-threaded float particle update, the double-precision reference, and the bandwidth yardstick.
-#include "support/particles/particle_cpu.h"
+#include "reference/particles/particle_cpu.h"
 
 #include "common/core/error.h"
 

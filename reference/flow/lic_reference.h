@@ -6,6 +6,7 @@
 // remains of the error is the step's, not the reference's. Everything else is the GPU's rule: the pixel's own
 // sample, then `length` samples at t = 1, 2, ... forward and the same backward, each direction ending at its first
 // sample outside the grid, and the noise looked up as GL_LINEAR with GL_CLAMP_TO_EDGE looks it up.
+// In reference/, the instructor's: linked by the solutions and the tests, never by a student's build.
 #include "common/image/image.h"
 #include "support/flow/flow_field.h"
 

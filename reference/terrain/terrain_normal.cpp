@@ -1,5 +1,5 @@
-// Terrain normals from slopes and from finite differences of a HeightField.
-#include "support/terrain/terrain_normal.h"
+// Terrain normals from slopes, from finite differences of a HeightField, and exact ones of a procedural terrain.
+#include "reference/terrain/terrain_normal.h"
 
 #include "common/core/error.h"
 
@@ -58,6 +58,10 @@ glm::dvec3 finite_difference_normal(const HeightField& field, int x, int y, doub
     const glm::dvec2 slope(slope_along(here, 1, x, field.width, step, field.dx_m),
                            slope_along(here, field.width, y, field.height, step, field.dy_m));
     return normal_from_slopes(slope, exaggeration);
+}
+
+glm::dvec3 exact_normal(const ProceduralTerrain& terrain, glm::dvec2 ground_m, double exaggeration) {
+    return normal_from_slopes(terrain_slope(terrain, ground_m), exaggeration);
 }
 
 double normal_angle(const glm::dvec3& a, const glm::dvec3& b) {

@@ -1,12 +1,14 @@
 #pragma once
-// Terrain normals: the CPU reference of what lab 04's shader computes from its height texture, and the
-// angle that measures how far one normal is from another.
+// Terrain normals: the CPU reference of what lab 04's shader computes from its height texture (L04-T1, L04-T2),
+// the exact normals of the procedural terrains, and the angle that measures how far one normal is from another.
+// The instructor's yardstick, kept out of support/ so that no student's copy holds the answers.
 //
 // Frame: x along the field's columns, y UP, z along its rows (the direction of increasing row, north for
 // the real models), matching texture coordinates (s, t) -> (x, z). Sample rows placed at increasing world z
 // in GL's right-handed world show a north-up map mirrored when seen from above (x east, y up makes +z
 // south); a lab that wants the map as printed places row j at -z and negates the normal's z.
 #include "support/terrain/height_field.h"
+#include "support/terrain/terrain_procedural.h"
 
 #include <glm/glm.hpp>
 
@@ -27,6 +29,12 @@ glm::dvec3 normal_from_slopes(glm::dvec2 slope, double exaggeration);
 // is 0. Throws gsv::Error for a sample outside the grid, step < 1, a field whose height count is not
 // width*height or whose spacing is not positive and finite, or an exaggeration normal_from_slopes refuses.
 glm::dvec3 finite_difference_normal(const HeightField& field, int x, int y, double exaggeration, int step);
+
+// The exact unit upward normal of y = exaggeration * h(x, z) at ground point (x, z) (normal_from_slopes of
+// terrain_slope). exact_normal(terrain, sample_position(field, i, j), e) is the normal that
+// finite_difference_normal(field, i, j, e, step) approximates when field = make_procedural(terrain, ...).
+glm::dvec3 exact_normal(const ProceduralTerrain& terrain, glm::dvec2 ground_m, double exaggeration = 1);
+
 
 // The angle in radians between two non-zero vectors, accurate for tiny angles too (atan2 of |a x b| and
 // a . b, where acos(a . b) would lose half the digits near 0).
