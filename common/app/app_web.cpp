@@ -8,6 +8,7 @@
 #include "common/app/page_description.h"
 #include "common/app/live_controls.h"
 #include "common/core/error.h"
+#include "common/shader/param_uniforms.h"
 #include "common/gl/framebuffer.h"
 #include "common/gl/gl.h"
 #include "common/timing/timing.h"
@@ -149,7 +150,7 @@ std::string web_orbit(double dx, double dy, double zoom_steps) {
 std::string web_reload_shaders() {
     return guarded([&] {
         Session& s = *the_page().session;
-        if (auto error = s.kit->shaders().rebuild_all(s.params.defines())) throw Error(*error);
+        if (auto error = s.kit->shaders().rebuild_all(param_defines(s.params))) throw Error(*error);
     });
 }
 
