@@ -1,4 +1,5 @@
 #include "grader/grade.h"
+#include "grader/image_verdict.h"
 
 #include "common/app/kit_layout.h"
 #include "common/core/error.h"
@@ -357,27 +358,7 @@ void Grading::grade_lab(const LabCases& lab, bool live, const LabBuild* build) {
     blame_needed_todos(lab, first);
 }
 
-// A case that fails while a TODO it needs fails its own cases says so: that TODO first. Blame lands where the work is.
-void Grading::blame_needed_todos(const LabCases& lab, std::size_t first) {
-    std::map<std::string, std::string> failing;  // TODO -> its first failing case
-    for (std::size_t i = first; i < report_.results.size(); ++i) {
-        const CaseResult& r = report_.results[i];
-        if (r.kind == "image" && r.status != CaseStatus::Passed && !failing.count(r.todo)) failing[r.todo] = r.name;
-    }
-    for (std::size_t i = first; i < report_.results.size(); ++i) {
-        CaseResult& r = report_.results[i];
-        if (r.status == CaseStatus::Passed || r.status == CaseStatus::BuildError || is_kit_fault(r.status)) continue;
-        const auto c = std::find_if(lab.cases.begin(), lab.cases.end(), [&](const GradeCase& x) { return x.name == r.name; });
-        if (c == lab.cases.end()) continue;
-        for (const auto& needed : c->needs) {
-            const auto f = failing.find(needed);
-            if (f == failing.end() || needed == r.todo) continue;
-            r.status = CaseStatus::NeedsFirst;
-            r.detail = "needs " + needed + " first (its case '" + f->second + "' fails); here: " + r.detail;
-            break;
-        }
-    }
-}
+void Grading::blame_needed_todos(const LabCases& lab, std::size_t first) { gsv::blame_needed_todos(lab, report_.results, first); }
 
 std::string Grading::picture_in_submission(const Image& image) const {
     const fs::path labs = KitLayout{student_.root.empty() ? kit_ : student_.root}.labs();
@@ -529,47 +510,14 @@ void Grading::check_image(const LabCases& lab, const GradeCase& c, const LabRun&
     write_png(dir / "actual.png", actual);
     r.actual_png = fs::relative(dir / "actual.png", out_).generic_string();
     const ImageTolerance tolerance = lab.tolerance(c, live);
-    const ImageDiff diff = compare_images(actual, expected, tolerance);
-    r.image.done = true;
-    r.image.tolerance = tolerance;
-    r.image.max_channel_diff = diff.max_channel_diff;
-    r.image.differing_pixels = diff.differing_pixels;
-    r.image.total_pixels = diff.total_pixels;
-    r.image.psnr = diff.psnr;
-    r.image.ssim = diff.ssim;
-    r.image.diff_x0 = diff.diff_x0;
-    r.image.diff_y0 = diff.diff_y0;
-    r.image.diff_x1 = diff.diff_x1;
-    r.image.diff_y1 = diff.diff_y1;
-    if (diff.within(tolerance)) {
-        r.status = CaseStatus::Passed;
-        r.points = c.points;
-        r.detail = diff.max_channel_diff == 0 ? "identical" : "max diff " + std::to_string(diff.max_channel_diff);
-        return;
-    }
-    r.detail = diff.summary();
+    const ImageDiff diff = judge_image(actual, expected, tolerance, c, r);
+    if (r.status == CaseStatus::Passed) return;
     if (!diff.size_mismatch) {
         write_png(dir / "diff.png", difference_heatmap(actual, expected, tolerance.max_channel_diff));
         r.diff_png = fs::relative(dir / "diff.png", out_).generic_string();
     }
-    // The starter's magenta where the reference has none: the TODO is open, however much else is drawn.
-    const long open = not_done_pixels(actual) - not_done_pixels(expected);
-    const long pixels = static_cast<long>(actual.width) * actual.height;
-    if (!diff.size_mismatch && open > pixels / 200) {
-        r.status = CaseStatus::NotDone;
-        char share[32];
-        std::snprintf(share, sizeof share, "%.1f%%", 100.0 * double(open) / double(pixels));
-        r.detail = "not done: " + c.todo + " (the starter's magenta on " + share + " of the image)";
-        return;
-    }
-    if (is_blank(actual) && !is_blank(expected)) {
-        r.status = CaseStatus::BlankImage;
-        const std::uint8_t* p = actual.at(0, 0);
-        // kNotDone: the starter's own "this TODO is open" colour.
-        r.detail = p[0] == kNotDoneRgb[0] && p[1] == kNotDoneRgb[1] && p[2] == kNotDoneRgb[2]
-                       ? "all magenta, the starter's 'not done' colour: this case's TODO (or one it needs) is still open"
-                       : "one flat colour where the reference has a picture (is anything drawn?)";
-    } else if (const std::string copied = golden_copied(lab.lab, c.name, actual); !copied.empty()) {
+    if (r.status != CaseStatus::WrongImage) return;
+    if (const std::string copied = golden_copied(lab.lab, c.name, actual); !copied.empty()) {
         // An honest bug that ignores what sets this case apart lands on another case's image too; a copy is a
         // copy when the submission holds the picture, or when its own lab does not draw it for that case.
         const std::string file = picture_in_submission(actual);
@@ -583,8 +531,6 @@ void Grading::check_image(const LabCases& lab, const GradeCase& c, const LabRun&
             r.detail = "pixel for pixel the committed golden image of case '" + copied + "', " +
                        (file.empty() ? std::string("which the lab does not draw for that case") : "held in the submission as " + file);
         }
-    } else {
-        r.status = CaseStatus::WrongImage;
     }
 }
 

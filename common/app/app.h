@@ -115,8 +115,10 @@ public:
     Context& context() { return context_; }
 
     // A program from the lab's shader files (e.g. {"gooch.vert", "gooch.frag"}), built with the
-    // parameters' #defines and kept up to date by the framework.
-    const ShaderLibrary::Entry& program(const std::string& name, const std::vector<std::string>& files);
+    // parameters' #defines and kept up to date by the framework. `captured`: vertex outputs written to buffers by
+    // transform feedback (ProgramSpec::captured).
+    const ShaderLibrary::Entry& program(const std::string& name, const std::vector<std::string>& files,
+                                        const std::vector<std::string>& captured = {});
     // Binds the program and sets every runtime parameter as its uniform; set the rest yourself.
     const ShaderProgram& use(const ShaderLibrary::Entry& entry) const;
     // The #defines the parameters give every program (common/shader/param_uniforms.h).

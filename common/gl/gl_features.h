@@ -18,7 +18,8 @@ struct GlFeature {
 };
 
 namespace gl_feature {
-inline constexpr GlFeature kCompute{"compute shaders and storage buffers", {4, 3}, {3, 1}};
+// Below it lab 05 steps its particles by transform feedback instead (WebGL 2 is OpenGL ES 3.0).
+inline constexpr GlFeature kCompute{"compute shaders and storage buffers", {4, 3}, {3, 1}, "GSV_NO_COMPUTE"};
 inline constexpr GlFeature kBufferTextures{"buffer textures (samplerBuffer)", {3, 1}, {3, 2}, "GSV_NO_BUFFER_TEXTURES"};
 inline constexpr GlFeature kFragmentPrimitiveId{"gl_PrimitiveID in a fragment shader", {3, 2}, {3, 2},
                                                 "GSV_NO_PRIMITIVE_ID"};

@@ -25,6 +25,9 @@ struct ProgramSpec {
     std::vector<std::filesystem::path> files;      // one per stage; the stage comes from the extension
     std::vector<ShaderDefine> defines;
     std::vector<GeneratedFile> generated;          // in-memory include files, after the options' own
+    // Vertex outputs written to buffers by transform feedback, one buffer each (binding i: captured[i]): a step of a
+    // simulation where there are no compute shaders (OpenGL ES 3.0, WebGL 2).
+    std::vector<std::string> captured;
 };
 
 class ShaderProgram {
