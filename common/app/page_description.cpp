@@ -13,6 +13,7 @@ const char* kind_name(ParamType type) {
     case ParamType::Choice: return "choice";
     case ParamType::Vec3: return "vec3";
     case ParamType::File: return "file";
+    case ParamType::Text: return "text";
     }
     return "unknown";
 }
