@@ -310,7 +310,8 @@ GradeReport Grading::run() {
         build_limits.timeout = std::chrono::minutes(5);
         build_limits.max_output_bytes = 256 * 1024;
         const SubmissionBuild built =
-            build_submission(options_.submission, kit_, bin_.parent_path(), lab_ids, work, build_limits);
+            build_submission(options_.submission, kit_, bin_.parent_path(), lab_ids, work, build_limits,
+                             options_.reuse_builds, options_.build_cache);
         report_.builds = built.builds;
     } else {
         if (!options_.student_bin_dir.empty()) {

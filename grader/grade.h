@@ -39,6 +39,8 @@ struct GradeOptions {
     bool timing = true;                 // instructor mode: time the cases that declare a timing band
     bool hidden = true;                 // instructor mode: add the hidden cases drawn from the seed
     bool sandbox = true;                // off only to debug the grader itself
+    bool reuse_builds = true;           // false (--build-all): compile every lab of a submission (grader/submission.h)
+    std::filesystem::path build_cache;  // earlier builds; empty: <bin_dir>/../grader-cache/builds
     // Where the allow-list walls cannot go up (no namespaces), hidden cases and live references are refused: student
     // code could read the kit. This grades them anyway, and the report says the kit was readable.
     bool allow_readable_kit = false;

@@ -33,7 +33,7 @@ const char* kUsage =
     " [--labs lab01,lab02] [--cases gyre,wrap] [--todo L02-T3] [--seed N] [--self-check] [--no-timing]\n"
     "                 [--public-only] [--profile core|es]"
     " [--timeout S] [--fail-under F] [--update-goldens] [--allow-readable-kit] [--no-namespaces]\n"
-    "                 [--no-sandbox] [--quiet] [--help] [--version]\n"
+    "                 [--no-sandbox] [--build-all] [--quiet] [--help] [--version]\n"
     "  --kit DIR         the kit (cases, goldens, hidden cases, solutions); default: the one this was built from\n"
     "  --bin DIR         the kit's built labs and <lab>_solution; default: this build's bin/\n"
     "  --submission DIR  a copy of the kit whose labs/ hold a student's work: built against this kit, then graded\n"
@@ -58,6 +58,8 @@ const char* kUsage =
     "                    references anyway; without it they are refused there, and the report says which walls were up\n"
     "  --no-namespaces   every wall but the namespaces: how the grader behaves where unshare is refused\n"
     "  --no-sandbox      run student code without namespaces and limits (to debug the grader only)\n"
+    "  --build-all       compile every lab of a submission, even one whose C++ is byte for byte the kit's starter's\n"
+    "                    (otherwise the kit's binary) or an earlier build's (kept in <bin>/../grader-cache/builds)\n"
     "       gsv-grade merge OUT SHARD_OUT...  the --out folders of a batch's shards joined into OUT (new or empty):\n"
     "                    the per-submission folders, class.csv, class.txt, batch.json; refused when the shards were\n"
     "                    graded with other seeds, kits, labs or options, overlap, or one is missing\n"
@@ -188,6 +190,7 @@ int main(int argc, char** argv) {
             else if (a == "--no-timing") { options.timing = false; pass_through.push_back(a); }
             else if (a == "--public-only") { options.hidden = false; pass_through.push_back(a); }
             else if (a == "--no-sandbox") { options.sandbox = false; pass_through.push_back(a); }
+            else if (a == "--build-all") { options.reuse_builds = false; pass_through.push_back(a); }
             else if (a == "--allow-readable-kit") { options.allow_readable_kit = true; pass_through.push_back(a); }
             else if (a == "--no-namespaces") { options.namespaces = false; pass_through.push_back(a); }
             else if (a == "--todo") {

@@ -92,6 +92,9 @@ struct LabBuild {
     bool ok = false;
     std::string log;  // compiler output, capped
     double seconds = 0;
+    // How the binary came to be: "built", or, where the lab's C++ is byte for byte one already built, "unchanged C++:
+    // the kit's binary" or "unchanged C++: an earlier build" (grader/submission.h says when).
+    std::string origin = "built";
 };
 
 struct GradeReport {

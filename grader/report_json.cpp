@@ -207,6 +207,7 @@ std::string report_json(const GradeReport& report) {
         j["lab"] = text(b.lab);
         j["ok"] = b.ok;
         j["seconds"] = number_or_null(b.seconds);
+        j["origin"] = text(b.origin);
         j["log"] = text(b.log);
         builds.push_back(j);
     }

@@ -108,7 +108,9 @@ std::string score_table(const GradeReport& report) {
             if (r.status == CaseStatus::Passed) ++passed;
         }
         out << "  " << pad_right(lab, w_name) << "  " << score_cell(score, max) << "  " << passed << " of " << checks
-            << " checks passed\n";
+            << " checks passed";
+        if (const LabBuild* build = find_build(report, lab); build && build->ok) out << "; " << build->origin;
+        out << "\n";
     }
 
     bool any_failed_build = false;

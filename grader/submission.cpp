@@ -1,10 +1,13 @@
 #include "grader/submission.h"
 
+#include "grader/build_reuse.h"
 #include "common/app/kit_layout.h"
 #include "common/core/error.h"
 #include "common/io/folder_tree.h"
 
+#include <chrono>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <unistd.h>
 
@@ -48,18 +51,45 @@ std::vector<std::string> copy_plain_tree(const fs::path& from, const fs::path& t
     return refused;
 }
 
-std::string cmake_generator(const fs::path& kit_build) {
+// A value from the kit build's CMakeCache.txt ("" where it has none): the generator, each lab's folder.
+std::string cmake_cache_value(const fs::path& kit_build, const std::string& name) {
     std::ifstream cache(kit_build / "CMakeCache.txt");
+    const std::string key = name + ":";
     for (std::string line; std::getline(cache, line);)
-        if (line.rfind("CMAKE_GENERATOR:INTERNAL=", 0) == 0) return line.substr(line.find('=') + 1);
+        if (line.rfind(key, 0) == 0 && line.find('=') != std::string::npos) return line.substr(line.find('=') + 1);
     return "";
+}
+
+// The binary of a lab whose C++ is one already built (grader/submission.h): the kit's own, or the build cache's.
+// Fills build.origin and returns true when `to` holds it; a lab that must be built returns false.
+bool reuse_build(const std::string& lab, const fs::path& submission_lab, const fs::path& kit_root, const fs::path& kit_build,
+                 const BuildCache* cache, const fs::path& to, LabBuild& build) {
+    const std::string folder = cmake_cache_value(kit_build, "GSV_LAB_DIR_" + lab);
+    if (folder.empty()) return false;
+    const BuildInputs inputs = read_build_inputs(submission_lab);
+    if (inputs.empty()) return false;  // no sources: the build says so
+    const fs::path kit_lab = KitLayout{kit_root}.labs() / folder, kit_binary = kit_build / "bin" / lab;
+    // The kit's binary was built from the kit build's own sources: those must be the kit graded with.
+    const fs::path built_from = cmake_cache_value(kit_build, "CMAKE_HOME_DIRECTORY");
+    std::error_code ec;
+    const bool same_kit = !built_from.empty() && fs::equivalent(built_from, kit_root, ec);
+    if (same_kit && fs::exists(kit_binary) && binary_is_newer(kit_binary, kit_lab) && read_build_inputs(kit_lab) == inputs) {
+        fs::copy_file(kit_binary, to, fs::copy_options::overwrite_existing);
+        build.origin = "unchanged C++: the kit's binary";
+        return true;
+    }
+    if (cache && cache->fetch(lab, inputs, to, build.log)) {
+        build.origin = "unchanged C++: an earlier build";
+        return true;
+    }
+    return false;
 }
 
 }  // namespace
 
 SubmissionBuild build_submission(const fs::path& submission, const fs::path& kit_root, const fs::path& kit_build,
                                  const std::vector<std::string>& labs, const fs::path& work_dir,
-                                 const ProcessLimits& limits) {
+                                 const ProcessLimits& limits, bool reuse, const fs::path& cache_dir) {
     const fs::path labs_dir = fs::is_directory(submission / "labs") ? submission / "labs" : submission;
     if (!fs::is_directory(labs_dir) || labs_dir.filename() != "labs")
         throw Error("submission '" + submission.string() + "' has no labs/ folder");
@@ -80,22 +110,49 @@ SubmissionBuild build_submission(const fs::path& submission, const fs::path& kit
     std::vector<std::string> configure{GSV_CMAKE_COMMAND, "-S", kit.submission_project().string(),
                                        "-B", (work_dir / "build").string(), "-DGSV_KIT_BUILD=" + fs::absolute(kit_build).string(),
                                        "-DGSV_LABS_ROOT=" + result.root.string()};
-    if (const std::string generator = cmake_generator(kit_build); !generator.empty()) {
+    if (const std::string generator = cmake_cache_value(kit_build, "CMAKE_GENERATOR"); !generator.empty()) {
         configure.push_back("-G");
         configure.push_back(generator);
     }
-    const ProcessResult configured = run_process(configure, work_dir / "build", limits);
+    // The binaries' folder, made here for those reused and handed over like the build folder for those built.
+    fs::create_directories(result.bin_dir);
+    if (limits.support && limits.sandbox) hand_over(result.bin_dir, *limits.sandbox, *limits.support);
+    std::optional<BuildCache> cache;
+    std::string cache_note;
+    if (reuse) {
+        try {
+            cache.emplace(cache_dir.empty() ? fs::absolute(kit_build) / "grader-cache" / "builds" : fs::absolute(cache_dir),
+                          kit_build);
+        } catch (const std::exception& e) {
+            cache_note = std::string("\nbuild cache: ") + e.what() + "; every lab is built";
+        }
+    }
+    std::optional<ProcessResult> configured;  // configured for the first lab that needs building
     for (const auto& lab : labs) {
         LabBuild build;
         build.lab = lab;
-        if (configured.exit_code != 0) {
-            build.log = "configuring the submission's build failed:\n" + configured.output;
+        build.log = cache_note;
+        const fs::path binary = result.bin_dir / lab;
+        const std::string folder = cmake_cache_value(kit_build, "GSV_LAB_DIR_" + lab);
+        const fs::path submission_lab = KitLayout{result.root}.labs() / folder;
+        const auto started = std::chrono::steady_clock::now();
+        if (reuse && !folder.empty() && reuse_build(lab, submission_lab, kit_root, kit_build, cache ? &*cache : nullptr, binary, build)) {
+            build.ok = true;
+            build.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+            for (const auto& line : refused) build.log += "\nnot taken from the submission: " + line;
+            result.builds.push_back(std::move(build));
+            continue;
+        }
+        if (!configured) configured = run_process(configure, work_dir / "build", limits);
+        if (configured->exit_code != 0) {
+            build.log = "configuring the submission's build failed:\n" + configured->output + build.log;
         } else {
             const ProcessResult made = run_process({GSV_CMAKE_COMMAND, "--build", (work_dir / "build").string(), "--target", lab},
                                                    work_dir / "build", limits);
             build.seconds = made.seconds;
-            build.ok = made.exit_code == 0 && fs::exists(result.bin_dir / lab);
-            build.log = made.output;
+            build.ok = made.exit_code == 0 && fs::exists(binary);
+            build.log = made.output + build.log;
+            if (reuse && build.ok && cache && !folder.empty()) cache->store(lab, read_build_inputs(submission_lab), binary, build.log);
             if (made.timed_out) build.log += "\nthe build was killed after the time limit";
             if (!build.ok && made.output.find("unknown target") != std::string::npos)
                 build.log = "the submission has no sources for " + lab + " (labs/<lab folder>/*.cpp)\n" + made.output;

@@ -25,9 +25,17 @@ struct SubmissionBuild {
     std::vector<LabBuild> builds;
 };
 
+// A lab is compiled only where its C++ differs. Its build inputs are every file of its folder but those the lab reads
+// at run time (shaders, network and case files, pictures, text: they reach the binary through GSV_ROOT, never the
+// compiler). Where they are byte for byte the kit's starter's (names and contents), the binary is the kit's own
+// (built from the same sources by the same cmake/labs.cmake, and no older than them); where they are byte for byte
+// those of an earlier build kept in the build cache (`cache_dir`, by default <kit build>/grader-cache/builds; keyed by the kit build's
+// libraries and the inputs, holding a copy of the inputs that is compared byte for byte, never trusted by key),
+// that build's binary. A cache that cannot be read or written is one line in the build log; the lab is built.
 // Throws gsv::Error when the submission has no labs/ folder or the kit build is not configured.
 SubmissionBuild build_submission(const std::filesystem::path& submission, const std::filesystem::path& kit_root,
                                  const std::filesystem::path& kit_build, const std::vector<std::string>& labs,
-                                 const std::filesystem::path& work_dir, const ProcessLimits& limits);
+                                 const std::filesystem::path& work_dir, const ProcessLimits& limits, bool reuse = true,
+                                 const std::filesystem::path& cache_dir = {});
 
 }  // namespace gsv
