@@ -2,6 +2,7 @@
 
 #include "common/core/error.h"
 #include "common/io/json.h"
+#include "grader/grade_exit.h"
 #include "grader/process.h"
 #include "grader/report_format.h"
 #include "grader/sandbox.h"
@@ -104,7 +105,7 @@ std::vector<BatchEntry> grade_batch(const BatchOptions& options, void (*progress
                 run_process(argv, fs::current_path(), limits, {std::string(kSeedVariable) + "=" + std::to_string(options.seed)});
             entry.seconds = run.seconds;
             try {
-                if (run.exit_code == 2 || run.signal != 0 || run.timed_out)
+                if (run.exit_code == kGradeNotGraded || run.signal != 0 || run.timed_out)
                     throw Error(run.timed_out ? "timed out" : "gsv-grade failed: " + run.output.substr(0, 300));
                 const Json results = read_json_file(out / "results.json");
                 entry.score = results.number_at("score");

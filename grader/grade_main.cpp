@@ -12,6 +12,7 @@
 #include "grader/batch_record.h"
 #include "grader/draw.h"
 #include "grader/grade.h"
+#include "grader/grade_exit.h"
 #include "grader/report.h"
 #include "grader/report_format.h"
 
@@ -116,14 +117,14 @@ int merge_main(int argc, char** argv) {
     const gsv::BatchRecord merged = gsv::merge_shards(shards, argv[2]);
     std::printf("%s", gsv::class_table(merged.entries).c_str());
     std::printf("%zu shards merged: per-submission reports in %s/<name>/, the class in %s/class.csv\n", shards.size(), argv[2], argv[2]);
-    return 0;
+    return gsv::kGradeOk;
 }
 
 int shard_main(int argc, char** argv) {
     if (argc != 4) throw gsv::Error("needs K/N and a roster file: gsv-grade shard K/N ROSTER");
     const auto [k, n] = gsv::parse_shard(argv[2]);
     for (const std::string& name : gsv::shard_names(gsv::read_roster(argv[3]), k, n)) std::printf("%s\n", name.c_str());
-    return 0;
+    return gsv::kGradeOk;
 }
 
 }  // namespace
@@ -134,10 +135,10 @@ int main(int argc, char** argv) {
             return std::string(argv[1]) == "merge" ? merge_main(argc, argv) : shard_main(argc, argv);
         } catch (const gsv::Error& e) {
             std::fprintf(stderr, "gsv-grade %s: %s\n", argv[1], e.what());
-            return 2;
+            return gsv::kGradeNotGraded;
         } catch (const std::exception& e) {
             std::fprintf(stderr, "gsv-grade %s: internal error: %s\n", argv[1], e.what());
-            return 2;
+            return gsv::kGradeNotGraded;
         }
     }
     gsv::GradeOptions options;
@@ -207,10 +208,10 @@ int main(int argc, char** argv) {
             else if (a == "--quiet") quiet = true;
             else if (a == "-h" || a == "--help") {
                 std::printf("%s", kUsage);
-                return 0;
+                return gsv::kGradeOk;
             } else if (a == "--version") {
                 std::printf("%s\n", gsv::version_line("gsv-grade").c_str());
-                return 0;
+                return gsv::kGradeOk;
             } else throw gsv::Error("unknown option '" + a + "' (see --help)");
         }
         if (const char* seed = std::getenv(gsv::kSeedVariable); seed && !options.seed) options.seed = parse_seed(seed);
@@ -253,7 +254,7 @@ int main(int argc, char** argv) {
             gsv::write_class_tables(record.entries, options.out_dir);
             gsv::write_batch_record(record, options.out_dir);
             std::printf("per-submission reports in %s/<name>/, the class in %s/class.csv\n", options.out_dir.c_str(), options.out_dir.c_str());
-            return 0;
+            return gsv::kGradeOk;
         }
         const gsv::GradeReport report = gsv::grade(options, print_progress);
         if (options.update_goldens) {
@@ -264,7 +265,7 @@ int main(int argc, char** argv) {
                     ++failed;
                 }
             std::printf("updated the goldens of %zu cases, %d failed\n", report.results.size() - static_cast<std::size_t>(failed), failed);
-            return failed ? 1 : 0;
+            return failed ? gsv::kGradeFailed : gsv::kGradeOk;
         }
         gsv::write_reports(report, options.out_dir);
         if (!quiet) {
@@ -277,25 +278,25 @@ int main(int argc, char** argv) {
         if (kit_faults > 0) {
             std::fprintf(stderr, "gsv-grade: the reference failed on %ld checks (marked 'reference failed'): fix the kit before "
                                  "grading; no grade was given\n", static_cast<long>(kit_faults));
-            return 2;
+            return gsv::kGradeNotGraded;
         }
         if (fail_under >= 0 && report.max_score() > 0 && report.score() < fail_under * report.max_score()) {
             std::fprintf(stderr, "gsv-grade: score %.1f / %.1f is under --fail-under %.2f\n", report.score(), report.max_score(), fail_under);
-            return 1;
+            return gsv::kGradeFailed;
         }
-        return 0;
+        return gsv::kGradeOk;
     } catch (const gsv::Error& e) {
         std::fprintf(stderr, "gsv-grade: %s\n", e.what());
         // A submission that could not be graded at all still gets a results.json saying why (Gradescope
         // shows it to the student); an internal error leaves one for the instructor too.
         if (!options.submission.empty() && batch.empty()) write_failure_results(options.out_dir, e.what());
-        return 2;
+        return gsv::kGradeNotGraded;
     } catch (const std::filesystem::filesystem_error& e) {
         // A folder or file the grader could not read or write: the user's to fix, named in the message.
         std::fprintf(stderr, "gsv-grade: %s\n", e.what());
-        return 2;
+        return gsv::kGradeNotGraded;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "gsv-grade: internal error: %s\n", e.what());
-        return 2;
+        return gsv::kGradeNotGraded;
     }
 }

@@ -1,5 +1,6 @@
 #include "grader/run_lab.h"
 
+#include "common/app/exit_status.h"
 #include "common/core/error.h"
 #include "common/io/json.h"
 
@@ -158,10 +159,11 @@ CaseStatus classify(const ProcessResult& r, std::string& detail) {
         detail = std::string("crashed with signal ") + std::to_string(r.signal) + " (" + strsignal(r.signal) + ")";
         return CaseStatus::Crash;
     }
+    // kExitError and kExitUsage: what the output says, below.
     switch (r.exit_code) {
-    case 0: return CaseStatus::Passed;
-    case 3: detail = last_line(r.output); return CaseStatus::Unsupported;
-    case 4: detail = "NaN or Inf in the image"; return CaseStatus::NonFinite;
+    case kExitOk: return CaseStatus::Passed;
+    case kExitUnsupported: detail = last_line(r.output); return CaseStatus::Unsupported;
+    case kExitNonFinite: detail = "NaN or Inf in the image"; return CaseStatus::NonFinite;
     default: break;
     }
     if (const std::string line = line_with(r.output, "shader compile error"); !line.empty()) {

@@ -49,7 +49,7 @@ struct LabRunner {
 double median(std::vector<double> values);  // 0 for none
 
 // Tells the failure classes apart from how the process ended and the exit status the lab framework
-// gives each (common/app/app.h); Passed when it exited 0.
+// gives each (common/app/exit_status.h); Passed when it exited kExitOk.
 CaseStatus classify(const ProcessResult& r, std::string& detail);
 
 }  // namespace gsv

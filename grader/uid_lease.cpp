@@ -7,6 +7,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <string>
 #include <dirent.h>
 #include <fcntl.h>
 #include <grp.h>
@@ -104,11 +105,10 @@ long tasks_of_user(uid_t uid) {
     if (!proc) return 0;
     while (const dirent* e = readdir(proc)) {
         if (e->d_name[0] < '0' || e->d_name[0] > '9') continue;
-        char path[64];
-        std::snprintf(path, sizeof path, "/proc/%s/task", e->d_name);
+        const std::string path = std::string("/proc/") + e->d_name + "/task";
         struct stat st {};
-        if (stat(path, &st) != 0 || st.st_uid != uid) continue;
-        if (DIR* tasks = opendir(path)) {
+        if (stat(path.c_str(), &st) != 0 || st.st_uid != uid) continue;
+        if (DIR* tasks = opendir(path.c_str())) {
             while (const dirent* t = readdir(tasks))
                 if (t->d_name[0] != '.') ++count;
             closedir(tasks);

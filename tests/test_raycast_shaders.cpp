@@ -403,7 +403,7 @@ TEST_CASE("raycast: every compositing mode has its file, its four functions, a l
         CHECK(std::count_if(configs.begin(), configs.end(), [&](const Config& c) { return c.compositing == mode; }) > 0);
         // In the uber-shader: its file, and a branch of its own in each placeholder (the last row is the fallback).
         CHECK(uber.find("#include \"" + file + "\"") != std::string::npos);
-        for (const std::string& function : {"rcStart", "rcComposite", "rcTerminate", "rcFinish"}) {
+        for (const char* function : {"rcStart", "rcComposite", "rcTerminate", "rcFinish"}) {
             INFO(function);
             CHECK(uber.find(function + x + "(") != std::string::npos);
         }

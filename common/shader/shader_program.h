@@ -24,7 +24,7 @@ struct ProgramSpec {
     std::string name;                              // for messages: "gooch"
     std::vector<std::filesystem::path> files;      // one per stage; the stage comes from the extension
     std::vector<ShaderDefine> defines;
-    std::vector<GeneratedFile> generated;          // in-memory include files, after the options' own
+    std::vector<GeneratedFile> generated{};        // in-memory include files, after the options' own
 };
 
 class ShaderProgram {
