@@ -9,8 +9,8 @@
 #include "lab_runner.h"
 
 #include "common/image/image_compare.h"
-#include "grader/cases.h"
-#include "grader/grade.h"
+#include "grader/src/cases/cases.h"
+#include "grader/src/grade/grade.h"
 
 #include <algorithm>
 #include <fstream>

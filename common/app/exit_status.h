@@ -1,6 +1,6 @@
 #pragma once
 // The exit statuses of every lab binary, one meaning each. The grader tells a lab's failures apart by them
-// (grader/run_lab.cpp's classify), so the labs and the grader name them from here, never as bare numbers.
+// (grader/src/run/lab_run.cpp's classify), so the labs and the grader name them from here, never as bare numbers.
 namespace gsv {
 
 enum ExitStatus {
