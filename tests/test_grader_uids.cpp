@@ -3,8 +3,8 @@
 #include "catch.hpp"
 #include "test_support.h"
 
-#include "grader/src/run/process.h"
 #include "grader/src/run/lab_run.h"
+#include "grader/src/run/process.h"
 #include "grader/src/run/uid_lease.h"
 
 #include <csignal>

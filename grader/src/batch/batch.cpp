@@ -3,8 +3,8 @@
 #include "common/core/error.h"
 #include "common/io/json.h"
 #include "grader/src/grade/grade_exit.h"
-#include "grader/src/run/process.h"
 #include "grader/src/report/report_format.h"
+#include "grader/src/run/process.h"
 #include "grader/src/run/sandbox.h"
 
 #include <algorithm>

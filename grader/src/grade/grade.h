@@ -3,6 +3,7 @@
 // sandboxed process and compared with the reference: rendered live by <lab>_solution in the same run
 // (instructor grading: public and hidden cases, timing) or the committed golden image (self-check). A lab
 // that hands in arrays (lab 05's particles) has them checked as well (grader/src/judge/data_check.h).
+// The run's set-up is session.h's, each check judge/'s; rewriting the goldens is apart (golden/golden_update.h).
 #include "grader/src/judge/grade_result.h"
 #include "grader/src/run/lab_run.h"
 
@@ -35,7 +36,6 @@ struct GradeOptions {
     std::vector<std::string> labs;      // empty: every lab with a case file
     std::vector<std::string> cases;     // empty: every case; else only these names (an unknown one is an error)
     bool self_check = false;            // golden images only, public cases only, even when solutions are built
-    bool update_goldens = false;        // render grader/golden/<lab>/<case>.png (and .<array>.f32s) with the references instead
     bool timing = true;                 // instructor mode: time the cases that declare a timing band
     bool hidden = true;                 // instructor mode: add the hidden cases drawn from the seed
     bool sandbox = true;                // off only to debug the grader itself
@@ -43,7 +43,8 @@ struct GradeOptions {
     // code could read the kit. This grades them anyway, and the report says the kit was readable.
     bool allow_readable_kit = false;
     bool namespaces = true;             // false: every wall but the namespaces, as where unshare is refused
-    unsigned sandbox_uid = 0;           // a root grader runs student code as this uid; 0: the first one free (grader/src/run/uid_lease.h)
+    // A root grader runs student code as this uid; 0: the first one free (grader/src/run/uid_lease.h).
+    unsigned sandbox_uid = 0;
     std::string todo;                   // only the cases of this TODO ("L02-T3"); empty: all
     std::shared_ptr<ReferenceCache> reference_cache;  // shared between runs in one process; none: no cache
     std::optional<std::uint64_t> seed;  // hidden cases; none: a fresh seed, recorded in the report

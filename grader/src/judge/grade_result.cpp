@@ -32,6 +32,8 @@ const char* status_name(CaseStatus status) {
     return "unknown";
 }
 
+bool is_kit_fault(CaseStatus status) { return status == CaseStatus::ReferenceFailed; }
+
 bool DataCheck::passed() const {
     for (const auto& a : arrays)
         if (!a.within()) return false;

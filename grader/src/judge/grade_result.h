@@ -39,6 +39,8 @@ enum class CaseStatus {
     WroteTooMuch,        // filled its working folder (size or number of files) to the limit
 };
 const char* status_name(CaseStatus status);
+// The reference or the kit failed, not the student: reported apart from the student's failures.
+bool is_kit_fault(CaseStatus status);
 
 struct ImageCheck {
     bool done = false;

@@ -100,7 +100,6 @@ std::string check_output(const CaseResult& result) {
     return text;
 }
 
-bool is_kit_fault(CaseStatus status) { return status == CaseStatus::ReferenceFailed; }
 
 std::string fixed(double value, int digits) {
     char buffer[64];

@@ -20,9 +20,6 @@ std::string status_line(const CaseResult& result);
 // status_line, then the captured output on the following lines.
 std::string check_output(const CaseResult& result);
 
-// The reference or the kit failed, not the student: reported apart from the student's failures.
-bool is_kit_fault(CaseStatus status);
-
 // 5 -> "5", 2.5 -> "2.5", 1/3 -> "0.33": points as a person writes them.
 std::string format_points(double points);
 // printf-style "%.*f".

@@ -134,6 +134,12 @@ double median(std::vector<double> v) {
     return n == 0 ? 0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
+std::string as_student_sees(std::string text, const fs::path& student_kit) {
+    const std::string root = student_kit.string() + "/";
+    for (auto at = text.find(root); at != std::string::npos; at = text.find(root, at)) text.erase(at, root.size());
+    return text;
+}
+
 CaseStatus classify(const ProcessResult& r, std::string& detail) {
     if (!r.cleanup_error.empty()) { detail = "grader: " + r.cleanup_error; return CaseStatus::Error; }
     if (!r.sandbox_error.empty()) { detail = r.sandbox_error; return CaseStatus::Error; }

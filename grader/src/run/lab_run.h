@@ -48,6 +48,10 @@ struct LabRunner {
 
 double median(std::vector<double> values);  // 0 for none
 
+// The paths in a student process's messages as the student knows them: "labs/lab02_lic/streamline.glsl:12", not the
+// grader's copy of the submission. `student_kit`: the copy of the kit the lab ran in (or the kit itself).
+std::string as_student_sees(std::string text, const std::filesystem::path& student_kit);
+
 // Tells the failure classes apart from how the process ended and the exit status the lab framework
 // gives each (common/app/exit_status.h); Passed when it exited kExitOk.
 CaseStatus classify(const ProcessResult& r, std::string& detail);
