@@ -44,15 +44,16 @@ target_link_libraries(gsv_support PUBLIC gsv_common)
 target_compile_options(gsv_support PRIVATE -Wall -Wextra)
 
 # The grader's part of the page: its case files, comparison, verdicts and table, and the self-check that runs them in
-# the page (grader/page_self_check.cpp). Not the grader's processes or sandbox: the page grades nothing of anyone else's.
+# the page (grader/src/app/page_self_check.cpp). Not the grader's processes or sandbox: the page grades nothing of anyone else's.
 add_library(gsv_grader_page STATIC
-  ${PROJECT_SOURCE_DIR}/grader/cases.cpp ${PROJECT_SOURCE_DIR}/grader/draw.cpp ${PROJECT_SOURCE_DIR}/grader/array_compare.cpp
-  ${PROJECT_SOURCE_DIR}/grader/image_verdict.cpp ${PROJECT_SOURCE_DIR}/grader/report_table.cpp
-  ${PROJECT_SOURCE_DIR}/grader/report_format.cpp ${PROJECT_SOURCE_DIR}/grader/grade_result.cpp)
+  ${PROJECT_SOURCE_DIR}/grader/src/cases/cases.cpp ${PROJECT_SOURCE_DIR}/grader/src/cases/draw.cpp
+  ${PROJECT_SOURCE_DIR}/grader/src/judge/array_compare.cpp ${PROJECT_SOURCE_DIR}/grader/src/judge/image_verdict.cpp
+  ${PROJECT_SOURCE_DIR}/grader/src/judge/needs.cpp ${PROJECT_SOURCE_DIR}/grader/src/report/report_table.cpp
+  ${PROJECT_SOURCE_DIR}/grader/src/report/report_format.cpp ${PROJECT_SOURCE_DIR}/grader/src/judge/grade_result.cpp)
 target_link_libraries(gsv_grader_page PUBLIC gsv_common)
 target_compile_options(gsv_grader_page PRIVATE -Wall -Wextra)
 # Compiled once for every page (an object library: its EMSCRIPTEN_BINDINGS would be dropped from a static one).
-add_library(gsv_page_self_check OBJECT ${PROJECT_SOURCE_DIR}/grader/page_self_check.cpp)
+add_library(gsv_page_self_check OBJECT ${PROJECT_SOURCE_DIR}/grader/src/app/page_self_check.cpp)
 target_link_libraries(gsv_page_self_check PUBLIC gsv_grader_page)
 set(GSV_WEB_PAGE_SOURCES $<TARGET_OBJECTS:gsv_page_self_check>)
 set(GSV_WEB_PAGE_LIBRARIES gsv_grader_page)

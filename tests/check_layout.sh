@@ -13,6 +13,10 @@ breach() { echo "check_layout: $*"; fail=1; }
 
 loose=$(find common support -maxdepth 1 -type f ! -name CMakeLists.txt ! -name README.md)
 [ -z "$loose" ] || breach "files standing directly in common/ or support/ (put each in the folder of its concern): $loose"
+# The grader's code stands in grader/src/<concern>/, apart from its data (cases/, hidden/, golden/), its CI templates
+# and the project that builds a submission.
+astray=$(find grader \( -name '*.cpp' -o -name '*.h' \) | grep -vE '^grader/src/[a-z_]+/[^/]+$' || true)
+[ -z "$astray" ] || breach "grader code outside grader/src/<concern>/ (put each in the folder of its concern): $astray"
 
 inward=$(grep -rnE '#include "(support|reference|labs|solutions|grader|tests)/' common || true)
 [ -z "$inward" ] || breach "the framework includes domain, reference, lab or grader code:"$'\n'"$inward"

@@ -7,7 +7,7 @@
 #include "test_support.h"
 
 #include "common/io/json.h"
-#include "grader/grade.h"
+#include "grader/src/grade/grade.h"
 
 #include <algorithm>
 #include <functional>

@@ -5,14 +5,14 @@
 
 #include "common/image/image.h"
 #include "common/io/data_array.h"
+#include "common/io/handin.h"
 #include "common/io/json.h"
 #include "common/io/little_endian.h"
-#include "grader/array_compare.h"
-#include "grader/array_golden.h"
-#include "grader/data_check.h"
-#include "grader/grade.h"
-#include "common/io/handin.h"
-#include "common/io/little_endian.h"
+#include "grader/src/golden/array_golden.h"
+#include "grader/src/golden/golden_update.h"
+#include "grader/src/grade/grade.h"
+#include "grader/src/judge/array_compare.h"
+#include "grader/src/judge/data_check.h"
 
 #include <cmath>
 #include <filesystem>
@@ -580,8 +580,7 @@ TEST_CASE("arrays: graded end to end through lab processes, live and against gol
     update.kit_root = dir.path("kit");
     update.bin_dir = dir.path("bin");
     update.out_dir = dir.path("out-update");
-    update.update_goldens = true;
-    const GradeReport updated = grade(update);
+    const GradeReport updated = update_goldens(update);
     REQUIRE(updated.results.size() == 1);
     CHECK(updated.results[0].status == CaseStatus::Passed);
     CHECK(contains(updated.results[0].detail, "and 2 arrays"));

@@ -6,9 +6,9 @@
 #include "common/core/error.h"
 #include "common/image/image.h"
 #include "common/io/json.h"
-#include "grader/grade_result.h"
-#include "grader/report.h"
-#include "grader/report_format.h"
+#include "grader/src/judge/grade_result.h"
+#include "grader/src/report/report.h"
+#include "grader/src/report/report_format.h"
 
 #include <cstdio>
 #include <cstdlib>

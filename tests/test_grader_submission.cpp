@@ -3,9 +3,9 @@
 // a flood of output, a copied golden image) each get their own status while the rest is graded.
 #include "grader_fixture.h"
 
-#include "grader/batch.h"
-#include "grader/report.h"
-#include "grader/sandbox.h"
+#include "grader/src/batch/batch.h"
+#include "grader/src/report/report.h"
+#include "grader/src/run/sandbox.h"
 
 #include <fstream>
 #include <map>
@@ -55,7 +55,7 @@ TEST_CASE("grader: C++ faults in a submission each get their own status, the san
     } else {
         WARN("this platform refuses unshare: the namespace walls are not tested here");
     }
-    // The uid this run leased (grader/uid_lease.h), as the report names it.
+    // The uid this run leased (grader/src/run/uid_lease.h), as the report names it.
     if (const auto at = report.sandbox.find("runs as uid "); geteuid() == 0 && at != std::string::npos) {
         const std::string uid = report.sandbox.substr(at + 12, report.sandbox.find(';', at) - at - 12);
         CHECK(probe_value(seen, "uid") == uid);

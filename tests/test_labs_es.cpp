@@ -8,7 +8,7 @@
 #include "lab_runner.h"
 
 #include "common/image/image_compare.h"
-#include "grader/grade.h"
+#include "grader/src/grade/grade.h"
 
 #include <map>
 #include <set>

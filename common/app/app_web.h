@@ -1,6 +1,6 @@
 #pragma once
 // The browser edition's page, for the parts of it that live outside the framework (the grader's self-check in the
-// page, grader/page_self_check.cpp). Only in builds made with Emscripten (cmake/web.cmake).
+// page, grader/src/app/page_self_check.cpp). Only in builds made with Emscripten (cmake/web.cmake).
 #include <string>
 
 namespace gsv {

@@ -1,4 +1,4 @@
-// The self-check's view: gsv-grade's table as the grader's code wrote it in the page (grader/page_self_check.cpp), and
+// The self-check's view: gsv-grade's table as the grader's code wrote it in the page (grader/src/app/page_self_check.cpp), and
 // for each case that did not pass, yours | golden | the difference, with compare's composite a click away.
 'use strict';
 window.gsvSelfCheck = (function () {
