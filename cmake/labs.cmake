@@ -32,6 +32,11 @@ function(gsv_add_lab id dir)
     target_link_libraries(${target} PRIVATE ${GSV_LAB_LIBRARY})
     target_compile_definitions(${target} PRIVATE GSV_LAB_DIR="${src}" GSV_LAB_VARIANT="${variant}")
     set_target_properties(${target} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bin)
+    # The kit's own build warns (cmake/warnings.cmake); the grader's build of a submission has no gsv_warnings and
+    # adds no flags: a student's build log holds what the compiler must say, and no warning can fail it.
+    if(COMMAND gsv_warnings)
+      gsv_warnings(${target})
+    endif()
     # The reference also measures against the instructor's CPU yardsticks (reference/): its own measuring code in
     # reference/<dir>/ (which includes the lab's headers) and gsv_reference. Neither exists in the student
     # edition or the grader's submission build; there the lab compiles without GSV_HAVE_REFERENCE.

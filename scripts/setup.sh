@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs what the kit needs to build, run headless, test and plot, where it is missing.
 # Debian/Ubuntu: installs with apt-get (through sudo when not root). Elsewhere: prints the equivalents.
+# --web: also what the browser edition builds with (scripts/kit web): Emscripten, Debian's CodeMirror, and npm where
+# there is no npm yet (the page's JSZip and its tests' playwright-core come from npm: scripts/kit web runs npm ci).
 set -euo pipefail
 
 debian_packages=(
@@ -12,6 +14,11 @@ debian_packages=(
   python3-glad glslang-tools python-matplotlib-data python3-nibabel python3-yaml
   xvfb xauth imagemagick gnuplot-nox pandoc
 )
+
+if [ "${1:-}" = "--web" ]; then
+  debian_packages+=(emscripten libjs-codemirror)
+  command -v npm >/dev/null 2>&1 || debian_packages+=(npm)
+fi
 
 if [ "$(uname -s)" = "Darwin" ]; then
   cat <<'MSG'

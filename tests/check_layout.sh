@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The kit's layering (CONTRIBUTING.md): the framework in common/ stands in folders by concern and knows nothing
 # of the labs' domain code (support/), the labs, their solutions or the grader; support/ knows nothing of the
-# labs or the grader. Neither knows the instructor's yardsticks in reference/, nor do the grader and the tools
+# labs (their files' names included) or the grader. Neither knows the instructor's yardsticks in reference/, nor do the grader and the tools
 # (all four ship in the student edition, which has no reference/); reference/ builds on common/ and support/, and
 # a lab includes it only under #ifdef GSV_HAVE_REFERENCE (its solution build), so the starters, the student
 # edition and the grader's submission build compile without it. Prints every breach and exits 1, so a newcomer's
@@ -13,6 +13,10 @@ breach() { echo "check_layout: $*"; fail=1; }
 
 loose=$(find common support -maxdepth 1 -type f ! -name CMakeLists.txt ! -name README.md)
 [ -z "$loose" ] || breach "files standing directly in common/ or support/ (put each in the folder of its concern): $loose"
+# The grader's code stands in grader/src/<concern>/, apart from its data (cases/, hidden/, golden/), its CI templates
+# and the project that builds a submission.
+astray=$(find grader \( -name '*.cpp' -o -name '*.h' \) | grep -vE '^grader/src/[a-z_]+/[^/]+$' || true)
+[ -z "$astray" ] || breach "grader code outside grader/src/<concern>/ (put each in the folder of its concern): $astray"
 
 inward=$(grep -rnE '#include "(support|reference|labs|solutions|grader|tests)/' common || true)
 [ -z "$inward" ] || breach "the framework includes domain, reference, lab or grader code:"$'\n'"$inward"
@@ -34,11 +38,12 @@ unguarded=$(find solutions labs -type f \( -name '*.cpp' -o -name '*.h' \) -exec
   }' {} + || true)
 [ -z "$unguarded" ] || breach "a lab includes reference/ outside #ifdef GSV_HAVE_REFERENCE:"$'\n'"$unguarded"
 
-# A lab's own file names (its shaders, its C++) have no business in the framework, not even in a comment.
+# A lab's own file names (its shaders, its C++) have no business in the framework or the shared domain code, not even
+# in a comment: a lab's module table (lab 06's raycast_modules.cpp) names its files, and support/ generates from it.
 names=$(find solutions -mindepth 2 -maxdepth 2 -type f ! -name lab.cpp ! -name README.md -printf '%f\n' | sort -u)
 for name in $names; do
-  hits=$(grep -rnwF "$name" common || true)
-  [ -z "$hits" ] || breach "the framework names lab file '$name':"$'\n'"$hits"
+  hits=$(grep -rnwF "$name" common support || true)
+  [ -z "$hits" ] || breach "the framework or support/ names lab file '$name':"$'\n'"$hits"
 done
 [ $fail -eq 0 ] && echo "check_layout: common/, support/ and reference/ keep to their layers ($(find common -name '*.cpp' -o -name '*.h' | wc -l) framework files, $(find support -name '*.cpp' -o -name '*.h' | wc -l) support files, $(find reference -name '*.cpp' -o -name '*.h' 2>/dev/null | wc -l) reference files)"
 exit $fail

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # A student's build cannot see the instructor's yardsticks in reference/: the kit's exported targets
 # (gsv-targets.cmake, what the grader's submission project links) have no gsv_reference; the grader's sandbox
-# allow-lists (grader/grade.cpp, set_up_sandbox) name no reference/ folder; and the submission project, configured
-# against this build with the reference solutions as a submission's labs/, has no gsv_reference target, compiles
-# no lab with GSV_HAVE_REFERENCE and reads no file under reference/. (That reference/ is not exported is
+# allow-lists (grader/src/grade/walls.cpp, set_up_sandbox) name no reference/ folder; and the submission project,
+# configured against this build with the reference solutions as a submission's labs/, has no gsv_reference target,
+# compiles no lab with GSV_HAVE_REFERENCE and reads no file under reference/. (That reference/ is not exported is
 # student_edition.sh's; that no shipped layer includes it, check_layout.sh's.)
 #   check_reference_unseen.sh KIT_ROOT KIT_BUILD     Exit 0: pass, 1: fail.
 set -euo pipefail
@@ -17,9 +17,9 @@ fail() { echo "check_reference_unseen: FAIL: $*" >&2; exit 1; }
 [ -f "$build/gsv-targets.cmake" ] || fail "$build has no gsv-targets.cmake: build the kit first"
 ! grep -n "gsv_reference" "$build/gsv-targets.cmake" || fail "gsv-targets.cmake exports gsv_reference (above)"
 
-# The two allow-lists of set_up_sandbox, from "void Grading::set_up_sandbox" to the first line after them.
-sandbox=$(sed -n '/^void Grading::set_up_sandbox/,/build_policy_.read_write/p' "$root/grader/grade.cpp")
-grep -q "build_policy_.read_only" <<<"$sandbox" || fail "cannot find the build allow-list in grader/grade.cpp's set_up_sandbox"
+# The two allow-lists of set_up_sandbox, from "void GradingSession::set_up_sandbox" to the first line after them.
+sandbox=$(sed -n '/^void GradingSession::set_up_sandbox/,/build_policy_.read_write/p' "$root/grader/src/grade/walls.cpp")
+grep -q "build_policy_.read_only" <<<"$sandbox" || fail "cannot find the build allow-list in grader/src/grade/walls.cpp's set_up_sandbox"
 ! grep -n "reference\"\|reference()" <<<"$sandbox" || fail "set_up_sandbox lets student code read reference/ (above)"
 
 # The submission project as the grader configures it, the reference solutions standing in for a student's labs.

@@ -7,8 +7,8 @@
 #include "test_support.h"
 
 #include "common/io/json.h"
-#include "grader/grade.h"
-#include "grader/mutant_kit.h"
+#include "grader/src/grade/grade.h"
+#include "grader/src/margins/mutant_kit.h"
 
 #include <algorithm>
 #include <functional>

@@ -3,7 +3,7 @@
 #include "common/image/image.h"
 #include "common/image/image_compare.h"
 #include "common/io/json.h"
-#include "grader/process.h"
+#include "grader/src/run/process.h"
 
 #include <algorithm>
 #include <filesystem>

@@ -4,9 +4,9 @@
 #include "test_support.h"
 
 #include "common/core/error.h"
-#include "grader/batch.h"
-#include "grader/batch_merge.h"
-#include "grader/batch_record.h"
+#include "grader/src/batch/batch.h"
+#include "grader/src/batch/batch_merge.h"
+#include "grader/src/batch/batch_record.h"
 
 #include <algorithm>
 #include <functional>

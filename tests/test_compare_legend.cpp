@@ -2,7 +2,7 @@
 #include "catch.hpp"
 #include "common/image/comparison_image.h"
 #include "common/image/image.h"
-#include "grader/process.h"
+#include "grader/src/run/process.h"
 #include "lab_runner.h"
 #include "test_support.h"
 

@@ -5,8 +5,8 @@
 #include "common/core/error.h"
 #include "common/core/progress.h"
 #include "common/io/output_folder.h"
-#include "grader/batch.h"
-#include "grader/cases.h"
+#include "grader/src/batch/batch.h"
+#include "grader/src/cases/cases.h"
 #include "lab_runner.h"
 #include "test_support.h"
 

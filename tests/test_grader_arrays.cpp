@@ -5,13 +5,15 @@
 
 #include "common/image/image.h"
 #include "common/io/data_array.h"
+#include "common/io/handin.h"
 #include "common/io/json.h"
 #include "common/io/little_endian.h"
-#include "grader/array_compare.h"
-#include "grader/array_golden.h"
-#include "grader/data_check.h"
-#include "grader/grade.h"
-#include "grader/report.h"
+#include "grader/src/golden/array_golden.h"
+#include "grader/src/golden/golden_update.h"
+#include "grader/src/grade/grade.h"
+#include "grader/src/judge/array_compare.h"
+#include "grader/src/judge/data_check.h"
+#include "grader/src/report/report.h"
 #include "common/io/handin.h"
 #include "common/io/little_endian.h"
 
@@ -570,7 +572,7 @@ TEST_CASE("arrays: graded end to end through lab processes, live and against gol
                       "golden": {"max_channel_diff": 0, "max_differing_fraction": 0},
                       "arrays": {"max_abs": 1e-4, "max_differing_fraction": 0}},
         "cases": [{"name": "cloud", "todo": "L99-T1", "points": 3, "settings": []}]})");
-    const FakeLab reference{flat(100), {{"positions", ramp("positions", 5000)}, {"velocities", ramp("velocities", 5000)}}, {}};
+    const FakeLab reference{flat(100), {{"positions", ramp("positions", 5000)}, {"velocities", ramp("velocities", 5000)}}, {}, ""};
     write_fake_lab(dir.path("bin"), "lab99_solution", dir.path("fixture/reference"), reference);
 
     FakeLab student = reference;
@@ -602,8 +604,7 @@ TEST_CASE("arrays: graded end to end through lab processes, live and against gol
 
     // The goldens: a compact sample beside the image, then the self-check uses them.
     GradeOptions update = fake_kit_options(dir, "out-update");
-    update.update_goldens = true;
-    const GradeReport updated = grade(update);
+    const GradeReport updated = update_goldens(update);
     REQUIRE(updated.results.size() == 1);
     CHECK(updated.results[0].status == CaseStatus::Passed);
     CHECK(contains(updated.results[0].detail, "and 2 arrays"));
@@ -664,8 +665,7 @@ TEST_CASE("grader: against another renderer's goldens, a picture within one and 
     FakeLab reference{picture(0), {{"positions", ramp("positions", 50)}}, {}, gpu};
     write_fake_lab(dir.path("bin"), "lab99_solution", dir.path("fixture/reference"), reference);
     GradeOptions update = fake_kit_options(dir, "out-update");
-    update.update_goldens = true;
-    REQUIRE(grade(update).results.at(0).status == CaseStatus::Passed);
+    REQUIRE(update_goldens(update).results.at(0).status == CaseStatus::Passed);
     const Json record = read_json_file(dir.path("kit/grader/golden/renderer.json"));
     CHECK(record.object_at("labs").string_at("lab99") == gpu);
 

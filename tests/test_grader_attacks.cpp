@@ -1,14 +1,14 @@
-// A hostile student's submission against the grader's walls (grader/sandbox.h), inward and outward. One submission
-// plants an attack in each case of lab 01 (tests/attacks/attacks.cpp.in), attacks on the grader's clock in labs 03
-// and 05 (tests/attacks/timing_attacks.cpp.in) and odd files in its labs/, and is graded the way an instructor
-// grades in a terminal: gsv-grade as its own process on a pseudo terminal, the seed on its command line. The
-// attacks must learn nothing, earn no mark they did not earn, reach nothing of the grader's (descriptors, terminal,
-// disk), leave nothing outside their case and no process behind.
+// A hostile student's submission against the grader's walls (grader/src/run/sandbox.h), inward and outward. One
+// submission plants an attack in each case of lab 01 (tests/attacks/attacks.cpp.in), attacks on the grader's clock
+// in labs 03 and 05 (tests/attacks/timing_attacks.cpp.in) and odd files in its labs/, and is graded the way an
+// instructor grades in a terminal: gsv-grade as its own process on a pseudo terminal, the seed on its command line.
+// The attacks must learn nothing, earn no mark they did not earn, reach nothing of the grader's (descriptors,
+// terminal, disk), leave nothing outside their case and no process behind.
 #include "grader_fixture.h"
 
-#include "grader/process.h"
-#include "grader/sandbox.h"
-#include "grader/submission.h"
+#include "grader/src/run/process.h"
+#include "grader/src/run/sandbox.h"
+#include "grader/src/run/submission.h"
 
 #include <dirent.h>
 #include <fcntl.h>

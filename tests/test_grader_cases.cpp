@@ -4,9 +4,9 @@
 #include "lab_runner.h"
 #include "test_support.h"
 
-#include "grader/cases.h"
-#include "grader/draw.h"
-#include "grader/grade.h"
+#include "grader/src/cases/cases.h"
+#include "grader/src/cases/draw.h"
+#include "grader/src/grade/grade.h"
 
 #include <algorithm>
 #include <fstream>

@@ -4,7 +4,7 @@
 #include "test_support.h"
 
 #include "common/io/handin.h"
-#include "grader/run_lab.h"
+#include "grader/src/run/lab_run.h"
 
 #include <chrono>
 

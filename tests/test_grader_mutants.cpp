@@ -2,7 +2,7 @@
 // the case that names their bug, and planted faults each get their own status while the rest is graded.
 #include "grader_fixture.h"
 
-#include "grader/starter.h"
+#include "tools/starter.h"
 
 #include <cstdio>
 #include <cstdlib>

@@ -2,8 +2,8 @@
 #include "catch.hpp"
 #include "test_support.h"
 
-#include "grader/process.h"
-#include "grader/run_lab.h"
+#include "grader/src/run/lab_run.h"
+#include "grader/src/run/process.h"
 
 #include "common/io/folder_tree.h"
 

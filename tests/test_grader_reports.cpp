@@ -6,9 +6,9 @@
 #include "common/core/error.h"
 #include "common/image/image.h"
 #include "common/io/json.h"
-#include "grader/grade_result.h"
-#include "grader/report.h"
-#include "grader/report_format.h"
+#include "grader/src/judge/grade_result.h"
+#include "grader/src/report/report.h"
+#include "grader/src/report/report_format.h"
 
 #include <cstdio>
 #include <cstdlib>
@@ -362,7 +362,7 @@ TEST_CASE("grader reports: score table has rows, per-lab totals and the run's se
     std::istringstream folded(table);
     for (std::string line; std::getline(folded, line);)
         if (line.rfind("    ", 0) == 0) CHECK(line.size() <= 114);
-    CHECK(contains(table, "  lab01       5 / 12      1 of 3 checks passed\n"));
+    CHECK(contains(table, "  lab01       5 / 12      1 of 3 checks passed; built\n"));
     CHECK(contains(table, "  lab02       0 / 7       0 of 2 checks passed\n"));
     CHECK(contains(table, "builds that failed\n  lab02: lab02/main.cpp:12:5: error: expected ';'\n"));
     CHECK(contains(table, "total         5 / 19  (26%)\n"));

@@ -3,10 +3,12 @@
 // a flood of output, a copied golden image) each get their own status while the rest is graded.
 #include "grader_fixture.h"
 
-#include "grader/batch.h"
-#include "grader/report.h"
-#include "grader/sandbox.h"
+#include "grader/src/batch/batch.h"
+#include "grader/src/report/report.h"
+#include "grader/src/run/sandbox.h"
 
+#include <fstream>
+#include <map>
 #include <unistd.h>
 
 using namespace gsv;
@@ -53,7 +55,7 @@ TEST_CASE("grader: C++ faults in a submission each get their own status, the san
     } else {
         WARN("this platform refuses unshare: the namespace walls are not tested here");
     }
-    // The uid this run leased (grader/uid_lease.h), as the report names it.
+    // The uid this run leased (grader/src/run/uid_lease.h), as the report names it.
     if (const auto at = report.sandbox.find("runs as uid "); geteuid() == 0 && at != std::string::npos) {
         const std::string uid = report.sandbox.substr(at + 12, report.sandbox.find(';', at) - at - 12);
         CHECK(probe_value(seen, "uid") == uid);
@@ -141,4 +143,92 @@ TEST_CASE("grader: a folder of submissions graded by parallel workers, one class
     const std::string csv = class_csv(entries);
     CHECK(csv.find("\"ada\",yes,") != std::string::npos);
     CHECK(csv.find("\"cy\",no,") != std::string::npos);
+}
+
+namespace {
+
+// The image checks' statuses and points, by case: what two ways of grading must agree on.
+std::map<std::string, std::string> verdicts(const GradeReport& report) {
+    std::map<std::string, std::string> out;
+    for (const auto& r : report.results) out[r.kind + " " + r.name] = std::string(status_name(r.status)) + " " + std::to_string(r.points);
+    return out;
+}
+
+GradeReport grade_submission(const std::filesystem::path& submission, const std::filesystem::path& out,
+                             const std::filesystem::path& cache, bool reuse = true) {
+    GradeOptions options = test::instructor_options("lab01", out);
+    options.submission = submission;
+    options.self_check = true;
+    options.timing = false;
+    options.reuse_builds = reuse;
+    options.build_cache = cache;
+    return grade(options);
+}
+
+}  // namespace
+
+TEST_CASE("grader: a lab whose C++ is the kit's starter's runs the kit's binary, and grades as if built", "[grader][submission]") {
+    test::TempDir dir;
+    const auto lab_dir = test::mutant_spec("lab01").string_at("lab_dir");
+    // The solution's shaders with the starter's C++ (lab 01's TODOs are all GLSL): full marks from the kit's binary.
+    std::filesystem::create_directories(dir.path("submission/labs"));
+    std::filesystem::copy(test::source_root() / "solutions" / lab_dir, dir.path("submission/labs") / lab_dir,
+                          std::filesystem::copy_options::recursive);
+    const GradeReport reused = grade_submission(dir.path("submission"), dir.path("reused"), dir.path("cache"));
+    REQUIRE(reused.builds.size() == 1);
+    INFO(reused.builds[0].log);
+    CHECK(reused.builds[0].ok);
+    CHECK(reused.builds[0].origin == "unchanged C++: the kit's binary");
+    CHECK(reused.score() == reused.max_score());
+    const GradeReport built = grade_submission(dir.path("submission"), dir.path("built"), dir.path("cache"), false);
+    CHECK(built.builds.at(0).origin == "built");
+    CHECK(verdicts(built) == verdicts(reused));
+    // The report says how each lab's binary came to be.
+    write_reports(reused, dir.path("reused"));
+    CHECK(test::read_text(dir.path("reused/report.json")).find("unchanged C++: the kit's binary") != std::string::npos);
+}
+
+TEST_CASE("grader: a lab whose C++ only looks unchanged is built, and a build is kept for the next same C++", "[grader][submission]") {
+    test::TempDir dir;
+    const auto lab_dir = test::mutant_spec("lab01").string_at("lab_dir");
+    const auto lab = dir.path("submission/labs") / lab_dir;
+    std::filesystem::create_directories(lab.parent_path());
+    std::filesystem::copy(test::source_root() / "labs" / lab_dir, lab, std::filesystem::copy_options::recursive);
+    // One byte of lab.cpp changed, the same size and the same time: a comment's first letter.
+    std::string text = test::read_text(lab / "lab.cpp");
+    const auto comment = text.find("// ");
+    REQUIRE(comment != std::string::npos);
+    text[comment + 3] = text[comment + 3] == 'x' ? 'y' : 'x';
+    const auto time = std::filesystem::last_write_time(lab / "lab.cpp");
+    std::ofstream(lab / "lab.cpp", std::ios::binary) << text;
+    std::filesystem::last_write_time(lab / "lab.cpp", time);
+    REQUIRE(std::filesystem::file_size(lab / "lab.cpp") == std::filesystem::file_size(test::source_root() / "labs" / lab_dir / "lab.cpp"));
+    const auto cache = dir.path("cache");  // fresh: no earlier run's entry answers for it
+
+    const GradeReport first = grade_submission(dir.path("submission"), dir.path("first"), cache);
+    INFO(first.builds.at(0).log);
+    CHECK(first.builds.at(0).ok);
+    CHECK(first.builds.at(0).origin == "built");
+    const GradeReport second = grade_submission(dir.path("submission"), dir.path("second"), cache);
+    CHECK(second.builds.at(0).origin == "unchanged C++: an earlier build");
+    CHECK(verdicts(second) == verdicts(first));
+
+    // A damaged entry is not trusted: the lab is built again, and the log says why.
+    int damaged = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(cache)) {
+        std::ofstream(entry.path() / "binary", std::ios::binary | std::ios::app) << "tampered";
+        ++damaged;
+    }
+    REQUIRE(damaged == 1);
+    const GradeReport third = grade_submission(dir.path("submission"), dir.path("third"), cache);
+    CHECK(third.builds.at(0).origin == "built");
+    CHECK(third.builds.at(0).log.find("does not hold what its key says") != std::string::npos);
+    CHECK(verdicts(third) == verdicts(first));
+
+    // A cache that cannot be written (its folder is a file): one line, and the lab is graded all the same.
+    std::ofstream(dir.path("not-a-folder")) << "x";
+    const GradeReport fourth = grade_submission(dir.path("submission"), dir.path("fourth"), dir.path("not-a-folder"));
+    CHECK(fourth.builds.at(0).ok);
+    CHECK(fourth.builds.at(0).log.find("build cache: ") != std::string::npos);
+    CHECK(verdicts(fourth) == verdicts(first));
 }

@@ -1,11 +1,11 @@
-// Each grader run's student code under a uid of its own (grader/uid_lease.h): leases never shared, and what one
+// Each grader run's student code under a uid of its own (grader/src/run/uid_lease.h): leases never shared, and what one
 // student's processes do to their uid's limits reaches no other run.
 #include "catch.hpp"
 #include "test_support.h"
 
-#include "grader/process.h"
-#include "grader/run_lab.h"
-#include "grader/uid_lease.h"
+#include "grader/src/run/lab_run.h"
+#include "grader/src/run/process.h"
+#include "grader/src/run/uid_lease.h"
 
 #include <csignal>
 #include <sys/stat.h>

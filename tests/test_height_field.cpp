@@ -294,7 +294,7 @@ TEST_CASE("terrain: slopes in metres per metre follow the chain rule of extent a
     for (TerrainKind kind : {TerrainKind::Franke, TerrainKind::SinCos}) {
         const ProceduralTerrain terrain{kind, 2500.0, 400.0};
         const double h = 1e-6 * terrain.extent_m;
-        for (const glm::dvec2 p : {glm::dvec2(300, 700), glm::dvec2(1234.5, 2100), glm::dvec2(2400, 10)}) {
+        for (const glm::dvec2& p : {glm::dvec2(300, 700), glm::dvec2(1234.5, 2100), glm::dvec2(2400, 10)}) {
             const glm::dvec2 slope = gsv::terrain_slope(terrain, p);
             const double sx = (gsv::terrain_height(terrain, p + glm::dvec2(h, 0)) -
                                gsv::terrain_height(terrain, p - glm::dvec2(h, 0))) / (2 * h);
@@ -351,7 +351,7 @@ TEST_CASE("terrain normals: the slope form is the normalised cross product of th
           "[unit][terrain]") {
     const HeightField field = gsv::make_procedural({TerrainKind::SinCos, 900.0, 120.0}, 30, 20);
     for (int step : {1, 2})
-        for (const glm::ivec2 s : {glm::ivec2(5, 7), glm::ivec2(17, 11), glm::ivec2(2, 2)})
+        for (const glm::ivec2& s : {glm::ivec2(5, 7), glm::ivec2(17, 11), glm::ivec2(2, 2)})
             for (double e : {0.5, 3.0}) {
                 const double dh_x = e * (field.at(s.x + step, s.y) - double(field.at(s.x - step, s.y)));
                 const double dh_z = e * (field.at(s.x, s.y + step) - double(field.at(s.x, s.y - step)));

@@ -9,8 +9,8 @@
 #include "lab_runner.h"
 
 #include "common/image/image_compare.h"
-#include "grader/cases.h"
-#include "grader/grade.h"
+#include "grader/src/cases/cases.h"
+#include "grader/src/grade/grade.h"
 
 #include <algorithm>
 #include <fstream>
@@ -41,7 +41,7 @@ void every_case_renders_by_name(const std::string& lab) {
     for (const auto& c : cases) {
         INFO(c.name);
         CHECK(list.process.output.find("  " + c.name + " ") != std::string::npos);
-        for (const std::string binary : {lab + "_solution", lab}) {
+        for (const std::string& binary : {lab + "_solution", lab}) {
             const test::LabRun run = test::run_lab(binary, {"render", "--case", c.name, "--size", "24x24", "--frames", "1",
                                                             "--warmup", "0", "--out", (dir / (c.name + ".png")).string()},
                                                    dir);
@@ -100,7 +100,7 @@ TEST_CASE("labs: a case file's mistake is named where it is written, and without
     const std::vector<std::string> env{"GSV_ROOT=" + root.string()};
     const auto dir = test::temp_dir("case-file-out");
     const int line = write_cases("\"mesh_resolution=8\"", "\"mesh_resolutoin=8\"");
-    for (const std::vector<std::string> args : {std::vector<std::string>{"list"},
+    for (const std::vector<std::string>& args : {std::vector<std::string>{"list"},
                                                std::vector<std::string>{"render", "--case", "gooch", "--out", "x.png"}}) {
         const test::LabRun run = test::run_lab("lab01_solution", args, dir, env);
         INFO(run.process.output);
@@ -232,7 +232,7 @@ TEST_CASE("every lab on OpenGL 4.1 has its full-marks test above", "[lab][labs]"
 // Tagged [timing] (ctest runs it alone): live grading times the solution against itself, which noise must not fail.
 // Only the timed cases: the rest of live grading is the test above, run beside other tests.
 TEST_CASE("every lab: the solution's timed cases pass their timing against itself", "[lab][labs][timing]") {
-  for (const std::string lab : labs_on_gl41()) {
+  for (const std::string& lab : labs_on_gl41()) {
     INFO(lab);
     GradeOptions options = grading_options(lab);
     options.submission = test::solution_submission(lab, "grade-timing-submission-" + lab);

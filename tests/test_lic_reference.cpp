@@ -105,7 +105,7 @@ TEST_CASE("exact streamlines of the linear fields are their closed forms, the ro
                 const gsv::VelocityAt velocity = gsv::analytic_flow(kind, width, height, speed);
                 const dvec2 centre(width / 2.0, height / 2.0);
                 double worst = 0;
-                for (const dvec2 start : {dvec2(10.25, 7.5), dvec2(40.5, 30.75), dvec2(31.0, 20.0), dvec2(60.5, 40.5)})
+                for (const dvec2& start : {dvec2(10.25, 7.5), dvec2(40.5, 30.75), dvec2(31.0, 20.0), dvec2(60.5, 40.5)})
                     for (int steps : {1, 7, 100, -1, -7, -100}) {
                         const dvec2 traced = gsv::trace_streamline(velocity, start, steps);
                         const dvec2 expected = centre + linear_flow(kind, field, s, steps, start - centre);

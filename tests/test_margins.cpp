@@ -1,4 +1,4 @@
-// The margin table (grader/margins.h, scripts/kit margins) and the 8-bit filter stand-in it renders with
+// The margin table (grader/src/margins/margins.h, scripts/kit margins) and the 8-bit filter stand-in it renders with
 // (shaders/gsv/texel_snap.glsl): shares of a budget, the bar and why a case misses it, the measurement as JSON, the
 // failures CI's softpipe kind reports, and one lab measured end to end.
 #include "catch.hpp"
@@ -8,8 +8,8 @@
 #include "lab_runner.h"
 
 #include "common/image/image_compare.h"
-#include "grader/cases.h"
-#include "grader/margins.h"
+#include "grader/src/cases/cases.h"
+#include "grader/src/margins/margins.h"
 
 #include <cmath>
 

@@ -1,5 +1,6 @@
-// Lab 06's modular ray caster (solutions/lab06_raycasting/, support/raycast/raycast_config.h): the generated configuration
-// header, that each configuration compiles only its own modules, and what the shaders draw against
+// Lab 06's modular ray caster (solutions/lab06_raycasting/, its module table in raycast_modules.cpp, the machinery in
+// support/raycast/raycast_config.h): the module table's promises, a compositing mode added as a GLSL file and a row,
+// the generated configuration header, that each configuration compiles only its own modules, and what the shaders draw against
 // closed forms and CPU references, including the hard cases (entry == exit, a zero gradient, the
 // isosurface's 0/0, opacity correction, early termination). The uber-shader and the hand-written DVR
 // must draw what the specialised shader draws.
@@ -14,7 +15,9 @@
 #include "common/gl/texture.h"
 #include "common/image/image.h"
 #include "common/scene/mesh_data.h"
+#include "common/params/params.h"
 #include "common/shader/shader_source.h"
+#include "solutions/lab06_raycasting/raycast_modules.h"
 #include "support/raycast/raycast_components.h"
 #include "support/raycast/raycast_config.h"
 #include "support/volume/sobel_gradient.h"
@@ -43,6 +46,13 @@ namespace {
 const fs::path kShaders = test::source_root() / "shaders";
 // The ray caster is lab 06's own: its skeleton and modules sit in the reference solution's folder.
 const fs::path kRaycast = test::source_root() / "solutions" / "lab06_raycasting";
+// The lab's module table, as the lab reads it (tests/CMakeLists.txt builds its file into the tests).
+const RaycastModules& kModules = lab06::raycast_modules();
+// Where a mode added by a test keeps its GLSL file (composite_test_avg.glsl).
+const fs::path kTestShaders = test::source_root() / "tests" / "shaders";
+// That mode's row: all a new compositing mode adds to the lab's table.
+const CompositingModule kAverageRow = {{"avg", "composite_test_avg.glsl", "TestAvg"}, "mean intensity, opaque", false, false,
+                                       {true, "Each pixel shows the mean intensity on its ray, opaque.", false}};
 
 Config make_config(K compositing, G gradient = G::None, C classification = C::Raw, S shading = S::None,
                    bool early_termination = true) {
@@ -56,9 +66,9 @@ Config make_config(K compositing, G gradient = G::None, C classification = C::Ra
 }
 
 // Every configuration validate() accepts, with DVR's early termination both on and off.
-std::vector<Config> configs_with_termination_off() {
-    std::vector<Config> configs = all_raycast_configs();
-    for (Config c : all_raycast_configs()) {
+std::vector<Config> configs_with_termination_off(const RaycastModules& modules = kModules) {
+    std::vector<Config> configs = all_raycast_configs(modules);
+    for (Config c : all_raycast_configs(modules)) {
         if (c.compositing != K::Dvr) continue;
         c.early_termination = false;
         configs.push_back(c);
@@ -91,7 +101,7 @@ const std::vector<ModuleFunction>& module_functions() {
 PreprocessOptions shader_options(GlVersion version = {4, 1}) {
     PreprocessOptions options;
     options.version = version;
-    options.include_dirs = {kRaycast, kShaders};
+    options.include_dirs = {kRaycast, kShaders, kTestShaders};
     return options;
 }
 
@@ -103,8 +113,8 @@ ShaderProgram build_program(const Context& context, const std::string& fragment,
     return ShaderProgram::build(spec, shader_options(context.effective_version()));
 }
 
-ShaderProgram specialised(const Context& context, const Config& config) {
-    return build_program(context, "raycast.frag", {raycast_config_file(config)});
+ShaderProgram specialised(const Context& context, const Config& config, const RaycastModules& modules = kModules) {
+    return build_program(context, "raycast.frag", {raycast_config_file(modules, config)});
 }
 
 // A cube of n^3 voxels with value f(i, j, k), x fastest.
@@ -283,18 +293,18 @@ float blob(int i, int j, int k) {
 }  // namespace
 
 TEST_CASE("raycast_config: names print and parse, and a bad name is one line naming it and the known ones", "[unit][raycast]") {
-    for (G g : {G::None, G::Forward, G::Central, G::Precomputed}) CHECK(parse_gradient(name_of(g)) == g);
-    for (C c : {C::Raw, C::TransferFunction}) CHECK(parse_classification(name_of(c)) == c);
-    for (S s : {S::None, S::Phong}) CHECK(parse_shading(name_of(s)) == s);
-    for (K k : {K::Dvr, K::Mip, K::Isosurface, K::FirstHit}) CHECK(parse_compositing(name_of(k)) == k);
-    CHECK_THROWS_WITH(parse_gradient("centre"), "unknown raycast gradient 'centre' (known: none, forward, central, precomputed)");
-    CHECK_THROWS_WITH(parse_classification(""), "unknown raycast classification '' (known: raw, tf)");
-    CHECK_THROWS_WITH(parse_shading("Phong"), "unknown raycast shading 'Phong' (known: none, phong)");
+    for (G g : {G::None, G::Forward, G::Central, G::Precomputed}) CHECK(parse_gradient(kModules, name_of(kModules, g)) == g);
+    for (C c : {C::Raw, C::TransferFunction}) CHECK(parse_classification(kModules, name_of(kModules, c)) == c);
+    for (S s : {S::None, S::Phong}) CHECK(parse_shading(kModules, name_of(kModules, s)) == s);
+    for (K k : {K::Dvr, K::Mip, K::Isosurface, K::FirstHit}) CHECK(parse_compositing(kModules, name_of(kModules, k)) == k);
+    CHECK_THROWS_WITH(parse_gradient(kModules, "centre"), "unknown raycast gradient 'centre' (known: none, forward, central, precomputed)");
+    CHECK_THROWS_WITH(parse_classification(kModules, ""), "unknown raycast classification '' (known: raw, tf)");
+    CHECK_THROWS_WITH(parse_shading(kModules, "Phong"), "unknown raycast shading 'Phong' (known: none, phong)");
     std::string known;  // the table's rows, dvr, mip, iso, fhp first
-    for (const std::string& name : compositing_names()) known += (known.empty() ? "" : ", ") + name;
+    for (const std::string& name : compositing_names(kModules)) known += (known.empty() ? "" : ", ") + name;
     CHECK(known.rfind("dvr, mip, iso, fhp", 0) == 0);
-    CHECK_THROWS_WITH(parse_compositing("max"), "unknown raycast compositing 'max' (known: " + known + ")");
-    CHECK(describe(make_config(K::Dvr, G::Central, C::TransferFunction, S::Phong)) ==
+    CHECK_THROWS_WITH(parse_compositing(kModules, "max"), "unknown raycast compositing 'max' (known: " + known + ")");
+    CHECK(describe(kModules, make_config(K::Dvr, G::Central, C::TransferFunction, S::Phong)) ==
           "compositing dvr, gradient central, classification tf, shading phong, early termination on");
 }
 
@@ -303,19 +313,19 @@ TEST_CASE("raycast_config: Phong without a gradient is refused in one line, and 
                                 "(pick forward, central or precomputed, or shading none)";
     for (K k : {K::Dvr, K::Mip, K::Isosurface, K::FirstHit}) {
         const Config bad = make_config(k, G::None, C::Raw, S::Phong);
-        CHECK_THROWS_WITH(validate(bad), refusal);
-        CHECK_THROWS_WITH(generate_raycast_header(bad), refusal);
-        CHECK_THROWS_WITH(raycast_uber_uniforms(bad), refusal);
+        CHECK_THROWS_WITH(validate(kModules, bad), refusal);
+        CHECK_THROWS_WITH(generate_raycast_header(kModules, bad), refusal);
+        CHECK_THROWS_WITH(raycast_uber_uniforms(kModules, bad), refusal);
     }
-    const std::vector<Config> configs = all_raycast_configs();
+    const std::vector<Config> configs = all_raycast_configs(kModules);
     // 4 gradients x 2 classifications x 2 shadings, less Phong without a gradient, for each row of the compositing
     // table (4 of them: 56): a new mode's row brings its 14.
-    CHECK(compositing_names().size() >= 4);
-    CHECK(configs.size() == compositing_names().size() * (4 * 2 * 2 - 2));
+    CHECK(compositing_names(kModules).size() >= 4);
+    CHECK(configs.size() == compositing_names(kModules).size() * (4 * 2 * 2 - 2));
     std::set<std::string> distinct;
     for (const Config& c : configs) {
-        CHECK_NOTHROW(validate(c));
-        distinct.insert(describe(c));
+        CHECK_NOTHROW(validate(kModules, c));
+        distinct.insert(describe(kModules, c));
     }
     CHECK(distinct.size() == configs.size());
 }
@@ -323,17 +333,17 @@ TEST_CASE("raycast_config: Phong without a gradient is refused in one line, and 
 TEST_CASE("raycast_config: a module the compositing cannot use is dropped, and the header says so", "[unit][raycast]") {
     // MIP and first hit use neither gradient nor shading, whatever was asked.
     for (K k : {K::Mip, K::FirstHit}) {
-        const Config e = effective_config(make_config(k, G::Central, C::TransferFunction, S::Phong));
+        const Config e = effective_config(kModules, make_config(k, G::Central, C::TransferFunction, S::Phong));
         CHECK(e == make_config(k, G::None, C::TransferFunction, S::None, false));
     }
     // DVR and isosurface take the gradient only to shade.
-    CHECK(effective_config(make_config(K::Dvr, G::Forward)) == make_config(K::Dvr));
-    CHECK(effective_config(make_config(K::Isosurface, G::Central, C::Raw, S::Phong)) ==
+    CHECK(effective_config(kModules, make_config(K::Dvr, G::Forward)) == make_config(K::Dvr));
+    CHECK(effective_config(kModules, make_config(K::Isosurface, G::Central, C::Raw, S::Phong)) ==
           make_config(K::Isosurface, G::Central, C::Raw, S::Phong, false));
-    CHECK(effective_config(make_config(K::Dvr, G::Central, C::Raw, S::Phong, false)) ==
+    CHECK(effective_config(kModules, make_config(K::Dvr, G::Central, C::Raw, S::Phong, false)) ==
           make_config(K::Dvr, G::Central, C::Raw, S::Phong, false));
 
-    CHECK(generate_raycast_header(make_config(K::Dvr, G::Central, C::TransferFunction, S::Phong)) ==
+    CHECK(generate_raycast_header(kModules, make_config(K::Dvr, G::Central, C::TransferFunction, S::Phong)) ==
           "// rc_config.glsl, generated by gsv::generate_raycast_header for: compositing dvr, gradient central, "
           "classification tf, shading phong, early termination on\n"
           "#include \"gradient_central.glsl\"\n"
@@ -347,7 +357,7 @@ TEST_CASE("raycast_config: a module the compositing cannot use is dropped, and t
           "#define RC_COMPOSITE(state, ray, t, intensity) rcCompositeDvr(state, ray, t, intensity)\n"
           "#define RC_TERMINATE(state) rcTerminateDvr(state)\n"
           "#define RC_FINISH(state) rcFinishDvr(state)\n");
-    CHECK(generate_raycast_header(make_config(K::Mip, G::Central, C::Raw, S::Phong)) ==
+    CHECK(generate_raycast_header(kModules, make_config(K::Mip, G::Central, C::Raw, S::Phong)) ==
           "// rc_config.glsl, generated by gsv::generate_raycast_header for: compositing mip, gradient none, "
           "classification raw, shading none, early termination off\n"
           "// (requested: compositing mip, gradient central, classification raw, shading phong, early termination on)\n"
@@ -360,65 +370,181 @@ TEST_CASE("raycast_config: a module the compositing cannot use is dropped, and t
           "#define RC_COMPOSITE(state, ray, t, intensity) rcCompositeMip(state, ray, t, intensity)\n"
           "#define RC_TERMINATE(state) rcTerminateMip(state)\n"
           "#define RC_FINISH(state) rcFinishMip(state)\n");
-    CHECK(generate_raycast_header(make_config(K::Dvr, G::None, C::Raw, S::None, false))
+    CHECK(generate_raycast_header(kModules, make_config(K::Dvr, G::None, C::Raw, S::None, false))
               .find("#define RC_TERMINATE(state) false\n") != std::string::npos);
-    CHECK(raycast_config_file(make_config(K::Dvr)).name == "rc_config.glsl");
+    CHECK(raycast_config_file(kModules, make_config(K::Dvr)).name == "rc_config.glsl");
 
     const std::vector<std::pair<std::string, int>> modes = {{"uGradientMode", 0}, {"uClassificationMode", 1},
                                                             {"uShadingMode", 0},  {"uCompositingMode", 1},
                                                             {"uEarlyTermination", 0}};
-    CHECK(raycast_uber_uniforms(make_config(K::Mip, G::Central, C::TransferFunction, S::Phong)) == modes);
+    CHECK(raycast_uber_uniforms(kModules, make_config(K::Mip, G::Central, C::TransferFunction, S::Phong)) == modes);
 }
 
+namespace {
+
+// What a module table promises for its compositing row i, as one line a broken promise (none: kept): its GLSL file,
+// found in `dirs`, defines the four functions its placeholders expand to; its name is the choice, parses back and has
+// its phrase in the help; its legend says something or says it has none; it is among the configurations every test
+// and sweep runs (the agreement test's loop); and the uber-shader has its file and a branch of its own in every
+// placeholder, the last row alone being the fallback (no mode falls through to another's).
+std::vector<std::string> compositing_row_problems(const RaycastModules& modules, std::size_t i, const std::vector<fs::path>& dirs) {
+    std::vector<std::string> problems;
+    const std::vector<std::string> names = compositing_names(modules);
+    const K mode = static_cast<K>(i);
+    const std::string name = names.at(i);
+    if (parse_compositing(modules, name) != mode || name_of(modules, mode) != name) problems.push_back("its name does not parse back");
+    const CompositingModule& row = modules.compositings().at(i);
+    if (compositing_help(modules).find(name + ": " + row.description) == std::string::npos) problems.push_back("not in the help");
+    // Its file, as the generated header includes it, and the function suffix the placeholders expand to.
+    const std::string header = generate_raycast_header(modules, make_config(mode));
+    const std::size_t include = header.rfind("#include \"");
+    const std::size_t start = header.find("#define RC_START(ray) rcStart");
+    if (include == std::string::npos || start == std::string::npos) return {"the header includes no compositing file:\n" + header};
+    const std::string file = header.substr(include + 10, header.find('"', include + 10) - include - 10);
+    const std::string x = header.substr(start + 29, header.find('(', start + 29) - start - 29);
+    const auto found = std::find_if(dirs.begin(), dirs.end(), [&](const fs::path& dir) { return fs::is_regular_file(dir / file); });
+    if (found == dirs.end()) {
+        problems.push_back(file + " is in none of the shader folders");
+    } else {
+        const std::string glsl = test::read_text(*found / file);
+        for (const std::string& function : {"RcState rcStart" + x + "(", "void rcComposite" + x + "(", "bool rcTerminate" + x + "(",
+                                            "vec4 rcFinish" + x + "("})
+            if (glsl.find(function) == std::string::npos) problems.push_back(file + " does not define " + function + "...)");
+    }
+    const CompositingLegend legend = compositing_legend(modules, mode);
+    if (legend.shown != (std::string(legend.note) != "")) problems.push_back("its legend is shown without a note, or the other way round");
+    const std::vector<Config> configs = all_raycast_configs(modules);
+    if (std::count_if(configs.begin(), configs.end(), [&](const Config& c) { return c.compositing == mode; }) != 4 * 2 * 2 - 2)
+        problems.push_back("not among the configurations tests and sweeps run, 14 a mode");
+    const std::string uber = generate_raycast_uber_header(modules);
+    if (uber.find("#include \"" + file + "\"") == std::string::npos) problems.push_back("the uber-shader does not include " + file);
+    for (const std::string function : {"rcStart", "rcComposite", "rcTerminate", "rcFinish"})
+        if (uber.find(function + x + "(") == std::string::npos) problems.push_back("the uber-shader does not call " + function + x);
+    const bool branch = uber.find("uCompositingMode == " + std::to_string(i) + ")") != std::string::npos;
+    if (branch != (i + 1 < names.size()))
+        problems.push_back(branch ? "the last row has a condition, so a value past the table draws nothing"
+                                  : "no branch of its own in the uber-shader: it would draw the last row's picture");
+    return problems;
+}
+
+std::string lines(const std::vector<std::string>& problems) {
+    std::string text;
+    for (const auto& p : problems) text += p + "\n";
+    return text;
+}
+
+}  // namespace
+
 TEST_CASE("raycast: every compositing mode has its file, its four functions, a legend, its configurations and an uber-shader branch", "[unit][raycast]") {
-    // What the module table (support/raycast/raycast_config.cpp) promises for each row: a mode missing any piece fails here.
-    const std::vector<std::string> names = compositing_names();
+    // What lab 06's module table (solutions/lab06_raycasting/raycast_modules.cpp) promises for each row.
+    const std::vector<std::string> names = compositing_names(kModules);
     REQUIRE(names.size() >= 4);
-    const std::vector<Config> configs = all_raycast_configs();
-    const std::string uber = generate_raycast_uber_header();
     for (std::size_t i = 0; i < names.size(); ++i) {
         INFO(names[i]);
-        const K mode = parse_compositing(names[i]);
-        CHECK(static_cast<std::size_t>(mode) == i);
-        CHECK(name_of(mode) == names[i]);
-        // Its GLSL file, in the lab's folder, defines the four functions the placeholders expand to.
-        const std::string header = generate_raycast_header(make_config(mode));
-        const std::size_t include = header.rfind("#include \"");
-        REQUIRE(include != std::string::npos);
-        const std::string file = header.substr(include + 10, header.find('"', include + 10) - include - 10);
-        const std::size_t start = header.find("#define RC_START(ray) rcStart");
-        REQUIRE(start != std::string::npos);
-        const std::string x = header.substr(start + 29, header.find('(', start + 29) - start - 29);
-        REQUIRE(fs::is_regular_file(kRaycast / file));
-        const std::string glsl = test::read_text(kRaycast / file);
-        for (const std::string& function : {"RcState rcStart" + x + "(", "void rcComposite" + x + "(", "bool rcTerminate" + x + "(",
-                                            "vec4 rcFinish" + x + "("}) {
-            INFO(function);
-            CHECK(glsl.find(function) != std::string::npos);
-        }
-        // A legend that says something, or says it has none.
-        const CompositingLegend legend = compositing_legend(mode);
-        CHECK(legend.shown == (std::string(legend.note) != ""));
-        // Among the configurations every test and sweep runs.
-        CHECK(std::count_if(configs.begin(), configs.end(), [&](const Config& c) { return c.compositing == mode; }) > 0);
-        // In the uber-shader: its file, and a branch of its own in each placeholder (the last row is the fallback).
-        CHECK(uber.find("#include \"" + file + "\"") != std::string::npos);
-        for (const std::string& function : {"rcStart", "rcComposite", "rcTerminate", "rcFinish"}) {
-            INFO(function);
-            CHECK(uber.find(function + x + "(") != std::string::npos);
-        }
-        if (i + 1 < names.size()) CHECK(uber.find("uCompositingMode == " + std::to_string(i) + ")") != std::string::npos);
+        const std::vector<std::string> problems = compositing_row_problems(kModules, i, {kRaycast});
+        INFO(lines(problems));
+        CHECK(problems.empty());
     }
-    CHECK(uber.find("uCompositingMode == " + std::to_string(names.size() - 1) + ")") == std::string::npos);
+}
+
+TEST_CASE("raycast: a compositing mode is a GLSL file and one table row, and its choice, help, error, legend, configurations and both shaders follow", "[unit][raycast]") {
+    const RaycastModules extended = kModules.with_compositing(kAverageRow);
+    const std::size_t n = kModules.compositings().size();
+    const std::vector<std::string> names = compositing_names(extended);
+    REQUIRE(names.size() == n + 1);
+    CHECK(names.back() == "avg");
+    for (std::size_t i = 0; i <= n; ++i) {
+        INFO(names[i]);
+        const std::vector<std::string> problems = compositing_row_problems(extended, i, {kRaycast, kTestShaders});
+        INFO(lines(problems));
+        CHECK(problems.empty());
+    }
+    // The parameter a processor declares from the table: its choices, its help (--help, `list`, the panel) and the
+    // error for a name it does not know.
+    Params p;
+    p.add_choice("compositing", "dvr", compositing_names(extended), compositing_help(extended));
+    CHECK_NOTHROW(p.set("compositing", "avg"));
+    CHECK(p.get_choice("compositing") == "avg");
+    CHECK(p.describe().find("avg: mean intensity, opaque") != std::string::npos);
+    CHECK_THROWS_WITH(p.set("compositing", "sum"), Catch::Contains(", fhp, avg"));
+    CHECK_THROWS_WITH(parse_compositing(extended, "sum"), Catch::Contains(", fhp, avg)"));
+    const K avg = parse_compositing(extended, "avg");
+    CHECK(static_cast<std::size_t>(avg) == n);
+    CHECK(std::string(compositing_legend(extended, avg).note) == kAverageRow.legend.note);
+    // Not shaded: neither gradient nor shading is compiled in, and its termination is its own.
+    CHECK(effective_config(extended, make_config(avg, G::Central, C::TransferFunction, S::Phong)) ==
+          make_config(avg, G::None, C::TransferFunction, S::None, false));
+    CHECK(generate_raycast_header(extended, make_config(avg)).find("#include \"composite_test_avg.glsl\"\n"
+                                                                   "#define RC_START(ray) rcStartTestAvg(ray)\n") != std::string::npos);
+    // The configurations tests and sweeps run gain its 14; the uber-shader's last branch is its, and the row that was
+    // last (first hit) has a condition now.
+    CHECK(all_raycast_configs(extended).size() == all_raycast_configs(kModules).size() + 14);
+    const std::string uber = generate_raycast_uber_header(extended);
+    CHECK(uber.find("    if (uCompositingMode == " + std::to_string(n - 1) + ") return rcFinishFhp(s);\n"
+                    "    return rcFinishTestAvg(s);\n") != std::string::npos);
+    CHECK(uber.find("uniform int uCompositingMode;     // 0 dvr, 1 mip, 2 iso, 3 fhp, 4 avg\n") != std::string::npos);
+}
+
+TEST_CASE("raycast: a compositing row that lacks a piece is refused in one line when the table is made", "[unit][raycast]") {
+    const auto lacking = [](auto change) {
+        CompositingModule row = kAverageRow;
+        change(row);
+        return row;
+    };
+    const std::string row4 = "raycast compositing row 4 ('avg') ";
+    // No file or no function: the header, the uber-shader's #include and its branch would have nothing to name.
+    CHECK_THROWS_WITH(kModules.with_compositing(lacking([](CompositingModule& r) { r.file = ""; })), row4 + "has no GLSL file");
+    CHECK_THROWS_WITH(kModules.with_compositing(lacking([](CompositingModule& r) { r.function = nullptr; })), row4 + "has no function");
+    CHECK_THROWS_WITH(kModules.with_compositing(lacking([](CompositingModule& r) { r.name = ""; })),
+                      "raycast compositing row 4 ('') has no name");
+    CHECK_THROWS_WITH(kModules.with_compositing(lacking([](CompositingModule& r) { r.name = "mip"; })),
+                      "raycast compositing row 4 ('mip') has the name of an earlier row");
+    // No description: the help would leave it out.
+    CHECK_THROWS_WITH(kModules.with_compositing(lacking([](CompositingModule& r) { r.description = ""; })),
+                      row4 + "has no description for the parameter's help");
+    // The legend's former default (another mode's note for any mode it did not know): a row says its own, or shows none.
+    CHECK_THROWS_WITH(kModules.with_compositing(lacking([](CompositingModule& r) { r.legend.note = nullptr; })),
+                      row4 + "shows a legend that says nothing (no note)");
+    CHECK_THROWS_WITH(kModules.with_compositing(lacking([](CompositingModule& r) { r.legend.shown = false; })),
+                      row4 + "has a legend note but shows no legend");
+    // A compositing enumerator without its row, and a gradient table short of its enum.
+    std::vector<CompositingModule> three(kModules.compositings().begin(), kModules.compositings().begin() + 3);
+    CHECK_THROWS_WITH(RaycastModules(kModules.gradients(), kModules.classifications(), kModules.shadings(), three),
+                      "the raycast compositing table has 3 rows; RaycastConfig names 4 and more may follow");
+    std::vector<RaycastModule> gradients = kModules.gradients();
+    gradients.pop_back();
+    CHECK_THROWS_WITH(RaycastModules(gradients, kModules.classifications(), kModules.shadings(), kModules.compositings()),
+                      "the raycast gradient table has 3 rows; RaycastConfig names 4");
+    gradients = kModules.gradients();
+    gradients[0].file = "gradient_forward.glsl";
+    CHECK_THROWS_WITH(RaycastModules(gradients, kModules.classifications(), kModules.shadings(), kModules.compositings()),
+                      "raycast gradient row 0 ('none') leaves the module out, so it names no file and no function");
+}
+
+TEST_CASE("raycast: a mode whose GLSL file is missing, or lacks one of its four functions, fails the row check", "[unit][raycast]") {
+    test::TempDir dir;
+    std::string glsl = test::read_text(kTestShaders / "composite_test_avg.glsl");
+    const std::size_t finish = glsl.find("vec4 rcFinishTestAvg(");
+    REQUIRE(finish != std::string::npos);
+    glsl.resize(finish);
+    dir.write("composite_test_partial.glsl", glsl);
+    CompositingModule partial = kAverageRow;
+    partial.file = "composite_test_partial.glsl";
+    const RaycastModules extended = kModules.with_compositing(partial);
+    const std::size_t row = kModules.compositings().size();
+    CHECK(compositing_row_problems(extended, row, {kRaycast, dir.path()}) ==
+          std::vector<std::string>{"composite_test_partial.glsl does not define vec4 rcFinishTestAvg(...)"});
+    CHECK(compositing_row_problems(extended, row, {kRaycast}) ==
+          std::vector<std::string>{"composite_test_partial.glsl is in none of the shader folders"});
 }
 
 TEST_CASE("raycast: each configuration's preprocessed source holds exactly the modules it uses", "[unit][raycast]") {
     for (const Config& config : configs_with_termination_off()) {
         PreprocessOptions options = shader_options();
-        options.generated = {raycast_config_file(config)};
+        options.generated = {raycast_config_file(kModules, config)};
         const ShaderSource source = preprocess_shader(kRaycast / "raycast.frag", options);
-        const Config effective = effective_config(config);
-        INFO(describe(config));
+        const Config effective = effective_config(kModules, config);
+        INFO(describe(kModules, config));
         for (const ModuleFunction& f : module_functions()) {
             INFO(f.name);
             CHECK((source.text.find(f.name) != std::string::npos) == f.chosen(effective));
@@ -442,10 +568,10 @@ TEST_CASE("raycast: every configuration passes glslangValidator, the front end s
         return;
     }
     test::TempDir dir;
-    std::vector<std::pair<std::string, std::vector<GeneratedFile>>> shaders = {{"raycast_uber.frag", {raycast_uber_file()}},
+    std::vector<std::pair<std::string, std::vector<GeneratedFile>>> shaders = {{"raycast_uber.frag", {raycast_uber_file(kModules)}},
                                                                               {"raycast_dvr_handwritten.frag", {}}};
     for (const Config& config : configs_with_termination_off())
-        shaders.push_back({"raycast.frag", {raycast_config_file(config)}});
+        shaders.push_back({"raycast.frag", {raycast_config_file(kModules, config)}});
     int index = 0;
     for (const auto& [fragment, generated] : shaders) {
         PreprocessOptions options = shader_options();
@@ -463,9 +589,9 @@ TEST_CASE("raycast: every valid configuration compiles and links on a GL 4.1 cor
     auto context = test::headless_context();
     REQUIRE(context->effective_version() == GlVersion{4, 1});
     const std::vector<Config> configs = configs_with_termination_off();
-    CHECK(configs.size() == all_raycast_configs().size() + 14);  // DVR's 14 again, with early termination off
+    CHECK(configs.size() == all_raycast_configs(kModules).size() + 14);  // DVR's 14 again, with early termination off
     for (const Config& config : configs) {
-        INFO(describe(config));
+        INFO(describe(kModules, config));
         ShaderProgram program;
         try {
             program = specialised(*context, config);
@@ -474,23 +600,23 @@ TEST_CASE("raycast: every valid configuration compiles and links on a GL 4.1 cor
         }
         CHECK(program.id() != 0);
         REQUIRE(program.compiled_sources().size() == 2);
-        CHECK(program.compiled_sources()[1].find(describe(effective_config(config))) != std::string::npos);
+        CHECK(program.compiled_sources()[1].find(describe(kModules, effective_config(kModules, config))) != std::string::npos);
     }
-    CHECK_NOTHROW(build_program(*context, "raycast_uber.frag", {raycast_uber_file()}));
+    CHECK_NOTHROW(build_program(*context, "raycast_uber.frag", {raycast_uber_file(kModules)}));
     CHECK_NOTHROW(build_program(*context, "raycast_dvr_handwritten.frag", {}));
 }
 
 TEST_CASE("raycast: every uniform of every program the ray caster builds is set by exactly one module's component", "[raycast][gl]") {
     auto context = test::headless_context();
-    const Texture none;
-    RaySetup rays(none, none, none);
+    Params params;  // what the components declare, as a processor's would hold it
+    const RaySetup rays(params);
     const VoxelGeometry voxels;
-    const GradientLookup gradients(none);
-    const TransferFunctionLookup classification(none);
-    const PhongShading phong;
-    const DvrCompositing dvr;
-    const IsoCompositing iso;
-    const UberModes modes;
+    const GradientLookup gradients;
+    const TransferFunctionLookup classification;
+    const PhongShading phong(params);
+    const DvrCompositing dvr(params);
+    const IsoCompositing iso(params);
+    const UberModes modes(kModules);
     const ShaderComponents modules{&rays, &voxels, &gradients, &classification, &phong, &dvr, &iso};
     const auto check = [&](const ShaderProgram& program, ShaderComponents components) {
         const std::vector<std::string> problems = uniform_ownership_problems(program, components);
@@ -501,15 +627,15 @@ TEST_CASE("raycast: every uniform of every program the ray caster builds is set 
         CHECK_FALSE(program.active_uniforms().empty());
     };
     for (const Config& config : configs_with_termination_off()) {
-        INFO(describe(config));
+        INFO(describe(kModules, config));
         check(specialised(*context, config), modules);
     }
     ShaderComponents uber = modules;
     uber.push_back(&modes);
-    check(build_program(*context, "raycast_uber.frag", {raycast_uber_file()}), uber);
+    check(build_program(*context, "raycast_uber.frag", {raycast_uber_file(kModules)}), uber);
     check(build_program(*context, "raycast_dvr_handwritten.frag", {}), modules);
     // Without the uber-shader's modes, five of its uniforms have no owner: the check sees what is left out.
-    CHECK(uniform_ownership_problems(build_program(*context, "raycast_uber.frag", {raycast_uber_file()}), modules).size() == 5);
+    CHECK(uniform_ownership_problems(build_program(*context, "raycast_uber.frag", {raycast_uber_file(kModules)}), modules).size() == 5);
 }
 
 TEST_CASE("raycast: MIP compiles no gradient and no shading, DVR with central gradients and Phong exactly those", "[raycast][gl]") {
@@ -519,7 +645,7 @@ TEST_CASE("raycast: MIP compiles no gradient and no shading, DVR with central gr
     };
     for (G gradient : {G::Forward, G::Central, G::Precomputed}) {
         const ShaderProgram mip = specialised(*context, make_config(K::Mip, gradient, C::Raw, S::Phong));
-        INFO(name_of(gradient));
+        INFO(name_of(kModules, gradient));
         for (const char* absent : {"rcGradientForward", "rcGradientCentral", "rcGradientPrecomputed", "rcShadePhong",
                                    "uGradientVolume", "uLightPosition", "rcCompositeDvr", "rcClassifyTf"})
             CHECK_FALSE(has(mip, absent));
@@ -649,15 +775,15 @@ TEST_CASE("raycast: entry equal to exit everywhere gives the background and no N
     };
     {
         Scene scene(same, n, make_volume(n, blob));
-        for (const Config& config : all_raycast_configs()) {
-            INFO(describe(config));
+        for (const Config& config : all_raycast_configs(kModules)) {
+            INFO(describe(kModules, config));
             CHECK(only_background(scene.render(specialised(scene.context(), config), s)));
         }
     }
     // Where the proxy does not cover the pixel (alpha 0), the same.
     Scene missed(make_rays(n, n, [](float, float, glm::vec4&, glm::vec4&) {}), n, make_volume(n, blob));
     for (K k : {K::Dvr, K::Mip, K::Isosurface, K::FirstHit}) {
-        INFO(name_of(k));
+        INFO(name_of(kModules, k));
         CHECK(only_background(missed.render(specialised(missed.context(), make_config(k)), s)));
     }
 }
@@ -670,7 +796,7 @@ TEST_CASE("raycast: a constant volume with gradients and Phong gives no NaN, onl
         for (C classification : {C::Raw, C::TransferFunction})
             for (K compositing : {K::Dvr, K::Isosurface}) {
                 const Config config = make_config(compositing, gradient, classification, S::Phong);
-                INFO(describe(config));
+                INFO(describe(kModules, config));
                 Settings s;
                 s.iso = 0.5f;
                 const Rendered r = scene.render(specialised(scene.context(), config), s);
@@ -739,19 +865,27 @@ TEST_CASE("raycast: early termination at 0.95 changes alpha by at most 0.05", "[
     CHECK(max_difference(scene.render(never, early).color, full) <= 1e-6f);
 }
 
-TEST_CASE("raycast: the uber-shader and the hand-written DVR draw what the specialised shader draws", "[raycast][gl]") {
-    const int n = 16;
-    Scene scene(oblique_rays(), n, make_volume(n, blob));
-    const ShaderProgram uber = build_program(scene.context(), "raycast_uber.frag", {raycast_uber_file()});
+namespace {
+
+// The settings the agreement tests draw with: a step off the voxel grid, opacity correction, early termination.
+Settings agreement_settings() {
     Settings s;
     s.step = 1.0f / 37;
     s.reference = 1.0f / 16;
     s.threshold = 0.95f;
     s.iso = 0.45f;
     s.background = {0.1f, 0.1f, 0.2f, 1.0f};
-    for (const Config& config : configs_with_termination_off()) {
-        INFO(describe(config));
-        const Rendered expected = scene.render(specialised(scene.context(), config), s);
+    return s;
+}
+
+// The uber-shader generated from `modules`, given each configuration's mode uniforms, draws what that
+// configuration's specialised shader draws.
+void check_uber_agrees(const Scene& scene, const RaycastModules& modules, const std::vector<Config>& configs) {
+    const ShaderProgram uber = build_program(scene.context(), "raycast_uber.frag", {raycast_uber_file(modules)});
+    const Settings s = agreement_settings();
+    for (const Config& config : configs) {
+        INFO(describe(modules, config));
+        const Rendered expected = scene.render(specialised(scene.context(), config, modules), s);
         REQUIRE(all_finite(expected));
         // Two blank images would agree too: this one must show something over the background.
         float strongest = 0;
@@ -759,13 +893,22 @@ TEST_CASE("raycast: the uber-shader and the hand-written DVR draw what the speci
             strongest = std::max(strongest, std::abs(expected.color.rgba[i] - s.background[static_cast<int>(i % 4)]));
         CHECK(strongest > 0.2f);
         Settings modes = s;
-        modes.modes = raycast_uber_uniforms(config);
+        modes.modes = raycast_uber_uniforms(modules, config);
         const Rendered got = scene.render(uber, modes);
         CHECK(max_difference(got.color, expected.color) <= 1.0f / 255);
         float depth = 0;
         for (std::size_t i = 0; i < got.depth.size(); ++i) depth = std::max(depth, std::abs(got.depth[i] - expected.depth[i]));
         CHECK(depth <= 1e-5f);
     }
+}
+
+}  // namespace
+
+TEST_CASE("raycast: the uber-shader and the hand-written DVR draw what the specialised shader draws", "[raycast][gl]") {
+    const int n = 16;
+    Scene scene(oblique_rays(), n, make_volume(n, blob));
+    check_uber_agrees(scene, kModules, configs_with_termination_off());
+    const Settings s = agreement_settings();
     const ShaderProgram handwritten = build_program(scene.context(), "raycast_dvr_handwritten.frag", {});
     for (const bool early : {true, false}) {
         INFO("early termination " << early);
@@ -780,4 +923,73 @@ TEST_CASE("raycast: the uber-shader and the hand-written DVR draw what the speci
         for (std::size_t i = 3; i < expected.color.rgba.size(); i += 4) brightest = std::max(brightest, expected.color.rgba[i]);
         CHECK(brightest > 0.5f);
     }
+}
+
+TEST_CASE("raycast: a compositing mode added as a GLSL file and a row compiles, and the uber-shader draws what its specialised shader draws", "[raycast][gl]") {
+    // The agreement loop runs over the table it is given: the new mode's configurations are in it, and with no branch
+    // of its own the uber-shader would draw another mode's picture here.
+    const int n = 16;
+    Scene scene(oblique_rays(), n, make_volume(n, blob));
+    const RaycastModules extended = kModules.with_compositing(kAverageRow);
+    const K avg = parse_compositing(extended, "avg");
+    std::vector<Config> configs;
+    for (const Config& config : configs_with_termination_off(extended))
+        if (config.compositing == avg) configs.push_back(config);
+    CHECK(configs.size() == 14);
+    check_uber_agrees(scene, extended, configs);
+}
+
+TEST_CASE("raycast: a component declares its parameters with the uniforms they feed, and sets them from their values", "[raycast][gl]") {
+    auto context = test::headless_context();
+    Params params;  // as the ray caster's processor holds them: the lab adopts them, and --set, case and network files set them
+    RaySetup rays(params);
+    PhongShading phong(params);
+    DvrCompositing dvr(params);
+    IsoCompositing iso(params);
+    // Each parameter declared once, by its component, and its spec names the uniform it feeds (`list` prints it).
+    for (const auto& [name, uniform] : std::vector<std::pair<std::string, std::string>>{
+             {"ambient", "uAmbient"}, {"diffuse", "uDiffuse"}, {"specular", "uSpecular"}, {"shininess", "uShininess"},
+             {"early_ray_threshold", "uEarlyRayThreshold"}, {"iso_value", "uIsoValue"}}) {
+        INFO(name);
+        CHECK(params.spec(name).uniform == uniform);
+        const std::vector<std::string> owned = phong.uniforms(), dvr_owned = dvr.uniforms(), iso_owned = iso.uniforms();
+        CHECK(std::count(owned.begin(), owned.end(), uniform) + std::count(dvr_owned.begin(), dvr_owned.end(), uniform) +
+                  std::count(iso_owned.begin(), iso_owned.end(), uniform) == 1);
+    }
+    // One range, one parser: the component's declaration refuses what it always refused.
+    CHECK_THROWS_WITH(params.set("ambient", "2"), Catch::Contains("ambient"));
+    CHECK_THROWS_WITH(params.set("samples_per_voxel", "0.01"), Catch::Contains("samples_per_voxel"));
+    params.set("ambient", "0.375");
+    params.set("shininess", "40");
+    params.set("iso_value", "0.625");
+    params.set("early_ray_threshold", "0.5");
+    params.set("samples_per_voxel", "2");
+
+    const ShaderProgram uber = build_program(*context, "raycast_uber.frag", {raycast_uber_file(kModules)});
+    uber.use();
+    const auto uniform = [&](const std::string& name) {
+        float value = -1;
+        glGetUniformfv(uber.id(), uber.location(name), &value);
+        return value;
+    };
+    // A texture the drawing code has not pointed the component at is one line naming it, not a draw from unit 0.
+    CHECK_THROWS_WITH(rays.apply(uber), "ray setup (the skeleton): uEntryPoints has no texture to bind");
+    const float texel[4] = {0, 0, 0, 1};
+    const Texture image = Texture::create_2d(1, 1, TexelFormat::RGBA32F, texel);
+    const Texture volume = Texture::create_3d(1, 1, 1, TexelFormat::R32F, texel);
+    rays.entry_points = rays.exit_points = &image;
+    rays.volume = &volume;
+    rays.largest_side = 16;
+    dvr.voxel_step = 1.0f / 16;
+    apply_components(uber, {&rays, &phong, &dvr, &iso});
+    check_gl_error("setting the components' uniforms");
+    CHECK(uniform("uAmbient") == 0.375f);
+    CHECK(uniform("uShininess") == 40.0f);
+    CHECK(uniform("uIsoValue") == 0.625f);
+    CHECK(uniform("uEarlyRayThreshold") == 0.5f);
+    CHECK(uniform("uStepSize") == static_cast<float>(1.0 / (2.0 * 16)));
+    CHECK(uniform("uReferenceStepSize") == 1.0f / 16);
+    params.set("opacity_correction", "off");  // a reference step of 0: no correction
+    dvr.apply(uber);
+    CHECK(uniform("uReferenceStepSize") == 0.0f);
 }

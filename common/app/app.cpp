@@ -41,9 +41,11 @@ void LabKit::require(const GlFeature& feature, const std::string& asked_by) cons
         throw UnsupportedError(asked_by + " " + missing_feature_message(feature, profile_, gl_version()));
 }
 
-const ShaderLibrary::Entry& LabKit::program(const std::string& name, const std::vector<std::string>& files) {
+const ShaderLibrary::Entry& LabKit::program(const std::string& name, const std::vector<std::string>& files,
+                                            const std::vector<std::string>& captured) {
     ProgramSpec spec;
     spec.name = name;
+    spec.captured = captured;
     for (const auto& f : files) spec.files.push_back(assets_.shader_file(f));
     return shaders_.add(std::move(spec), param_defines(params_));
 }
@@ -178,7 +180,9 @@ static void print_list(Session& s) {
 }
 
 int run_lab(std::unique_ptr<Lab> lab, const char* lab_dir, const char* variant, int argc, const char* const* argv) {
-    Session session;
+    // On the heap: web mode hands it to the page, which draws with it after main() has returned.
+    auto owned = std::make_unique<Session>();
+    Session& session = *owned;
     std::string stage = "command line";
     try {
         session.lab = std::move(lab);
@@ -221,6 +225,7 @@ int run_lab(std::unique_ptr<Lab> lab, const char* lab_dir, const char* variant, 
         case RunMode::Sweep: return run_sweep(session);
         case RunMode::Animate: return run_animate(session);
         case RunMode::Compare: return run_compare(session);
+        case RunMode::Web: return run_web(owned);
         case RunMode::List: break;
         }
         return kExitOk;

@@ -6,6 +6,7 @@
 #include "common/app/assets.h"
 #include "common/params/case_file.h"
 #include "common/app/depth_readback.h"
+#include "common/app/exit_status.h"
 #include "common/app/inspect_stage.h"
 #include "common/params/params.h"
 #include "common/context/context.h"
@@ -32,7 +33,7 @@ struct LabInfo {
     GlVersion needs{4, 1};        // labs other than 05 run on macOS's 4.1 core
     std::string needs_why = "the kit's baseline";
     // Its named cases, relative to the kit's root; empty: the public case file (KitLayout::case_file).
-    std::string case_file;
+    std::string case_file{};
     // The lowest OpenGL ES version it runs on with --profile es: 3.0 is WebGL 2's feature set.
     GlVersion needs_es{3, 0};
     std::string needs_es_why = "WebGL 2's feature set";
@@ -120,8 +121,10 @@ public:
     Context& context() { return context_; }
 
     // A program from the lab's shader files (e.g. {"gooch.vert", "gooch.frag"}), built with the
-    // parameters' #defines and kept up to date by the framework.
-    const ShaderLibrary::Entry& program(const std::string& name, const std::vector<std::string>& files);
+    // parameters' #defines and kept up to date by the framework. `captured`: vertex outputs written to buffers by
+    // transform feedback (ProgramSpec::captured).
+    const ShaderLibrary::Entry& program(const std::string& name, const std::vector<std::string>& files,
+                                        const std::vector<std::string>& captured = {});
     // Binds the program and sets every runtime parameter as its uniform; set the rest yourself.
     const ShaderProgram& use(const ShaderLibrary::Entry& entry) const;
     // The #defines the parameters give every program (common/shader/param_uniforms.h).
@@ -150,9 +153,6 @@ private:
 // frame, and lab 06 lets it into the volume.
 void add_orbit_camera(Params& params, float yaw, float pitch, float distance, float min_distance = 1.2f);
 OrbitCamera orbit_camera(const Params& params);
-
-// Exit statuses shared by every lab binary (the grader tells failure classes apart by them).
-enum ExitStatus { kExitOk = 0, kExitError = 1, kExitUsage = 2, kExitUnsupported = 3, kExitNonFinite = 4 };
 
 int run_lab(std::unique_ptr<Lab> lab, const char* lab_dir, const char* variant, int argc, const char* const* argv);
 

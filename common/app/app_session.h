@@ -84,5 +84,8 @@ int run_animate(Session& session);
 // Renders this binary's image and the reference's (common/app/reference_image.h) and writes the two with their
 // difference as one PNG.
 int run_compare(Session& session);
+// The browser edition's page (common/app/app_web.cpp): opens WebGL 2 on the canvas, sets the lab up and hands the
+// session to the page, which draws, sets parameters and reloads shaders through it. Native builds refuse it.
+int run_web(std::unique_ptr<Session>& session);  // takes the session only once the page has it
 
 }  // namespace gsv

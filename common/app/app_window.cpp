@@ -1,6 +1,7 @@
 // Window mode: the lab live, every parameter on keys (and sliders with ImGui), frame time on screen,
 // hot reload of shader files, screenshots, and the command line that reproduces what is on screen.
 #include "common/app/app_session.h"
+#include "common/app/live_controls.h"
 #include "common/shader/param_uniforms.h"
 #include "common/app/window_reference.h"
 #include "common/core/error.h"
@@ -48,27 +49,6 @@ struct WindowInput {
     bool dragging = false;
     double last_x = 0, last_y = 0;
 };
-
-bool has_param(const Params& params, const std::string& name) {
-    for (const auto& s : params.specs())
-        if (s.name == name) return true;
-    return false;
-}
-
-void adjust(Params& params, const std::string& name, double delta) {
-    const ParamSpec& s = params.spec(name);
-    params.set(name, std::to_string(std::clamp(params.get_float(name) + delta, s.min, s.max)));
-}
-
-// Wall time, not frames, drives playback: one sweep of the range takes 8 s on llvmpipe and on a GPU alike.
-void play(Params& params, double seconds) {
-    const ParamSpec* axis = params.animation_axis();
-    if (!axis || !(axis->max > axis->min)) return;
-    const double span = axis->max - axis->min;
-    double v = params.get_float(axis->name) + span / 8 * seconds;
-    if (v > axis->max) v = axis->min + std::fmod(v - axis->min, span);
-    params.set(axis->name, format_number(std::clamp(v, axis->min, axis->max), 9));
-}
 
 void toggle_play(WindowInput& in) {
     const ParamSpec* axis = in.session->params.animation_axis();
@@ -186,12 +166,7 @@ void on_mouse_button(GLFWwindow* window, int button, int action, int) {
 void on_cursor(GLFWwindow* window, double x, double y) {
     auto* in = static_cast<WindowInput*>(glfwGetWindowUserPointer(window));
     if (!in->dragging) return;
-    Params& params = in->session->params;
-    if (has_param(params, "camera_yaw")) {
-        adjust(params, "camera_yaw", -0.4 * (x - in->last_x));
-        adjust(params, "camera_pitch", 0.4 * (y - in->last_y));
-        in->params_changed = true;
-    }
+    if (orbit_drag(in->session->params, x - in->last_x, y - in->last_y)) in->params_changed = true;
     in->last_x = x;
     in->last_y = y;
 }
@@ -199,11 +174,7 @@ void on_cursor(GLFWwindow* window, double x, double y) {
 void on_scroll(GLFWwindow* window, double, double dy) {
     auto* in = static_cast<WindowInput*>(glfwGetWindowUserPointer(window));
     if (in->panel_shown && in->panel && in->panel->wants_mouse()) return;
-    Params& params = in->session->params;
-    if (has_param(params, "camera_distance")) {
-        adjust(params, "camera_distance", -0.2 * dy);
-        in->params_changed = true;
-    }
+    if (orbit_zoom(in->session->params, dy)) in->params_changed = true;
 }
 
 // Scripted key presses (--press KEY@FRAME) go through the same handler as the keyboard's.
@@ -299,7 +270,7 @@ int run_window(Session& s) {
         press_scripted_keys(window, scripted_keys, frame_index + 1);
         const double now = now_seconds();
         if (input.playing) {
-            play(s.params, now - last_frame);
+            play_animation(s.params, now - last_frame);
             input.params_changed = true;
         }
         last_frame = now;

@@ -40,6 +40,7 @@ CliOptions parse_cli(int argc, const char* const* argv) {
         else if (mode == "animate") o.mode = RunMode::Animate;
         else if (mode == "compare") o.mode = RunMode::Compare;
         else if (mode == "list") o.mode = RunMode::List;
+        else if (mode == "web") o.mode = RunMode::Web;
         else throw Error("unknown mode '" + mode + "' (expected window, render, sweep, animate, compare or list; see --help)");
     }
     auto value = [&](const std::string& option) -> std::string {

@@ -12,7 +12,8 @@ namespace gsv {
 // target of 8192x8192 is already 1 GiB.
 constexpr int kMaxImageSide = 8192;
 
-enum class RunMode { Window, Render, Sweep, Animate, Compare, List };
+// Web: the browser edition's page (common/app/app_web.cpp), which the native binaries refuse.
+enum class RunMode { Window, Render, Sweep, Animate, Compare, List, Web };
 
 struct CliOptions {
     RunMode mode = RunMode::Window;

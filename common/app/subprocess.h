@@ -1,6 +1,6 @@
 #pragma once
 // Running another program and waiting for it: the reference solution a `compare` renders with. The grader has its
-// own sandboxed runner (grader/process.h); this one is for the kit's own binaries, trusted, with no limits.
+// own sandboxed runner (grader/src/run/process.h); this one is for the kit's own binaries, trusted, with no limits.
 #include <filesystem>
 #include <string>
 #include <vector>

@@ -17,9 +17,17 @@ std::unique_ptr<Context> make_egl_context(const ContextOptions& options);
 #if GSV_HAVE_OSMESA
 std::unique_ptr<Context> make_osmesa_context(const ContextOptions& options);
 #endif
+#ifdef __EMSCRIPTEN__
+std::unique_ptr<Context> make_web_context(const ContextOptions& options);
+#endif
 
 std::unique_ptr<Context> create_context(const ContextOptions& options) {
     switch (options.backend) {
+#ifdef __EMSCRIPTEN__
+    case Backend::Web: return make_web_context(options);
+    default: throw UnsupportedError(std::string("the browser edition draws on the page's canvas (backend 'web'), not ") +
+                                    backend_name(options.backend));
+#else
     case Backend::Window: return make_glfw_context(options);
     case Backend::Egl:
 #if GSV_HAVE_EGL
@@ -33,11 +41,16 @@ std::unique_ptr<Context> create_context(const ContextOptions& options) {
 #else
         throw UnsupportedError("backend 'osmesa' is not compiled into this build (libOSMesa was not found)");
 #endif
+    case Backend::Web: throw UnsupportedError("backend 'web' is the browser edition's (scripts/kit web builds its pages)");
+#endif
     }
     throw Error("unknown backend");
 }
 
 std::vector<Backend> compiled_backends() {
+#ifdef __EMSCRIPTEN__
+    return {Backend::Web};
+#else
     std::vector<Backend> backends{Backend::Window};
 #if GSV_HAVE_EGL
     backends.push_back(Backend::Egl);
@@ -46,12 +59,14 @@ std::vector<Backend> compiled_backends() {
     backends.push_back(Backend::OSMesa);
 #endif
     return backends;
+#endif
 }
 
 namespace {
 // "glfw" is an alias of "window": read, never printed.
 constexpr EnumName<Backend> kBackendNames[] = {
-    {Backend::Window, "window"}, {Backend::Egl, "egl"}, {Backend::OSMesa, "osmesa"}, {Backend::Window, "glfw"}};
+    {Backend::Window, "window"}, {Backend::Egl, "egl"}, {Backend::OSMesa, "osmesa"}, {Backend::Web, "web"},
+    {Backend::Window, "glfw"}};
 constexpr EnumName<Profile> kProfileNames[] = {{Profile::Core, "core"},
                                                {Profile::Compat, "compat"},
                                                {Profile::Es, "es"},

@@ -1,6 +1,7 @@
 #pragma once
-// One interface over the three ways the kit gets an OpenGL context: a GLFW window (students, lectures),
-// EGL surfaceless (the headless default: CI and grading) and OSMesa (a fallback, compiled in where found).
+// One interface over the ways the kit gets an OpenGL context: a GLFW window (students, lectures), EGL surfaceless
+// (the headless default: CI and grading), OSMesa (a fallback, compiled in where found) and, in the browser edition,
+// WebGL 2 on the page's canvas.
 #include "common/gl/gl_version.h"
 
 #include <memory>
@@ -11,7 +12,7 @@ struct GLFWwindow;
 
 namespace gsv {
 
-enum class Backend { Window, Egl, OSMesa };
+enum class Backend { Window, Egl, OSMesa, Web };
 
 struct ContextOptions {
     Backend backend = Backend::Egl;
@@ -60,7 +61,7 @@ std::unique_ptr<Context> create_context(const ContextOptions& options);
 
 std::vector<Backend> compiled_backends();
 const char* backend_name(Backend backend);
-Backend parse_backend(const std::string& text);   // "window" | "egl" | "osmesa"; throws naming the value
+Backend parse_backend(const std::string& text);   // "window" | "egl" | "osmesa" | "web"; throws naming the value
 Profile parse_profile(const std::string& text);   // "core" | "compat" | "es"
 // "4.1", "4.5": 3.3..4.6 for the desktop profiles; "3.0".."3.2" for ES. Throws naming the value and the range.
 GlVersion parse_gl_version(const std::string& text, Profile profile = Profile::Core);

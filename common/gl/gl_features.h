@@ -18,6 +18,8 @@ struct GlFeature {
 };
 
 namespace gl_feature {
+// Below it lab 05 steps its particles by transform feedback instead (WebGL 2 is OpenGL ES 3.0): its C++ picks the
+// program (LabKit::allows), so no shader needs a define for it.
 inline constexpr GlFeature kCompute{"compute shaders and storage buffers", {4, 3}, {3, 1}};
 inline constexpr GlFeature kBufferTextures{"buffer textures (samplerBuffer)", {3, 1}, {3, 2}, "GSV_NO_BUFFER_TEXTURES"};
 inline constexpr GlFeature kFragmentPrimitiveId{"gl_PrimitiveID in a fragment shader", {3, 2}, {3, 2},

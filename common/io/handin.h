@@ -7,7 +7,7 @@
 // The same socket times frames: once the lab says it is warm, for each timed frame the grader sends a challenge
 // (settings no one could know before, e.g. a camera angle drawn at random), the lab draws the frame with them and
 // answers with the frame's pixels. The grader times request to answer and compares each answer with the reference's frame drawn with the
-// same settings, so a frame is only fast if its work was done fast (grader/run/lab_run.cpp).
+// same settings, so a frame is only fast if its work was done fast (grader/src/run/lab_run.cpp).
 //
 // A message: a 4-byte tag, a 4-byte little-endian payload size, the payload. Integers are little-endian.
 #include <array>

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <sstream>
+#include <type_traits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -65,7 +66,12 @@ private:
     static std::string key_text(const Key& key) {
         std::ostringstream out;
         out.precision(17);
-        out << key;
+        if constexpr (std::is_integral_v<Key> && sizeof(Key) > sizeof(std::uint64_t)) {
+            // libc++ (Emscripten's) counts file times in __int128, which a stream cannot print: as its two halves.
+            out << static_cast<std::uint64_t>(key >> 64) << ':' << static_cast<std::uint64_t>(key);
+        } else {
+            out << key;
+        }
         return out.str();
     }
     bool read_changed(const Params& params) const {

@@ -8,6 +8,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <limits>
 #include <string>
@@ -206,10 +207,19 @@ private:
             (std::isdigit(static_cast<unsigned char>(digits[1])) || digits[1] == '.'))
             digits.remove_prefix(1);
         float value = 0.0f;
+#ifdef __EMSCRIPTEN__
+        // Emscripten 3.1's libc++ has no floating-point from_chars. Its C library runs in the C locale, so strtof
+        // reads what from_chars would, once the hexadecimal form from_chars refuses is refused here too.
+        const std::string text(digits);
+        char* stop = nullptr;
+        value = text.find_first_of("xX") == std::string::npos ? std::strtof(text.c_str(), &stop) : 0.0f;
+        const bool whole = stop == text.c_str() + text.size() && !text.empty() && !std::isspace(static_cast<unsigned char>(text[0]));
+#else
         const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+        const bool whole = error == std::errc() && end == digits.data() + digits.size();
+#endif
         // Non-finite values (from_chars takes "inf" and "nan") would poison bounds and normals later.
-        if (error != std::errc() || end != digits.data() + digits.size() || !std::isfinite(value))
-            fail("malformed number '" + std::string(token) + "'");
+        if (!whole || !std::isfinite(value)) fail("malformed number '" + std::string(token) + "'");
         return value;
     }
 

@@ -1,17 +1,25 @@
 #include "common/shader/shader_component.h"
 
+#include "common/core/error.h"
+
 #include <map>
 
 namespace gsv {
 
 std::vector<std::string> BoundShaderComponent::uniforms() const {
     std::vector<std::string> names;
-    for (const Binding& binding : bindings()) names.push_back(binding.uniform);
+    for (const Binding& binding : bindings_) names.push_back(binding.uniform);
     return names;
 }
 
 void BoundShaderComponent::apply(const ShaderProgram& program) const {
-    for (const Binding& binding : bindings()) binding.set(program, binding.uniform);
+    for (const Binding& binding : bindings_) binding.set(program, binding.uniform);
+}
+
+void BoundShaderComponent::add(std::string uniform, Setter set) { bindings_.push_back({std::move(uniform), std::move(set)}); }
+
+void BoundShaderComponent::throw_no_texture(const std::string& uniform) const {
+    throw Error(name() + ": " + uniform + " has no texture to bind");
 }
 
 void apply_components(const ShaderProgram& program, const ShaderComponents& components) {

@@ -72,6 +72,11 @@ ShaderProgram ShaderProgram::build(const ProgramSpec& spec, const PreprocessOpti
         glBindAttribLocation(program.name_.get(), kNormalSlot, "aNormal");
         glBindAttribLocation(program.name_.get(), kTexCoord0Slot, "aTexCoord0");
     }
+    if (!spec.captured.empty()) {
+        std::vector<const char*> names;
+        for (const auto& name : spec.captured) names.push_back(name.c_str());
+        glTransformFeedbackVaryings(program.name_.get(), static_cast<GLsizei>(names.size()), names.data(), GL_SEPARATE_ATTRIBS);
+    }
     glLinkProgram(program.name_.get());
     GLint linked = GL_FALSE;
     glGetProgramiv(program.name_.get(), GL_LINK_STATUS, &linked);
@@ -134,6 +139,11 @@ std::vector<ActiveUniform> active_uniforms_of(GLuint program) {
 void ShaderProgram::assign_texture_units(const std::string& program_name) {
     GLint available = 0;
     glGetIntegerv(GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS, &available);
+    // glProgramUniform is OpenGL 4.1 and ES 3.1: ES 3.0 (WebGL 2) sets a uniform on the program in use, so this one is
+    // used for the moment and the one before it put back.
+    GLint previous = 0;
+    glGetIntegerv(GL_CURRENT_PROGRAM, &previous);
+    glUseProgram(name_.get());
     int next = 0;
     for (const ActiveUniform& u : active_uniforms_of(name_.get())) {
         if (!is_sampler(u.type)) continue;
@@ -148,10 +158,13 @@ void ShaderProgram::assign_texture_units(const std::string& program_name) {
             texture_units_[element] = next;
             if (k == 0 && element != base) texture_units_[base] = next;
             // Element locations are looked up one by one: only explicit locations are promised to be consecutive.
-            glProgramUniform1i(name_.get(), glGetUniformLocation(name_.get(), element.c_str()), next);
+            glUniform1i(glGetUniformLocation(name_.get(), element.c_str()), next);
             ++next;
         }
     }
+    // The one before may have been deleted while in use (a rebuild replaces it): then it went when this one took its
+    // place, and nothing is left in use.
+    glUseProgram(previous && glIsProgram(static_cast<GLuint>(previous)) ? static_cast<GLuint>(previous) : 0);
 }
 
 int ShaderProgram::texture_unit(const std::string& sampler) const {

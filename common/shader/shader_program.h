@@ -24,7 +24,10 @@ struct ProgramSpec {
     std::string name;                              // for messages: "gooch"
     std::vector<std::filesystem::path> files;      // one per stage; the stage comes from the extension
     std::vector<ShaderDefine> defines;
-    std::vector<GeneratedFile> generated;          // in-memory include files, after the options' own
+    std::vector<GeneratedFile> generated{};        // in-memory include files, after the options' own
+    // Vertex outputs written to buffers by transform feedback, one buffer each (binding i: captured[i]): a step of a
+    // simulation where there are no compute shaders (OpenGL ES 3.0, WebGL 2).
+    std::vector<std::string> captured{};
 };
 
 class ShaderProgram {

@@ -35,8 +35,9 @@ public:
     gsv::LabInfo info() const override {
         gsv::LabInfo info{"lab05", "SSBOs and compute-shader particle advection", {4, 3},
                           "compute shaders and storage buffers"};
-        info.needs_es = {3, 1};
-        info.needs_es_why = "compute shaders and storage buffers";
+        // Below ES 3.1 (WebGL 2 is ES 3.0) transform feedback steps the particles instead (advect_captured.vert).
+        info.needs_es = {3, 0};
+        info.needs_es_why = "transform feedback where there are no compute shaders";
         return info;
     }
 
@@ -64,9 +65,13 @@ public:
     }
 
     void setup(gsv::LabKit& kit) override {
-        advect_ = &kit.program("advect", {"advect.comp"});
+        compute_ = kit.allows(gsv::gl_feature::kCompute);
+        advect_ = compute_ ? &kit.program("advect", {"advect.comp"})
+                           : &kit.program("advect", {"advect_captured.vert", "gsv/captured.frag"},
+                                          {"tfPosition", "tfVelocity", "tfColor"});
         draw_ = &kit.program("particles", {"particles.vert", "particles.frag"});
-        limits_ = gsv::compute_limits();
+        // Transform feedback draws every particle in one call: no work groups, so no limits on them.
+        if (compute_) limits_ = gsv::compute_limits();
         // The point size comes from gl_PointSize (particles.vert): always so on ES, where this enum is unknown.
         if (kit.profile() != gsv::Profile::Es) glEnable(GL_PROGRAM_POINT_SIZE);
     }
@@ -76,6 +81,7 @@ public:
         const auto& p = kit.params();
         if (p.get_choice("field") == "gravity" && p.get_choice("source") == "texture")
             throw gsv::Error("source=texture samples a velocity field; field=gravity has none (use source=analytic)");
+        if (!compute_) return;
         const auto local = static_cast<std::int64_t>(p.get_int("local_size"));
         if (local > limits_.max_group_size[0] || local > limits_.max_invocations)
             throw gsv::UnsupportedError("local_size=" + std::to_string(local) + " is over this GPU's work-group size limit of " +
@@ -100,7 +106,7 @@ public:
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         glEnable(GL_DEPTH_TEST);
         // The vertex stage reads what the last step wrote, through the vertex-array path.
-        glMemoryBarrier(GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
+        if (compute_) glMemoryBarrier(GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
         const gsv::ShaderProgram& program = kit.use(*draw_);
         kit.set_transforms(program, t);
         lab05::draw_particles(buffers_);
@@ -147,33 +153,36 @@ private:
 
     void update(gsv::LabKit& kit, const gsv::Frame& frame) {
         const auto& p = kit.params();
-        const gsv::ParticleScene scene = gsv::particle_scene_from_name(p.get_choice("field"));
+        // The scene is read inside each build, so that a change of field (the fountain starts its particles
+        // elsewhere) remakes what depends on it.
+        auto scene = [&] { return gsv::particle_scene_from_name(p.get_choice("field")); };
         particles_.run_if_changed(p, [&] {
             const auto count = static_cast<std::size_t>(p.get_int("particles"));
             const std::size_t capacity =
                 lab05::capacity_for(count, static_cast<std::uint32_t>(p.get_int("local_size")), limits_);
             initial_ = gsv::pad_particles(
-                gsv::make_particles(scene, count, static_cast<std::uint64_t>(p.get_int("seed")), p.get_float("gravity")),
+                gsv::make_particles(scene(), count, static_cast<std::uint64_t>(p.get_int("seed")), p.get_float("gravity")),
                 capacity);
-            buffers_ = lab05::allocate_particle_buffers(count, capacity);
+            buffers_ = lab05::allocate_particle_buffers(count, capacity, compute_);
         });
         velocity_texture_.update(p, [&] {
             if (p.get_choice("source") != "texture") return gsv::Texture();
-            const gsv::VelocityGrid samples = gsv::VelocityGrid::sample(scene, p.get_int("grid"));
+            const gsv::VelocityGrid samples = gsv::VelocityGrid::sample(scene(), p.get_int("grid"));
             const gsv::Sampling sampling{GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE};
             return gsv::Texture::create_3d(samples.n, samples.n, samples.n, gsv::TexelFormat::RGB32F, samples.texels.data(),
                                            sampling);
         });
 
-        // The state is what the first step made of the particles: remade when they, the velocity texture, or
-        // what the compute shader was compiled with or reads changed, but not for the time shown. Headless, a
+        // The state is what the first step made of the particles: remade when they, the velocity texture, the
+        // time step, or what the compute shader was compiled with or reads changed, but not for the time shown
+        // (a picture is round(time / h) steps of h from the start, never steps of two sizes). Headless, a
         // frame that asks for the state already shown recomputes it from the start, so its time is the cost of
         // the whole run; a later time (animate) carries on from the last frame, which gives the same numbers as
         // starting over.
         const long target = lab05::steps_for(p.get_float("time"), p.get_float("time_step"));
         if (target < done_ || (!frame.interactive && target == done_)) state_.invalidate();
         if (state_.run_if_changed(p, [&] { stepper(kit).restart(initial_); }, particles_.version(),
-                                  velocity_texture_.version()))
+                                  velocity_texture_.version(), p.get_float("time_step")))
             done_ = 0;
         long steps = target - done_;
         if (frame.interactive) steps = std::min(steps, kMaxStepsPerFrame);
@@ -190,6 +199,7 @@ private:
 
     const gsv::ShaderLibrary::Entry* advect_ = nullptr;
     const gsv::ShaderLibrary::Entry* draw_ = nullptr;
+    bool compute_ = true;  // false: transform feedback steps the particles (OpenGL ES 3.0, WebGL 2)
     gsv::ComputeLimits limits_;
     gsv::ParticleSet initial_;
     lab05::ParticleBuffers buffers_;

@@ -15,16 +15,25 @@ namespace lab05 {
 enum Binding : GLuint { kPositions = 0, kVelocities = 1, kOrigins = 2, kColors = 3 };
 // The colours' vertex attribute (particles.vert); positions use the kit's aVertex slot.
 inline constexpr GLuint kColorSlot = 3;
+// Where there are no compute shaders: the attribute slots of the transform-feedback step (advect_captured.vert): the
+// position in the kit's aVertex slot and the colour in aColor's, as when the particles are drawn; the rest clear of
+// the kit's aNormal and aTexCoord0.
+enum StepSlot : GLuint { kStepVelocity = 4, kStepStartPosition = 5, kStepStartVelocity = 6 };
 
 struct ParticleBuffers {
     gsv::Buffer positions, velocities, origins, colors;
     gsv::VertexArrayName points;  // positions as aVertex, colours as aColor
     std::size_t count = 0;        // particles drawn and moved
     std::size_t capacity = 0;     // slots: the rest hold sentinels that nothing may touch
+    // Transform feedback only (no compute shaders): a step reads the buffers above as vertex attributes and writes
+    // these, which are then copied back (a buffer cannot be read and captured into at once).
+    gsv::Buffer next_positions, next_velocities, next_colors;
+    gsv::VertexArrayName step_inputs;
 };
 
-// Buffers for `capacity` particles, allocated with no data: the GPU owns them from here on.
-ParticleBuffers allocate_particle_buffers(std::size_t count, std::size_t capacity);
+// Buffers for `capacity` particles, allocated with no data: the GPU owns them from here on. `compute`: storage buffers
+// for the compute step; otherwise vertex buffers and the second set the transform-feedback step writes.
+ParticleBuffers allocate_particle_buffers(std::size_t count, std::size_t capacity, bool compute);
 // The starting state, written the seed's way (map, invalidate, write, unmap); `set` holds capacity slots.
 void write_particles(ParticleBuffers& buffers, const gsv::ParticleSet& set);
 void bind_particle_buffers(const ParticleBuffers& buffers);

@@ -16,7 +16,7 @@ gsv::SweepMetrics compare_shaders(RayTraversal& raycaster) {
     dvr.shading = gsv::RaycastConfig::Shading::Phong;
     dvr.early_termination = raycaster.config().early_termination;
     std::vector<std::string> shaders{"specialised", "uber"};
-    if (gsv::effective_config(raycaster.config()) == dvr) shaders.push_back("handwritten");
+    if (gsv::effective_config(raycast_modules(), raycaster.config()) == dvr) shaders.push_back("handwritten");
     std::vector<gsv::TimedWork> work;
     for (const auto& shader : shaders)
         work.push_back({[&raycaster, shader] { raycaster.params().set("shader", shader); }, [&raycaster] { raycaster.process(); }});

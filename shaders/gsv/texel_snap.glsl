@@ -1,4 +1,4 @@
-// The "8-bit filter weights" stand-in of the margin table (scripts/kit margins, grader/margins.h); off unless the
+// The "8-bit filter weights" stand-in of the margin table (scripts/kit margins, grader/src/margins/margins.h); off unless the
 // environment sets GSV_TEXEL_SNAP, which the lab framework passes on as a define of the same name (common/app/app.cpp).
 // GPUs filter textures with fixed-point weights, typically 8 bits of sub-texel position, where llvmpipe and softpipe
 // filter in float. With GSV_TEXEL_SNAP = N every texture() and textureLod() lookup of a 2D, 3D or array texture has

@@ -3,6 +3,7 @@
 // texture).
 #include "particles.glsl"
 #include "integrate.glsl"
+#include "domain.glsl"
 #include "speed_color.glsl"
 
 layout(local_size_x = LOCAL_SIZE) in;
@@ -23,15 +24,7 @@ void main() {
     vec3 p = positions[index].xyz;
     vec3 v = velocities[index].xyz;
     advance(p, v, uTimeStep);
-    // TODO(L05-T3): a particle that left the domain [-1,1]^3 (any coordinate beyond 1 in size; on the
-    // boundary is still inside) goes back to where it started, with the velocity it started with.
-//@solution L05-T3
-    if (any(greaterThan(abs(p), vec3(1.0)))) {
-        p = origins[index].position.xyz;
-        v = origins[index].velocity.xyz;
-    }
-//@starter
-//@end
+    returnIfOutside(p, v, origins[index].position.xyz, origins[index].velocity.xyz);
     positions[index].xyz = p;
     velocities[index].xyz = v;
 #ifdef EFFECT_COLOR_BY_SPEED

@@ -4,20 +4,50 @@
 #include "common/gl/gl.h"
 
 #include <algorithm>
+#include <cstddef>
 
 namespace lab05 {
 
-ParticleBuffers allocate_particle_buffers(std::size_t count, std::size_t capacity) {
+namespace {
+
+// The transform-feedback step's inputs: this step's state, and each particle's origin (two vec4s a particle).
+gsv::VertexArrayName step_inputs(const ParticleBuffers& b) {
+    GLuint vao = 0;
+    glGenVertexArrays(1, &vao);
+    glBindVertexArray(vao);
+    const auto attribute = [](GLuint slot, const gsv::Buffer& buffer, GLsizei stride, std::size_t offset) {
+        glBindBuffer(GL_ARRAY_BUFFER, buffer.id());
+        glEnableVertexAttribArray(slot);
+        glVertexAttribPointer(slot, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(offset));
+    };
+    attribute(gsv::kVertexSlot, b.positions, sizeof(glm::vec4), 0);
+    attribute(kStepVelocity, b.velocities, sizeof(glm::vec4), 0);
+    attribute(kStepStartPosition, b.origins, sizeof(gsv::ParticleOrigin), offsetof(gsv::ParticleOrigin, position));
+    attribute(kStepStartVelocity, b.origins, sizeof(gsv::ParticleOrigin), offsetof(gsv::ParticleOrigin, velocity));
+    attribute(kColorSlot, b.colors, sizeof(glm::vec4), 0);
+    glBindVertexArray(0);
+    return gsv::VertexArrayName(vao);
+}
+
+}  // namespace
+
+ParticleBuffers allocate_particle_buffers(std::size_t count, std::size_t capacity, bool compute) {
     ParticleBuffers b;
     b.count = count;
     b.capacity = capacity;
     const std::size_t vec4s = capacity * sizeof(glm::vec4);
+    const GLenum target = compute ? GL_SHADER_STORAGE_BUFFER : GL_ARRAY_BUFFER;
     // GL_DYNAMIC_DRAW: written by the GPU every step, read by the GPU to draw.
-    b.positions = gsv::Buffer::create(GL_SHADER_STORAGE_BUFFER, vec4s, nullptr, GL_DYNAMIC_DRAW);
-    b.velocities = gsv::Buffer::create(GL_SHADER_STORAGE_BUFFER, vec4s, nullptr, GL_DYNAMIC_DRAW);
-    b.origins = gsv::Buffer::create(GL_SHADER_STORAGE_BUFFER, capacity * sizeof(gsv::ParticleOrigin), nullptr,
-                                    GL_STATIC_DRAW);
-    b.colors = gsv::Buffer::create(GL_SHADER_STORAGE_BUFFER, vec4s, nullptr, GL_DYNAMIC_DRAW);
+    b.positions = gsv::Buffer::create(target, vec4s, nullptr, GL_DYNAMIC_DRAW);
+    b.velocities = gsv::Buffer::create(target, vec4s, nullptr, GL_DYNAMIC_DRAW);
+    b.origins = gsv::Buffer::create(target, capacity * sizeof(gsv::ParticleOrigin), nullptr, GL_STATIC_DRAW);
+    b.colors = gsv::Buffer::create(target, vec4s, nullptr, GL_DYNAMIC_DRAW);
+    if (!compute) {
+        b.next_positions = gsv::Buffer::create(GL_ARRAY_BUFFER, vec4s, nullptr, GL_DYNAMIC_COPY);
+        b.next_velocities = gsv::Buffer::create(GL_ARRAY_BUFFER, vec4s, nullptr, GL_DYNAMIC_COPY);
+        b.next_colors = gsv::Buffer::create(GL_ARRAY_BUFFER, vec4s, nullptr, GL_DYNAMIC_COPY);
+        b.step_inputs = step_inputs(b);
+    }
 
     GLuint vao = 0;
     glGenVertexArrays(1, &vao);
@@ -75,7 +105,7 @@ void draw_particles(const ParticleBuffers& buffers) {
 }
 
 std::vector<glm::vec4> read_vec4s(gsv::Buffer& buffer, std::size_t slots) {
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    if (glMemoryBarrier) glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // none below ES 3.1: transform feedback needs none
     const glm::vec4* data = buffer.map_read_as<glm::vec4>();
     std::vector<glm::vec4> out(data, data + std::min(slots, buffer.size() / sizeof(glm::vec4)));
     buffer.unmap();

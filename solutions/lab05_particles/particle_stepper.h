@@ -1,5 +1,6 @@
 #pragma once
-// Lab 05: running the compute shader over the particle buffers, one dispatch per time step.
+// Lab 05: running the compute shader over the particle buffers, one dispatch per time step; where there are no compute
+// shaders (WebGL 2, OpenGL ES 3.0), the same step as a draw of points whose outputs transform feedback captures.
 #include "common/app/app.h"
 #include "common/gl/compute.h"
 #include "common/gl/texture.h"
@@ -27,6 +28,9 @@ struct Stepper {
     // Back to the starting state, coloured by a step of length 0.
     void restart(const gsv::ParticleSet& initial) const;
     void run(long steps, float h) const;
+
+private:
+    void run_captured(long steps) const;  // the transform-feedback step, for a program already in use
 };
 
 }  // namespace lab05

@@ -122,8 +122,8 @@ public:
         auto* raycaster = dynamic_cast<lab06::RayTraversal*>(network_ ? network_->find("raycaster") : nullptr);
         if (!raycaster) return std::nullopt;
         using Config = gsv::RaycastConfig;
-        const Config config = gsv::effective_config(raycaster->config());
-        const gsv::CompositingLegend says = gsv::compositing_legend(config.compositing);
+        const Config config = gsv::effective_config(lab06::raycast_modules(), raycaster->config());
+        const gsv::CompositingLegend says = gsv::compositing_legend(lab06::raycast_modules(), config.compositing);
         if (!says.shown) return std::nullopt;
         const bool table = config.classification == Config::Classification::TransferFunction;
         gsv::Legend legend;

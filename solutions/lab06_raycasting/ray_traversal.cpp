@@ -10,43 +10,38 @@ namespace lab06 {
 
 using Config = gsv::RaycastConfig;
 
-RayTraversal::RayTraversal() : LabProcessor("RayTraversal") {
+RayTraversal::RayTraversal()
+    : LabProcessor("RayTraversal"),
+      // The module choices are the module tables' rows (raycast_modules.cpp).
+      compositing_(params().add_choice("compositing", "dvr", gsv::compositing_names(raycast_modules()),
+                                       gsv::compositing_help(raycast_modules()))),
+      gradient_(params().add_choice("gradient", "central", gsv::gradient_names(raycast_modules()), "how normals are estimated")),
+      classification_(params().add_choice("classification", "tf", gsv::classification_names(raycast_modules()),
+                                          "intensity as opacity, or the transfer function")),
+      shading_(params().add_choice("shading", "phong", gsv::shading_names(raycast_modules()), "Phong needs a gradient")),
+      shader_(params().add_choice("shader", "specialised", {"specialised", "uber", "handwritten"},
+                                  "only the chosen modules compiled; all of them chosen by uniforms; DVR written by hand")),
+      transfer_function_name_(params().add_choice("transfer_function", "bands", kTransferFunctions, "the 1D transfer function")),
+      rays_(params()),
+      dvr_(params()),
+      iso_(params()),
+      phong_(params()),
+      modes_(raycast_modules()) {
     add_input("volume", gsv::PortType::Volume);
     add_input("entry", gsv::PortType::Image);
     add_input("exit", gsv::PortType::Image);
     add_output("image", gsv::PortType::Image);
-    gsv::Params& p = params();
-    // The module choices are the module tables' names (support/raycast/raycast_config.h).
-    compositing_ = p.add_choice("compositing", "dvr", gsv::compositing_names(),
-                                "direct volume rendering, maximum intensity, isosurface, first hit");
-    gradient_ = p.add_choice("gradient", "central", gsv::gradient_names(), "how normals are estimated");
-    classification_ = p.add_choice("classification", "tf", gsv::classification_names(),
-                                   "intensity as opacity, or the transfer function");
-    shading_ = p.add_choice("shading", "phong", gsv::shading_names(), "Phong needs a gradient");
-    shader_ = p.add_choice("shader", "specialised", {"specialised", "uber", "handwritten"},
-                           "only the chosen modules compiled; all of them chosen by uniforms; DVR written by hand");
-    transfer_function_name_ = p.add_choice("transfer_function", "bands", kTransferFunctions, "the 1D transfer function");
-    // [0.05, 32]: the sweep's reference refines to 32, and below 0.05 a ray of a 41-voxel volume takes two samples.
-    samples_per_voxel_ = p.add_float("samples_per_voxel", 1, 0.05, 32, "samples along a ray per voxel (of the largest side)")
-                             .with_step(0.25)
-                             .in_double();
-    opacity_correction_ = p.add_bool("opacity_correction", true,
-                                     "alpha' = 1 - (1 - alpha)^(step / voxel): the image keeps its opacity as the step changes");
-    early_ray_threshold_ = p.add_float("early_ray_threshold", 0.95, 0, 1, "DVR stops a ray once it is this opaque (1: never)").with_step(0.01);
-    iso_value_ = p.add_float("iso_value", 0.5, 0, 1, "the isosurface's value").with_step(0.01).applies_when("compositing", {"iso"});
-    ambient_ = p.add_float("ambient", 0.25, 0, 1, "Phong k_a");
-    diffuse_ = p.add_float("diffuse", 0.7, 0, 1, "Phong k_d");
-    specular_ = p.add_float("specular", 0.3, 0, 1, "Phong k_s");
-    shininess_ = p.add_float("shininess", 24, 1, 256, "Phong exponent").with_step(4);
+    params().param<float>("iso_value").applies_when("compositing", {"iso"});
 }
 
 Config RayTraversal::config() const {
     Config c;
-    c.compositing = gsv::parse_compositing(compositing_.get());
-    c.gradient = gsv::parse_gradient(gradient_.get());
-    c.classification = gsv::parse_classification(classification_.get());
-    c.shading = gsv::parse_shading(shading_.get());
-    c.early_termination = early_ray_threshold_.get() < 1.0f;
+    const gsv::RaycastModules& modules = raycast_modules();
+    c.compositing = gsv::parse_compositing(modules, compositing_.get());
+    c.gradient = gsv::parse_gradient(modules, gradient_.get());
+    c.classification = gsv::parse_classification(modules, classification_.get());
+    c.shading = gsv::parse_shading(modules, shading_.get());
+    c.early_termination = dvr_.early_ray_threshold().get() < 1.0f;
     return c;
 }
 
@@ -58,7 +53,7 @@ const gsv::ShaderLibrary::Entry& RayTraversal::program_for(const std::string& sh
             gsv::ProgramSpec spec;
             spec.name = describe() + " uber";
             spec.files = {k.assets().shader_file("gsv/fullscreen.vert"), k.assets().shader_file("raycast_uber.frag")};
-            spec.generated = {gsv::raycast_uber_file()};
+            spec.generated = {gsv::raycast_uber_file(raycast_modules())};
             uber_ = &k.shaders().add(std::move(spec), k.defines());
         }
         return *uber_;
@@ -70,9 +65,9 @@ const gsv::ShaderLibrary::Entry& RayTraversal::program_for(const std::string& sh
         wanted.classification = Config::Classification::TransferFunction;
         wanted.shading = Config::Shading::Phong;
         wanted.early_termination = config.early_termination;
-        if (gsv::effective_config(config) != wanted)
-            throw gsv::Error(name() + ".shader = 'handwritten' draws only " + gsv::describe(wanted) + "; asked for " +
-                             gsv::describe(config));
+        if (gsv::effective_config(raycast_modules(), config) != wanted)
+            throw gsv::Error(name() + ".shader = 'handwritten' draws only " + gsv::describe(raycast_modules(), wanted) +
+                             "; asked for " + gsv::describe(raycast_modules(), config));
         if (!handwritten_)
             handwritten_ = &k.program(describe() + " handwritten", {"gsv/fullscreen.vert", "raycast_dvr_handwritten.frag"});
         return *handwritten_;
@@ -81,12 +76,12 @@ const gsv::ShaderLibrary::Entry& RayTraversal::program_for(const std::string& sh
         gsv::ProgramSpec spec;
         spec.name = describe();
         spec.files = {k.assets().shader_file("gsv/fullscreen.vert"), k.assets().shader_file("raycast.frag")};
-        spec.generated = {gsv::raycast_config_file(config)};
+        spec.generated = {gsv::raycast_config_file(raycast_modules(), config)};
         specialised_ = &k.shaders().add(std::move(spec), k.defines());
         specialised_config_ = config;
     } else if (config != specialised_config_) {
         specialised_config_ = config;
-        if (auto error = k.shaders().set_generated(*specialised_, {gsv::raycast_config_file(config)}, k.defines()))
+        if (auto error = k.shaders().set_generated(*specialised_, {gsv::raycast_config_file(raycast_modules(), config)}, k.defines()))
             throw gsv::Error(*error);
     }
     return *specialised_;
@@ -105,7 +100,7 @@ void RayTraversal::process() {
     auto entry = input<ImageData>("entry");
     auto exit = input<ImageData>("exit");
     const Config requested = config();
-    gsv::validate(requested);
+    gsv::validate(raycast_modules(), requested);
     const gsv::ShaderLibrary::Entry& program_entry = program_for(shader_.get(), requested);
     // A hot reload that broke the shader leaves the last good program running; the error belongs here.
     if (!program_entry.error().empty()) throw gsv::Error(program_entry.error());
@@ -115,9 +110,6 @@ void RayTraversal::process() {
     const FrameView& v = view();
     const gsv::Volume& vol = volume->volume;
     const int largest = std::max({vol.nx, vol.ny, vol.nz});
-    const double samples_per_voxel = samples_per_voxel_.get();
-    const float voxel = 1.0f / static_cast<float>(largest);  // the step a transfer function's opacities are for
-    const float step = static_cast<float>(1.0 / (samples_per_voxel * largest));
 
     fit(image_, v);
     image_->bind();
@@ -127,32 +119,22 @@ void RayTraversal::process() {
     glClearDepthf(1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     program.use();
-    // Each module's component sets what the module's file declares; the program gave every sampler its own unit.
-    gsv::RaySetup rays(entry->color(), exit->color(), volume->texture);
-    rays.step_size = step;
-    rays.texture_to_clip = v.projection * v.view * volume->box.model_from_texture_matrix();
-    gsv::VoxelGeometry voxels;
-    voxels.spacing = glm::vec3(vol.spacing);
-    const gsv::GradientLookup gradients(requested.gradient == Config::Gradient::Precomputed ? volume->gradients()
-                                                                                            : volume->texture);
-    const gsv::TransferFunctionLookup classification(transfer_function());
-    gsv::PhongShading phong;
-    phong.camera_position = glm::vec3(volume->box.texture_from_model(glm::dvec3(v.eye)));
-    phong.light_position = phong.camera_position;  // a headlight
-    phong.ambient = ambient_.get();
-    phong.diffuse = diffuse_.get();
-    phong.specular = specular_.get();
-    phong.shininess = shininess_.get();
-    gsv::DvrCompositing dvr;
-    // Opacity correction off: a reference of 0 keeps every sample's opacity as the transfer function gives it.
-    dvr.reference_step_size = opacity_correction_.get() ? voxel : 0.0f;
-    dvr.early_ray_threshold = early_ray_threshold_.get();
-    gsv::IsoCompositing iso;
-    iso.iso_value = iso_value_.get();
-    gsv::UberModes modes;
-    modes.config = requested;
-    gsv::ShaderComponents components{&rays, &voxels, &gradients, &classification, &phong, &dvr, &iso};
-    if (shader_.get() == "uber") components.push_back(&modes);
+    // Each module's component sets what the module's file declares, its parameters' values among them; the program
+    // gave every sampler its own unit. What the frame brings is set here.
+    rays_.entry_points = &entry->color();
+    rays_.exit_points = &exit->color();
+    rays_.volume = &volume->texture;
+    rays_.largest_side = largest;
+    rays_.texture_to_clip = v.projection * v.view * volume->box.model_from_texture_matrix();
+    voxels_.spacing = glm::vec3(vol.spacing);
+    gradients_.gradients = requested.gradient == Config::Gradient::Precomputed ? &volume->gradients() : &volume->texture;
+    table_.table = &transfer_function();
+    phong_.camera_position = glm::vec3(volume->box.texture_from_model(glm::dvec3(v.eye)));
+    phong_.light_position = phong_.camera_position;  // a headlight
+    dvr_.voxel_step = 1.0f / static_cast<float>(largest);
+    modes_.config = requested;
+    gsv::ShaderComponents components{&rays_, &voxels_, &gradients_, &table_, &phong_, &dvr_, &iso_};
+    if (shader_.get() == "uber") components.push_back(&modes_);
     gsv::apply_components(program, components);
     if (!quad_.vertex_count()) quad_ = gsv::GpuMesh(gsv::make_fullscreen_quad(), kit().profile());
     quad_.draw();

@@ -11,8 +11,8 @@
 #include "common/gl/texture.h"
 #include "common/params/change_tracker.h"
 #include "common/shader/shader_library.h"
+#include "raycast_modules.h"
 #include "support/raycast/raycast_components.h"
-#include "support/raycast/raycast_config.h"
 
 #include <string>
 
@@ -32,7 +32,7 @@ public:
     // The transfer function's table as the classification module reads it (the legend samples it there too).
     const gsv::Texture& transfer_function();
     std::string transfer_function_name() const { return transfer_function_name_.get(); }
-    double iso_value() const { return iso_value_.in_double().get(); }
+    double iso_value() const { return iso_.iso_value().in_double().get(); }
 
 private:
     const gsv::ShaderLibrary::Entry& program_for(const std::string& shader, const gsv::RaycastConfig& config);
@@ -42,10 +42,17 @@ private:
     const gsv::ShaderLibrary::Entry* uber_ = nullptr;
     const gsv::ShaderLibrary::Entry* handwritten_ = nullptr;
     const gsv::ShaderLibrary::Entry* last_ = nullptr;
+    // In the order of the parameters (the lab's list, the panel): the module choices, then what each module's
+    // component declares and sets (support/raycast/raycast_components.h).
     gsv::Param<std::string> compositing_, gradient_, classification_, shading_, shader_, transfer_function_name_;
-    gsv::Param<double> samples_per_voxel_;
-    gsv::Param<bool> opacity_correction_;
-    gsv::Param<float> early_ray_threshold_, iso_value_, ambient_, diffuse_, specular_, shininess_;
+    gsv::RaySetup rays_;
+    gsv::DvrCompositing dvr_;
+    gsv::IsoCompositing iso_;
+    gsv::PhongShading phong_;
+    gsv::VoxelGeometry voxels_;
+    gsv::GradientLookup gradients_;
+    gsv::TransferFunctionLookup table_;
+    gsv::UberModes modes_;
     gsv::GpuMesh quad_;
     gsv::Tracked<gsv::Texture> transfer_function_;
     std::shared_ptr<ImageData> image_;

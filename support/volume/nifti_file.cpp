@@ -4,7 +4,9 @@
 #include "common/core/error.h"
 #include "support/volume/nifti_format.h"
 
+#ifndef __EMSCRIPTEN__
 #include <zlib.h>
+#endif
 
 #include <algorithm>
 #include <cmath>
@@ -52,10 +54,13 @@ struct Opened {
     std::vector<unsigned char> head;
 };
 
-// A volume the kit can draw is far below this; a gzip bomb is not.
-constexpr std::uint64_t kMaxInflatedBytes = std::uint64_t(2) << 30;
-
 std::string inflate_file(const std::filesystem::path& path) {
+#ifdef __EMSCRIPTEN__
+    // Emscripten's frozen cache on Debian has no zlib (the browser edition, cmake/web.cmake).
+    fail(path, "is gzip-compressed, which the browser edition cannot read: decompress it (gunzip) first");
+#else
+    // A volume the kit can draw is far below this; a gzip bomb is not.
+    constexpr std::uint64_t kMaxInflatedBytes = std::uint64_t(2) << 30;
     gzFile gz = gzopen(path.string().c_str(), "rb");
     if (!gz) fail(path, "cannot open it to decompress");
     std::string out;
@@ -77,6 +82,7 @@ std::string inflate_file(const std::filesystem::path& path) {
                            (message && *message ? message : "unexpected end of file") + ")");
         return out;
     }
+#endif
 }
 
 void open_file(const std::filesystem::path& path, Opened& file) {

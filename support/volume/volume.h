@@ -63,7 +63,7 @@ struct Volume {
 
     // The same voxels with the y and z axes exchanged: voxel (i, j, k) becomes (i, k, j), and the spacing follows.
     // A scan whose k runs from the feet up is then drawn upright in a y-up world. Exchanging two axes mirrors, so a
-    // scan drawn unmirrored before is mirrored after and the other way round (lab06's sources.cpp says which).
+    // scan drawn unmirrored before is mirrored after and the other way round (lab 06's volume source says which).
     Volume with_y_and_z_exchanged() const;
 
     // What GL_LINEAR with GL_CLAMP_TO_EDGE returns at texture coordinate s in [0,1]^3, in double from the

@@ -1,0 +1,179 @@
+# The browser edition (scripts/kit web, the `web` preset): every lab built with Debian's Emscripten (em++ 3.1.6)
+# from the same framework, lab.cpp and GLSL files as the native build, for WebGL 2 (OpenGL ES 3.0), into one
+# static folder, build-web/site/. Included by the top-level CMakeLists.txt instead of the native build.
+#
+# Emscripten's cache is frozen on Debian (no ports download): GLFW, html5, embind and stb_image are there, zlib is
+# not, so gzipped volumes are refused in the browser (support/volume/nifti_file.cpp says so in one line).
+include(${CMAKE_CURRENT_LIST_DIR}/labs.cmake)
+
+# Header-only libraries from Debian's /usr/include, reached through links of their own: the whole of /usr/include
+# would put glibc's headers before Emscripten's libc.
+set(GSV_WEB_INCLUDE ${CMAKE_BINARY_DIR}/web-include)
+file(MAKE_DIRECTORY ${GSV_WEB_INCLUDE})
+foreach(header_dir glm nlohmann stb)
+  find_path(GSV_WEB_${header_dir}_PARENT ${header_dir} PATHS /usr/include /usr/local/include NO_DEFAULT_PATH
+            NO_CMAKE_FIND_ROOT_PATH)
+  if(NOT GSV_WEB_${header_dir}_PARENT)
+    message(FATAL_ERROR "the web build needs ${header_dir}'s headers in /usr/include (scripts/setup.sh installs them)")
+  endif()
+  if(NOT EXISTS ${GSV_WEB_INCLUDE}/${header_dir})
+    file(CREATE_LINK ${GSV_WEB_${header_dir}_PARENT}/${header_dir} ${GSV_WEB_INCLUDE}/${header_dir} SYMBOLIC)
+  endif()
+endforeach()
+
+set(GSV_WEB_FLAGS -fexceptions)
+add_compile_options(${GSV_WEB_FLAGS})
+
+add_subdirectory(third_party/glad)
+
+# The framework without what a browser has no use for: EGL, OSMesa and GLFW contexts, the window mode and its panel,
+# child processes. The web mode (common/app/app_web.cpp) and the WebGL context take their place.
+file(GLOB_RECURSE GSV_COMMON_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/common/*.cpp)
+list(FILTER GSV_COMMON_SOURCES EXCLUDE REGEX
+     "context/context_(egl|osmesa|glfw)\\.cpp$|/window/(image_view|window_panel|legend)|app/(app_window|window_reference|subprocess|app_compare|reference_image)\\.cpp$")
+add_library(gsv_common STATIC ${GSV_COMMON_SOURCES})
+target_include_directories(gsv_common PUBLIC ${PROJECT_SOURCE_DIR} ${GSV_WEB_INCLUDE} ${GSV_WEB_INCLUDE}/stb)
+target_link_libraries(gsv_common PUBLIC glad)
+target_compile_definitions(gsv_common PUBLIC GLM_FORCE_CTOR_INIT GSV_WEB=1 PRIVATE GSV_SOURCE_ROOT="/kit")
+set_source_files_properties(${PROJECT_SOURCE_DIR}/common/core/version.cpp PROPERTIES COMPILE_DEFINITIONS GSV_VERSION="${PROJECT_VERSION}")
+target_compile_options(gsv_common PRIVATE -Wall -Wextra)
+
+file(GLOB_RECURSE GSV_SUPPORT_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/support/*.cpp)
+add_library(gsv_support STATIC ${GSV_SUPPORT_SOURCES})
+target_link_libraries(gsv_support PUBLIC gsv_common)
+target_compile_options(gsv_support PRIVATE -Wall -Wextra)
+
+# The grader's part of the page: its case files, comparison, verdicts and table, and the self-check that runs them in
+# the page (grader/src/app/page_self_check.cpp). Not the grader's processes or sandbox: the page grades nothing of anyone else's.
+add_library(gsv_grader_page STATIC
+  ${PROJECT_SOURCE_DIR}/grader/src/cases/cases.cpp ${PROJECT_SOURCE_DIR}/grader/src/cases/draw.cpp
+  ${PROJECT_SOURCE_DIR}/grader/src/judge/array_compare.cpp ${PROJECT_SOURCE_DIR}/grader/src/judge/image_verdict.cpp
+  ${PROJECT_SOURCE_DIR}/grader/src/judge/needs.cpp ${PROJECT_SOURCE_DIR}/grader/src/report/report_table.cpp
+  ${PROJECT_SOURCE_DIR}/grader/src/report/report_format.cpp ${PROJECT_SOURCE_DIR}/grader/src/judge/grade_result.cpp)
+target_link_libraries(gsv_grader_page PUBLIC gsv_common)
+target_compile_options(gsv_grader_page PRIVATE -Wall -Wextra)
+# Compiled once for every page (an object library: its EMSCRIPTEN_BINDINGS would be dropped from a static one).
+add_library(gsv_page_self_check OBJECT ${PROJECT_SOURCE_DIR}/grader/src/app/page_self_check.cpp)
+target_link_libraries(gsv_page_self_check PUBLIC gsv_grader_page)
+set(GSV_WEB_PAGE_SOURCES $<TARGET_OBJECTS:gsv_page_self_check>)
+set(GSV_WEB_PAGE_LIBRARIES gsv_grader_page)
+# compare's composite writes its labels in the kit's font (common/image/ui_font.cpp), at the path it has on Debian.
+find_file(GSV_WEB_FONT DejaVuSans.ttf PATHS /usr/share/fonts/truetype/dejavu NO_DEFAULT_PATH NO_CMAKE_FIND_ROOT_PATH)
+if(NOT GSV_WEB_FONT)
+  message(FATAL_ERROR "the web pages' comparison labels need DejaVu Sans: apt-get install fonts-dejavu-core")
+endif()
+
+# Each lab's page: <id>.js, <id>.wasm and <id>.data, the files the lab reads preloaded at the paths the native kit
+# has them (the lab's folder, shaders/, data/, its case file and golden images), under /kit, the kit's root there.
+# The site gets the student's copy (labs/, the starters: no answer is shipped); the reference solutions are built
+# beside it in build-web/solution-pages/ for the tests only.
+set(GSV_WEB_SITE ${CMAKE_BINARY_DIR}/site)
+# FULL_ES3: glMapBufferRange for writing (lab 05 writes its particles the seed's way), which WebGL 2 lacks.
+set(GSV_WEB_LINK_FLAGS -fexceptions -lembind -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2 -sFULL_ES3=1 -sALLOW_MEMORY_GROWTH=1
+    -sFORCE_FILESYSTEM=1 -sENVIRONMENT=web -sINVOKE_RUN=0 --profiling-funcs "-sEXPORTED_RUNTIME_METHODS=[FS,callMain]")
+
+function(gsv_add_web_lab id dir)
+  # A lab's C++ files that are the same in labs/ and solutions/ (all but the TODOs in C++, L03-T1 and L05-T1) are
+  # compiled once for both pages; lab.cpp is compiled per page (it names its folder). A change to one of them
+  # reconfigures, so that the two are compared again.
+  file(GLOB solution_sources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/solutions/${dir}/*.cpp)
+  set(shared_sources)
+  foreach(source ${solution_sources})
+    get_filename_component(name ${source} NAME)
+    set(starter_source ${PROJECT_SOURCE_DIR}/labs/${dir}/${name})
+    if(NOT name STREQUAL "lab.cpp" AND EXISTS ${starter_source})
+      set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${source} ${starter_source})
+      file(SHA256 ${source} solution_hash)
+      file(SHA256 ${starter_source} starter_hash)
+      if(solution_hash STREQUAL starter_hash)
+        list(APPEND shared_sources ${source})
+      endif()
+    endif()
+  endforeach()
+  set(shared_objects)
+  if(shared_sources)
+    add_library(${id}_web_shared OBJECT ${shared_sources})
+    target_link_libraries(${id}_web_shared PUBLIC gsv_support)
+    set(shared_objects $<TARGET_OBJECTS:${id}_web_shared>)
+  endif()
+  foreach(variant starter solution)
+    if(variant STREQUAL "starter")
+      set(src labs/${dir})
+      set(target ${id}_web)
+      set(out ${GSV_WEB_SITE}/${id})
+    else()
+      set(src solutions/${dir})
+      set(target ${id}_solution_web)
+      set(out ${CMAKE_BINARY_DIR}/solution-pages/${id})
+    endif()
+    file(GLOB lab_sources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${src}/*.cpp)
+    if(NOT lab_sources)
+      continue()
+    endif()
+    foreach(source ${shared_sources})
+      get_filename_component(name ${source} NAME)
+      list(REMOVE_ITEM lab_sources ${PROJECT_SOURCE_DIR}/${src}/${name})
+    endforeach()
+    file(GLOB_RECURSE preloaded CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${src}/* ${PROJECT_SOURCE_DIR}/shaders/*
+         ${PROJECT_SOURCE_DIR}/data/* ${PROJECT_SOURCE_DIR}/grader/golden/${id}/*)
+    add_executable(${target} ${lab_sources} ${shared_objects} ${GSV_WEB_PAGE_SOURCES})
+    target_link_libraries(${target} PRIVATE gsv_support ${GSV_WEB_PAGE_LIBRARIES})
+    target_compile_definitions(${target} PRIVATE GSV_LAB_DIR="${src}" GSV_LAB_VARIANT="${variant}")
+    set(preload)
+    foreach(path ${src} shaders data grader/cases/${id}.json grader/golden/${id})
+      # SHELL: keeps each option with its value (CMake removes repeated options otherwise).
+      list(APPEND preload "SHELL:--preload-file ${PROJECT_SOURCE_DIR}/${path}@/kit/${path}")
+    endforeach()
+    list(APPEND preload "SHELL:--preload-file ${GSV_WEB_FONT}@${GSV_WEB_FONT}")
+    target_link_options(${target} PRIVATE ${GSV_WEB_LINK_FLAGS} ${preload})
+    set_target_properties(${target} PROPERTIES OUTPUT_NAME ${id} SUFFIX ".js" RUNTIME_OUTPUT_DIRECTORY ${out}
+                          LINK_DEPENDS "${preloaded};${PROJECT_SOURCE_DIR}/grader/cases/${id}.json")
+  endforeach()
+endfunction()
+
+foreach(lab IN LISTS GSV_LAB_LIST)
+  string(REPLACE ":" ";" lab_pair ${lab})
+  gsv_add_web_lab(${lab_pair})
+endforeach()
+
+# The site: an index (each lab with a picture, its first case's golden image, and its title), a page per lab, the
+# pages' JavaScript and CSS (web/page/), and the editor and zip code from Debian and npm, copied as they come.
+find_path(GSV_CODEMIRROR_DIR lib/codemirror.js PATHS /usr/share/javascript/codemirror NO_DEFAULT_PATH NO_CMAKE_FIND_ROOT_PATH)
+find_path(GSV_JSZIP_DIR jszip.min.js PATHS ${PROJECT_SOURCE_DIR}/web/node_modules/jszip/dist NO_DEFAULT_PATH NO_CMAKE_FIND_ROOT_PATH)
+if(NOT GSV_CODEMIRROR_DIR)
+  message(FATAL_ERROR "the web pages' editor is Debian's CodeMirror: apt-get install libjs-codemirror (scripts/kit web does)")
+endif()
+if(NOT GSV_JSZIP_DIR)
+  message(FATAL_ERROR "the web pages' download and open use JSZip from npm: npm ci --prefix web (scripts/kit web does)")
+endif()
+
+set(GSV_WEB_INDEX_ENTRIES "")
+foreach(lab IN LISTS GSV_LAB_LIST)
+  string(REPLACE ":" ";" lab_pair ${lab})
+  list(GET lab_pair 0 id)
+  list(GET lab_pair 1 dir)
+  file(STRINGS ${PROJECT_SOURCE_DIR}/labs/${dir}/README.md title LIMIT_COUNT 1)
+  string(REGEX REPLACE "^# *" "" GSV_LAB_TITLE "${title}")
+  set(GSV_LAB_ID ${id})
+  string(SUBSTRING ${id} 3 2 number)
+  file(GLOB deck RELATIVE ${PROJECT_SOURCE_DIR}/slides ${PROJECT_SOURCE_DIR}/slides/${number}-*.md)
+  string(REGEX REPLACE "\\.md$" "" GSV_LAB_DECK "${deck}")
+  configure_file(${PROJECT_SOURCE_DIR}/web/lab.html.in ${GSV_WEB_SITE}/${id}/index.html @ONLY)
+  configure_file(${PROJECT_SOURCE_DIR}/web/lab.html.in ${CMAKE_BINARY_DIR}/solution-pages/${id}/index.html @ONLY)
+  file(READ ${PROJECT_SOURCE_DIR}/grader/cases/${id}.json cases_json)
+  string(JSON first_case GET "${cases_json}" cases 0 name)
+  configure_file(${PROJECT_SOURCE_DIR}/grader/golden/${id}/${first_case}.png ${GSV_WEB_SITE}/${id}/picture.png COPYONLY)
+  string(APPEND GSV_WEB_INDEX_ENTRIES
+         "<a href=\"${id}/index.html\"><img src=\"${id}/picture.png\" alt=\"${id}'s case ${first_case}\"><strong>${GSV_LAB_TITLE}</strong></a>\n")
+endforeach()
+configure_file(${PROJECT_SOURCE_DIR}/web/index.html.in ${GSV_WEB_SITE}/index.html @ONLY)
+
+add_custom_target(web_site ALL
+  COMMAND ${CMAKE_COMMAND} -E copy_directory ${PROJECT_SOURCE_DIR}/web/page ${GSV_WEB_SITE}/page
+  COMMAND ${CMAKE_COMMAND} -E copy_directory ${PROJECT_SOURCE_DIR}/web/page ${CMAKE_BINARY_DIR}/solution-pages/page
+  COMMAND ${CMAKE_COMMAND} -E make_directory ${GSV_WEB_SITE}/vendor/codemirror
+  COMMAND ${CMAKE_COMMAND} -E copy ${GSV_CODEMIRROR_DIR}/lib/codemirror.js ${GSV_CODEMIRROR_DIR}/lib/codemirror.css
+          ${GSV_CODEMIRROR_DIR}/mode/clike/clike.js ${GSV_WEB_SITE}/vendor/codemirror/
+  COMMAND ${CMAKE_COMMAND} -E copy ${GSV_JSZIP_DIR}/jszip.min.js ${GSV_WEB_SITE}/vendor/
+  COMMAND ${CMAKE_COMMAND} -E copy_directory ${GSV_WEB_SITE}/vendor ${CMAKE_BINARY_DIR}/solution-pages/vendor
+  COMMENT "the web pages' scripts, styles and editor into ${GSV_WEB_SITE}")

@@ -1,0 +1,139 @@
+#include "grader/src/app/grade_command.h"
+
+#include "common/context/context.h"
+#include "common/core/error.h"
+#include "grader/src/batch/batch.h"
+
+#include <cstdlib>
+#include <regex>
+#include <sstream>
+
+namespace gsv {
+
+const char* const kGradeUsage =
+    "usage: gsv-grade [--kit DIR] [--bin DIR] [--submission DIR | --batch DIR [--workers N] [--shard K/N] [--roster FILE]]\n"
+    "                 [--out DIR]"
+    " [--labs lab01,lab02] [--cases gyre,wrap] [--todo L02-T3] [--seed N] [--self-check] [--no-timing]\n"
+    "                 [--public-only] [--profile core|es]"
+    " [--timeout S] [--fail-under F] [--update-goldens] [--allow-readable-kit] [--no-namespaces]\n"
+    "                 [--no-sandbox] [--build-all] [--quiet] [--help] [--version]\n"
+    "  --kit DIR         the kit (cases, goldens, hidden cases, solutions); default: the one this was built from\n"
+    "  --bin DIR         the kit's built labs and <lab>_solution; default: this build's bin/\n"
+    "  --submission DIR  a copy of the kit whose labs/ hold a student's work: built against this kit, then graded\n"
+    "  --batch DIR       every folder in DIR is a submission; --workers N grade N at a time (default 2)\n"
+    "  --shard K/N       with --batch and --seed: grade every N-th submission (sorted by name) from the K-th, so N\n"
+    "                    machines share a class; then gsv-grade merge joins their --out folders\n"
+    "  --roster FILE     with --batch: the class, one name per line (default: the folders in DIR); DIR then needs\n"
+    "                    only this shard's folders, and a name without one is graded 'nothing submitted'\n"
+    "  --out DIR         images and reports: results.json (Gradescope), report.json, junit.xml, report.html\n"
+    "  --cases A,B       only these cases (public or hidden names) of the chosen labs: re-check one fix quickly\n"
+    "  --todo L02-T3     only the cases of one TODO (its lab's): what the lab sheet's TODO table gives\n"
+    "  --seed N          draws the hidden cases; the same seed gives the same cases (default: a fresh one, printed)\n"
+    "  --self-check      golden images and public cases only, even where the solutions are built\n"
+    "  --no-timing       skip the frame-time checks\n"
+    "  --profile P       core (default), compat or es: the profile the student's labs and the references run on; es runs\n"
+    "                    each lab at its lowest OpenGL ES version (the self-check still compares with the core goldens)\n"
+    "  --public-only     skip the hidden cases\n"
+    "  --timeout S       wall-clock limit per student lab process (default: the case file's)\n"
+    "  --fail-under F    exit 1 when the score is below F (0..1) of the maximum: a CI gate\n"
+    "  --update-goldens  render grader/golden/<lab>/<case>.png (and <case>.<array>.f32s) with the reference solutions\n"
+    "  --allow-readable-kit  where the sandbox cannot hide the kit (no namespaces), grade hidden cases and live\n"
+    "                    references anyway; without it they are refused there, and the report says which walls were up\n"
+    "  --no-namespaces   every wall but the namespaces: how the grader behaves where unshare is refused\n"
+    "  --no-sandbox      run student code without namespaces and limits (to debug the grader only)\n"
+    "  --build-all       compile every lab of a submission, even one whose C++ is byte for byte the kit's starter's\n"
+    "                    (otherwise the kit's binary) or an earlier build's (kept in <bin>/../grader-cache/builds)\n"
+    "       gsv-grade merge OUT SHARD_OUT...  the --out folders of a batch's shards joined into OUT (new or empty):\n"
+    "                    the per-submission folders, class.csv, class.txt, batch.json; refused when the shards were\n"
+    "                    graded with other seeds, kits, labs or options, overlap, or one is missing\n"
+    "       gsv-grade shard K/N ROSTER       the names of shard K of N of a roster file, one a line (what to fetch)\n"
+    "exit status: 0 graded (whatever the score), 1 under --fail-under, 2 usage or internal error\n";
+
+std::uint64_t parse_seed(const std::string& text) {
+    std::size_t used = 0;
+    unsigned long long value = 0;
+    try {
+        value = std::stoull(text, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used != text.size() || text.empty() || text[0] == '-') throw Error("--seed needs a whole number, got '" + text + "'");
+    return value;
+}
+
+GradeAction read_grade_command(int argc, char** argv, GradeCommand& command) {
+    GradeOptions& options = command.options;
+    std::vector<std::string>& pass_through = command.pass_through;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        auto value = [&]() -> std::string {
+            if (i + 1 >= argc) throw Error("option " + a + " needs a value");
+            return argv[++i];
+        };
+        auto number = [&](double lo, double hi) {
+            const std::string text = value();
+            char* end = nullptr;
+            const double v = std::strtod(text.c_str(), &end);
+            if (text.empty() || *end != '\0' || !(v >= lo && v <= hi))
+                throw Error(a + " needs a number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got '" + text + "'");
+            return v;
+        };
+        // A comma-separated list, passed on to each submission's run of a batch.
+        auto list = [&](std::vector<std::string>& items) {
+            const std::string text = value();
+            pass_through.insert(pass_through.end(), {a, text});
+            std::stringstream in(text);
+            for (std::string item; std::getline(in, item, ',');) items.push_back(item);
+        };
+        // A switch, passed on to each submission's run of a batch.
+        auto flag = [&](bool& option, bool value_when_given) {
+            option = value_when_given;
+            pass_through.push_back(a);
+        };
+        if (a == "--kit") { options.kit_root = value(); pass_through.insert(pass_through.end(), {a, std::filesystem::absolute(options.kit_root).string()}); }
+        else if (a == "--bin") { options.bin_dir = value(); pass_through.insert(pass_through.end(), {a, std::filesystem::absolute(options.bin_dir).string()}); }
+        else if (a == "--submission") options.submission = value();
+        else if (a == "--batch") command.batch = value();
+        else if (a == "--workers") command.workers = static_cast<int>(number(1, 256));
+        else if (a == "--shard") command.shard = value();
+        else if (a == "--roster") command.roster = value();
+        else if (a == "--out") options.out_dir = value();
+        else if (a == "--labs") list(options.labs);
+        else if (a == "--cases") list(options.cases);
+        else if (a == "--seed") options.seed = parse_seed(value());
+        else if (a == "--self-check") flag(options.self_check, true);
+        else if (a == "--no-timing") flag(options.timing, false);
+        else if (a == "--public-only") flag(options.hidden, false);
+        else if (a == "--no-sandbox") flag(options.sandbox, false);
+        else if (a == "--build-all") flag(options.reuse_builds, false);
+        else if (a == "--allow-readable-kit") flag(options.allow_readable_kit, true);
+        else if (a == "--no-namespaces") flag(options.namespaces, false);
+        else if (a == "--todo") {
+            options.todo = value();
+            static const std::regex id(R"(^L[0-9]{2}-T[0-9]+$)");
+            if (!std::regex_match(options.todo, id)) throw Error("--todo needs a TODO id like L02-T3, got '" + options.todo + "'");
+            pass_through.insert(pass_through.end(), {a, options.todo});
+        }
+        else if (a == "--sandbox-uid") options.sandbox_uid = static_cast<unsigned>(number(1000, 4000000000.0));
+        else if (a == "--timeout") { options.timeout_s = number(0.1, 3600); pass_through.insert(pass_through.end(), {a, std::to_string(options.timeout_s)}); }
+        else if (a == "--update-goldens") command.update_goldens = true;
+        else if (a == "--profile") {
+            options.profile = parse_profile(value());
+            pass_through.insert(pass_through.end(), {a, profile_name(options.profile)});
+        }
+        else if (a == "--fail-under") command.fail_under = number(0, 1);
+        else if (a == "--quiet") command.quiet = true;
+        else if (a == "-h" || a == "--help") return GradeAction::Help;
+        else if (a == "--version") return GradeAction::Version;
+        else throw Error("unknown option '" + a + "' (see --help)");
+    }
+    if (const char* seed = std::getenv(kSeedVariable); seed && !options.seed) options.seed = parse_seed(seed);
+    if (command.update_goldens && options.profile != Profile::Core)
+        throw Error("--update-goldens renders the goldens on the core profile; drop --profile " +
+                    std::string(profile_name(options.profile)));
+    if (command.batch.empty() && !command.shard.empty()) throw Error("--shard " + command.shard + " needs --batch DIR");
+    if (command.batch.empty() && !command.roster.empty()) throw Error("--roster needs --batch DIR");
+    return GradeAction::Grade;
+}
+
+}  // namespace gsv

@@ -1,0 +1,201 @@
+// gsv-grade: grades a submission (or the kit's own labs/) headless, prints the score table and writes the
+// reports; or grades a folder of submissions with N workers; or rewrites the goldens. Its command line is read in
+// grade_command.cpp.
+#include "common/app/assets.h"
+#include "common/core/error.h"
+#include "common/core/progress.h"
+#include "common/core/version.h"
+#include "common/io/json.h"
+#include "common/io/output_folder.h"
+#include "grader/src/app/grade_command.h"
+#include "grader/src/batch/batch.h"
+#include "grader/src/batch/batch_merge.h"
+#include "grader/src/batch/batch_record.h"
+#include "grader/src/cases/draw.h"
+#include "grader/src/golden/golden_update.h"
+#include "grader/src/grade/grade.h"
+#include "grader/src/grade/grade_exit.h"
+#include "grader/src/report/report.h"
+#include "grader/src/report/report_format.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+namespace {
+
+bool quiet = false;
+
+void print_progress(const gsv::GradeProgress& p) {
+    if (quiet) return;
+    if (!p.result) {
+        std::fprintf(stderr, "%s...\n", p.stage.c_str());
+        return;
+    }
+    const gsv::CaseResult& r = *p.result;
+    const std::string name = r.lab + "/" + r.name + (r.kind == "timing" ? " [time]" : "");
+    std::fprintf(stderr, "[%2d/%2d] %-32s %-14s %5.2f s\n", p.done, p.total, name.c_str(), gsv::status_name(r.status),
+                 r.seconds);
+}
+
+std::chrono::steady_clock::time_point batch_start;
+
+// One line per submission, whether or not stderr is a terminal: each names a student's result.
+void print_batch_progress(const gsv::BatchEntry& e, int done, int total) {
+    const std::string result = e.graded ? gsv::format_points(e.score) + " / " + gsv::format_points(e.max_score) : e.problem;
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - batch_start).count();
+    std::fprintf(stderr, "%s\n", gsv::progress_text(done, total, e.name + ": " + gsv::one_line(result, 200), elapsed).c_str());
+}
+
+void write_failure_results(const std::filesystem::path& out_dir, const std::string& why) {
+    std::error_code ec;
+    std::filesystem::create_directories(out_dir, ec);
+    gsv::Json root = gsv::Json::object();
+    root["score"] = 0;
+    root["output"] = "The submission could not be graded: " + why;
+    root["tests"] = gsv::Json::array();
+    std::ofstream(out_dir / "results.json") << root.dump(2) << "\n";
+}
+
+// gsv-grade merge OUT SHARD_OUT... and gsv-grade shard K/N ROSTER.
+int merge_main(int argc, char** argv) {
+    if (argc < 4) throw gsv::Error("needs OUT and at least one shard's output folder: gsv-grade merge OUT SHARD_OUT...");
+    std::vector<std::filesystem::path> shards(argv + 3, argv + argc);
+    const gsv::BatchRecord merged = gsv::merge_shards(shards, argv[2]);
+    std::printf("%s", gsv::class_table(merged.entries).c_str());
+    std::printf("%zu shards merged: per-submission reports in %s/<name>/, the class in %s/class.csv\n", shards.size(), argv[2], argv[2]);
+    return gsv::kGradeOk;
+}
+
+int shard_main(int argc, char** argv) {
+    if (argc != 4) throw gsv::Error("needs K/N and a roster file: gsv-grade shard K/N ROSTER");
+    const auto [k, n] = gsv::parse_shard(argv[2]);
+    for (const std::string& name : gsv::shard_names(gsv::read_roster(argv[3]), k, n)) std::printf("%s\n", name.c_str());
+    return gsv::kGradeOk;
+}
+
+// `gsv-grade merge ...` and `gsv-grade shard ...`.
+int run_subcommand(int argc, char** argv) {
+    try {
+        return std::string(argv[1]) == "merge" ? merge_main(argc, argv) : shard_main(argc, argv);
+    } catch (const gsv::Error& e) {
+        std::fprintf(stderr, "gsv-grade %s: %s\n", argv[1], e.what());
+        return gsv::kGradeNotGraded;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "gsv-grade %s: internal error: %s\n", argv[1], e.what());
+        return gsv::kGradeNotGraded;
+    }
+}
+
+// --batch DIR: each submission by a gsv-grade of its own, then the class's tables and the record `merge` reads.
+int grade_class(const gsv::GradeCommand& command, const char* argv0) {
+    const gsv::GradeOptions& options = command.options;
+    const std::string& shard = command.shard;
+    if (!options.submission.empty()) throw gsv::Error("--batch and --submission exclude each other");
+    const auto [shard_k, shard_n] = shard.empty() ? std::pair{1, 1} : gsv::parse_shard(shard);
+    // Each shard would draw a fresh seed of its own: other hidden cases on every machine.
+    if (!shard.empty() && !options.seed)
+        throw gsv::Error("--shard " + shard + " needs --seed N: every shard must draw the same hidden cases");
+    gsv::BatchOptions b;
+    b.grader = gsv::Assets::executable_path(argv0);
+    b.submissions = command.batch;
+    b.out_dir = options.out_dir;
+    b.workers = command.workers;
+    b.seed = options.seed ? *options.seed : gsv::fresh_seed();
+    b.pass_through = command.pass_through;
+    b.shard = shard_k;
+    b.shard_count = shard_n;
+    if (!command.roster.empty()) b.roster = gsv::read_roster(command.roster);
+    gsv::prepare_output_folder(options.out_dir, "--out");
+    gsv::BatchRecord record;
+    record.seed = b.seed;
+    record.shard = shard_k;
+    record.shard_count = shard_n;
+    record.kit = gsv::kit_fingerprint(options.kit_root);
+    record.options = gsv::recorded_options(command.pass_through);
+    std::fprintf(stderr, "grading the submissions in %s%s with %d workers, seed %llu\n", command.batch.c_str(),
+                 shard.empty() ? "" : (", shard " + shard).c_str(), command.workers, static_cast<unsigned long long>(b.seed));
+    batch_start = std::chrono::steady_clock::now();
+    record.entries = gsv::grade_batch(b, print_batch_progress, &record.roster);
+    std::printf("%s", gsv::class_table(record.entries).c_str());
+    gsv::write_class_tables(record.entries, options.out_dir);
+    gsv::write_batch_record(record, options.out_dir);
+    std::printf("per-submission reports in %s/<name>/, the class in %s/class.csv\n", options.out_dir.c_str(), options.out_dir.c_str());
+    return gsv::kGradeOk;
+}
+
+// --update-goldens: a line for each golden the reference did not render.
+int rewrite_goldens(const gsv::GradeCommand& command) {
+    const gsv::GradeReport report = gsv::update_goldens(command.options, print_progress);
+    int failed = 0;
+    for (const auto& r : report.results)
+        if (r.status != gsv::CaseStatus::Passed) {
+            std::fprintf(stderr, "gsv-grade: %s/%s: %s\n%s\n", r.lab.c_str(), r.name.c_str(), r.detail.c_str(), r.output.c_str());
+            ++failed;
+        }
+    std::printf("updated the goldens of %zu cases, %d failed\n", report.results.size() - static_cast<std::size_t>(failed), failed);
+    return failed ? gsv::kGradeFailed : gsv::kGradeOk;
+}
+
+// One submission, or the kit's own labs/: the reports, the table, and the exit status a CI gate reads.
+int grade_one(const gsv::GradeCommand& command) {
+    const gsv::GradeOptions& options = command.options;
+    const gsv::GradeReport report = gsv::grade(options, print_progress);
+    gsv::write_reports(report, options.out_dir);
+    if (!quiet) {
+        std::printf("%s", gsv::score_table(report).c_str());
+        std::printf("reports (report.html, junit.xml, results.json, report.json) and images in %s\n", options.out_dir.c_str());
+    }
+    // A reference that failed is the kit's fault: no grade rests on it.
+    const auto kit_faults = std::count_if(report.results.begin(), report.results.end(),
+                                          [](const gsv::CaseResult& r) { return gsv::is_kit_fault(r.status); });
+    if (kit_faults > 0) {
+        std::fprintf(stderr, "gsv-grade: the reference failed on %ld checks (marked 'reference failed'): fix the kit before "
+                             "grading; no grade was given\n", static_cast<long>(kit_faults));
+        return gsv::kGradeNotGraded;
+    }
+    if (command.fail_under >= 0 && report.max_score() > 0 && report.score() < command.fail_under * report.max_score()) {
+        std::fprintf(stderr, "gsv-grade: score %.1f / %.1f is under --fail-under %.2f\n", report.score(), report.max_score(),
+                     command.fail_under);
+        return gsv::kGradeFailed;
+    }
+    return gsv::kGradeOk;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc > 1 && (std::string(argv[1]) == "merge" || std::string(argv[1]) == "shard")) return run_subcommand(argc, argv);
+    gsv::GradeCommand command;
+    command.options.kit_root = GSV_SOURCE_ROOT;
+    command.options.bin_dir = GSV_BIN_DIR;
+    command.options.out_dir = "grade-results";
+    try {
+        switch (gsv::read_grade_command(argc, argv, command)) {
+        case gsv::GradeAction::Help: std::printf("%s", gsv::kGradeUsage); return gsv::kGradeOk;
+        case gsv::GradeAction::Version: std::printf("%s\n", gsv::version_line("gsv-grade").c_str()); return gsv::kGradeOk;
+        case gsv::GradeAction::Grade: break;
+        }
+        quiet = command.quiet;
+        if (!command.batch.empty()) return grade_class(command, argv[0]);
+        // Before any build or lab runs: a grading that cannot write its reports says so first (a batch once its
+        // command line is known good, so that a refused one leaves no folder behind).
+        gsv::prepare_output_folder(command.options.out_dir, "--out");
+        return command.update_goldens ? rewrite_goldens(command) : grade_one(command);
+    } catch (const gsv::Error& e) {
+        std::fprintf(stderr, "gsv-grade: %s\n", e.what());
+        // A submission that could not be graded at all still gets a results.json saying why (Gradescope
+        // shows it to the student); an internal error leaves one for the instructor too.
+        if (!command.options.submission.empty() && command.batch.empty()) write_failure_results(command.options.out_dir, e.what());
+        return gsv::kGradeNotGraded;
+    } catch (const std::filesystem::filesystem_error& e) {
+        // A folder or file the grader could not read or write: the user's to fix, named in the message.
+        std::fprintf(stderr, "gsv-grade: %s\n", e.what());
+        return gsv::kGradeNotGraded;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "gsv-grade: internal error: %s\n", e.what());
+        return gsv::kGradeNotGraded;
+    }
+}

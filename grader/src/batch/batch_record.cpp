@@ -1,0 +1,127 @@
+#include "grader/src/batch/batch_record.h"
+
+#include "common/core/error.h"
+#include "common/core/fnv1a.h"
+#include "common/io/json.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+
+namespace fs = std::filesystem;
+
+namespace gsv {
+namespace {
+
+constexpr const char* kRecordFormat = "gsv-batch 1";
+
+}  // namespace
+
+std::string kit_fingerprint(const fs::path& kit_root) {
+    static const char* kWhatGrades[] = {"grader/cases", "grader/hidden", "grader/golden", "solutions", "shaders", "common", "support", "data"};
+    std::vector<fs::path> files;
+    for (const char* part : kWhatGrades) {
+        const fs::path folder = kit_root / part;
+        if (!fs::is_directory(folder)) continue;
+        for (const auto& e : fs::recursive_directory_iterator(folder))
+            if (e.is_regular_file()) files.push_back(e.path().lexically_relative(kit_root));
+    }
+    if (files.empty()) throw Error("'" + kit_root.string() + "' is not a kit (no grader/cases, solutions, ...)");
+    std::sort(files.begin(), files.end());
+    Fnv1a hash;
+    std::vector<char> buffer(1 << 16);
+    for (const fs::path& file : files) {
+        hash.add(file.generic_string());
+        std::ifstream in(kit_root / file, std::ios::binary);
+        if (!in) throw Error("cannot read '" + (kit_root / file).string() + "' to fingerprint the kit");
+        while (in.read(buffer.data(), static_cast<std::streamsize>(buffer.size())) || in.gcount() > 0)
+            hash.add(buffer.data(), static_cast<std::size_t>(in.gcount()));
+    }
+    return hash.hex();
+}
+
+std::vector<std::string> recorded_options(const std::vector<std::string>& pass_through) {
+    std::vector<std::string> kept;
+    for (std::size_t i = 0; i < pass_through.size(); ++i) {
+        if (pass_through[i] == "--kit" || pass_through[i] == "--bin") {
+            ++i;
+            continue;
+        }
+        // The grades are the same either way (grader/submission.h): shards may differ in it.
+        if (pass_through[i] == "--build-all") continue;
+        kept.push_back(pass_through[i]);
+    }
+    return kept;
+}
+
+void write_batch_record(const BatchRecord& record, const fs::path& out_dir) {
+    Json root = Json::object();
+    root["format"] = kRecordFormat;
+    root["seed"] = std::to_string(record.seed);  // a string: a JSON number holds 53 bits, a seed 64
+    root["shard"] = std::to_string(record.shard) + "/" + std::to_string(record.shard_count);
+    root["kit"] = record.kit;
+    Json options = Json::array();
+    for (const auto& o : record.options) options.push_back(o);
+    root["options"] = options;
+    Json roster = Json::array();
+    for (const auto& name : record.roster) roster.push_back(name);
+    root["class"] = roster;
+    Json rows = Json::array();
+    for (const BatchEntry& e : record.entries) {
+        Json row = Json::object();
+        row["name"] = e.name;
+        row["graded"] = e.graded;
+        row["score"] = e.score;
+        row["max_score"] = e.max_score;
+        row["seconds"] = e.seconds;
+        row["problem"] = e.problem;
+        rows.push_back(row);
+    }
+    root["entries"] = rows;
+    const fs::path file = out_dir / "batch.json";
+    std::ofstream out(file);
+    out << root.dump(2) << "\n";
+    if (!out) throw Error("cannot write '" + file.string() + "'");
+}
+
+BatchRecord read_batch_record(const fs::path& out_dir) {
+    const fs::path file = out_dir / "batch.json";
+    if (!fs::is_regular_file(file))
+        throw Error("'" + out_dir.string() + "' holds no batch.json: not the --out of a gsv-grade --batch");
+    const Json root = read_json_file(file);
+    if (root.string_at("format") != kRecordFormat)
+        throw Error(file.string() + ": format '" + root.string_at("format") + "', expected '" + kRecordFormat + "'");
+    BatchRecord record;
+    const std::string seed = root.string_at("seed");
+    if (seed.empty() || seed.find_first_not_of("0123456789") != std::string::npos)
+        throw Error(file.string() + ": seed '" + seed + "' is not a whole number");
+    record.seed = std::stoull(seed);
+    const auto [k, n] = parse_shard(root.string_at("shard"));
+    record.shard = k;
+    record.shard_count = n;
+    record.kit = root.string_at("kit");
+    for (const Json& o : root.array_at("options").as_array()) record.options.push_back(o.as_string());
+    for (const Json& name : root.array_at("class").as_array()) record.roster.push_back(name.as_string());
+    for (const Json& row : root.array_at("entries").as_array()) {
+        BatchEntry e;
+        e.name = row.string_at("name");
+        e.graded = row.bool_at("graded");
+        e.score = row.number_at("score");
+        e.max_score = row.number_at("max_score");
+        e.seconds = row.number_at("seconds");
+        e.problem = row.string_at("problem");
+        record.entries.push_back(e);
+    }
+    return record;
+}
+
+void write_class_tables(const std::vector<BatchEntry>& entries, const fs::path& out_dir) {
+    for (const auto& [name, text] : {std::pair{"class.csv", class_csv(entries)}, std::pair{"class.txt", class_table(entries)}}) {
+        std::ofstream out(out_dir / name);
+        out << text;
+        if (!out) throw Error("cannot write '" + (out_dir / name).string() + "'");
+    }
+}
+
+}  // namespace gsv

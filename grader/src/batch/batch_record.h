@@ -1,0 +1,38 @@
+#pragma once
+// What a batch (or one shard of it) leaves beside its per-submission folders, <out>/batch.json: the seed, the
+// kit, the options and the class it was graded with, and its rows. `gsv-grade merge` joins shards by these
+// records and refuses ones that were not graded alike, so a merged class table is one grading, not a mixture.
+#include "grader/src/batch/batch.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace gsv {
+
+struct BatchRecord {
+    std::uint64_t seed = 0;
+    int shard = 1, shard_count = 1;
+    std::string kit;                   // kit_fingerprint() of the kit that graded
+    std::vector<std::string> options;  // what every submission's run got, less the machine's own paths
+    std::vector<std::string> roster;   // the whole class, sorted
+    std::vector<BatchEntry> entries;   // this shard's rows, in class order
+};
+
+// A hash of what decides a grade: the case files, hidden cases, golden images, solutions, shaders, framework,
+// domain code and data of the kit at `kit_root` (paths and contents, in path order). Two checkouts of one commit
+// agree; a changed case, golden or solution does not.
+std::string kit_fingerprint(const std::filesystem::path& kit_root);
+
+// The options of a batch as recorded: --kit and --bin with their values left out (they name this machine's folders).
+std::vector<std::string> recorded_options(const std::vector<std::string>& pass_through);
+
+void write_batch_record(const BatchRecord& record, const std::filesystem::path& out_dir);
+// Throws gsv::Error naming the folder when it holds no batch.json or one that is not a batch record.
+BatchRecord read_batch_record(const std::filesystem::path& out_dir);
+
+// Writes <out>/class.csv and <out>/class.txt (the table gsv-grade prints) for these rows.
+void write_class_tables(const std::vector<BatchEntry>& entries, const std::filesystem::path& out_dir);
+
+}  // namespace gsv

@@ -1,0 +1,145 @@
+#include "grader/src/grade/grade.h"
+
+#include "common/app/kit_layout.h"
+#include "common/core/error.h"
+#include "common/image/image.h"
+#include "common/io/folder_tree.h"
+#include "grader/src/grade/session.h"
+#include "grader/src/judge/data_check.h"
+#include "grader/src/judge/image_check.h"
+#include "grader/src/judge/needs.h"
+#include "grader/src/judge/timing_check.h"
+#include "grader/src/report/report_format.h"
+
+#include <optional>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace gsv {
+namespace {
+
+// One case: the student's lab runs, then the reference (live, or its committed golden); the image is judged, then the
+// arrays, then, where the case is timed and its image passed, the frame time. Each check is a row.
+void grade_case(GradingSession& s, CopySearch& copies, const LabCases& lab, const GradeCase& c, bool live,
+                const LabBuild* build) {
+    CaseResult r = s.result_for(lab, c);
+    r.reference = live ? "live" : "golden";
+    const bool timed = live && s.options.timing && c.timing.points > 0;
+    auto timing_row_like = [&](const CaseResult& image_row) {
+        if (!timed) return;
+        CaseResult t = image_row;
+        t.kind = "timing";
+        t.points = 0;
+        t.max_points = c.timing.points;
+        t.actual_png = t.expected_png = t.diff_png = "";
+        t.detail = "not timed: " + std::string(status_name(image_row.status));
+        s.record(t);
+    };
+    const fs::path dir = s.out / lab.lab / c.name;
+    remove_folder(dir);
+    fs::create_directories(dir);
+    // What the grader writes here (expected.png, a hidden case's reference) is the grader's alone: a student
+    // process running as another uid, where no namespace hides this folder, cannot read it.
+    if (geteuid() == 0) fs::permissions(s.out / lab.lab, fs::perms::owner_all);
+
+    if (build && !build->ok) {
+        r.status = CaseStatus::BuildError;
+        r.detail = as_student_sees(first_error_line(build->log), s.student_kit());
+        r.output = as_student_sees(build->log, s.student_kit());
+        s.record(r);
+        timing_row_like(s.report.results.back());
+        return;
+    }
+    // The student first: this case's expected image does not exist yet while student code runs.
+    const LabRun student = s.student.render(lab.lab, lab, c, s.limits(lab, true));
+    if (s.report.renderer.empty()) s.report.renderer = student.renderer;
+    r.seconds = student.process.seconds;
+    r.frame_ms = student.reported_ms;
+    r.output = as_student_sees(student.process.output, s.student_kit());
+    r.status = student.status;
+    r.detail = as_student_sees(student.detail, s.student_kit());
+
+    Image expected;
+    std::optional<LabRun> reference;
+    if (live) {
+        reference = s.reference_render(lab, c);
+        r.reference_seconds = reference->process.seconds;
+        if (reference->status != CaseStatus::Passed) {
+            r.status = CaseStatus::ReferenceFailed;
+            r.detail = "the reference solution failed (" + std::string(status_name(reference->status)) + "): " + reference->detail;
+            r.output = reference->process.output;
+            s.record(r);
+            timing_row_like(s.report.results.back());
+            return;
+        }
+        expected = *reference->image;
+    } else {
+        const fs::path golden = KitLayout{s.kit}.golden_image(lab.lab, c.name);
+        if (!fs::exists(golden)) {
+            r.status = CaseStatus::ReferenceFailed;
+            r.detail = "no golden image " + golden.string() + " (run gsv-grade --update-goldens)";
+            s.record(r);
+            return;
+        }
+        try {
+            expected = read_png(golden);
+        } catch (const Error& e) {
+            r.status = CaseStatus::ReferenceFailed;
+            r.detail = std::string("the golden image is unreadable: ") + e.what();
+            s.record(r);
+            return;
+        }
+    }
+    write_png(dir / "expected.png", expected);
+    r.expected_png = fs::relative(dir / "expected.png", s.out).generic_string();
+    if (student.status == CaseStatus::Passed) {
+        const auto draw = [&](const GradeCase& other) { return s.student.render(lab.lab, lab, other, s.limits(lab, true)); };
+        // Only where the student's renderer is not the goldens' own: on that one a difference is the student's.
+        std::optional<OtherRenderer> other;
+        if (const auto golden = s.report.golden_renderers.find(lab.lab);
+            !live && golden != s.report.golden_renderers.end() && !student.renderer.empty() && student.renderer != golden->second) {
+            other = OtherRenderer{golden->second, student.renderer, "build/bin/" + lab.lab + " compare --case " + c.name};
+            if (s.options.profile != Profile::Core) other->compare += std::string(" --profile ") + profile_name(s.options.profile);
+        }
+        check_image(lab, c, *student.image, expected, live, s.out, copies, draw, other ? &*other : nullptr, r);
+    }
+    // The numbers after the image, whatever it showed (grader/src/judge/data_check.h has the order).
+    if (reference)
+        check_case_data(lab, c, student, *reference, r);
+    else
+        check_case_data(lab, c, student, s.kit, r);
+    s.record(r);
+    const CaseResult image_row = s.report.results.back();
+    if (!timed) return;
+    if (image_row.status != CaseStatus::Passed) return timing_row_like(image_row);
+    s.record(check_timing(lab, c, image_row, s.student, s.limits(lab, true), s.reference, s.limits(lab, false)));
+}
+
+}  // namespace
+
+GradeReport grade(const GradeOptions& options, const std::function<void(const GradeProgress&)>& progress) {
+    GradingSession s(options, progress, RunPurpose::Grade);
+    s.set_up();
+    CopySearch copies(s.kit, s.student_kit());
+    for (std::size_t i = 0; i < s.labs.size(); ++i) {
+        const LabCases& lab = s.labs[i];
+        const LabBuild* build = s.build_of(lab.lab);
+        const std::size_t first = s.report.results.size();
+        for (const auto& c : lab.cases) {
+            try {
+                grade_case(s, copies, lab, c, s.live[i], build);
+            } catch (const std::exception& e) {
+                // One case's trouble never stops the rest.
+                CaseResult r = s.result_for(lab, c);
+                r.status = CaseStatus::Error;
+                r.detail = std::string("grader: ") + e.what();
+                s.record(r);
+            }
+        }
+        blame_needed_todos(lab, s.report.results, first);
+    }
+    return s.finish();
+}
+
+}  // namespace gsv

@@ -1,0 +1,69 @@
+#pragma once
+// Grades the labs of one submission headless. Each case is rendered by the student's binary in its own
+// sandboxed process and compared with the reference: rendered live by <lab>_solution in the same run
+// (instructor grading: public and hidden cases, timing) or the committed golden image (self-check). A lab
+// that hands in arrays (lab 05's particles) has them checked as well (grader/src/judge/data_check.h).
+// The run's set-up is session.h's, each check judge/'s; rewriting the goldens is apart (golden/golden_update.h).
+#include "grader/src/judge/grade_result.h"
+#include "grader/src/run/lab_run.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gsv {
+
+// Live references already rendered, by lab, size and settings: a run that grades many submissions (or many
+// mutants) in one process renders each reference case once.
+struct ReferenceCache {
+    std::map<std::string, LabRun> runs;
+};
+
+struct GradeOptions {
+    std::filesystem::path kit_root;     // grader/cases, golden, hidden; solutions/
+    std::filesystem::path bin_dir;      // the kit's build: <lab>_solution, and <lab> when no submission is given
+    std::filesystem::path submission;   // empty: grade the kit's own labs/ (as built in bin_dir)
+    std::filesystem::path out_dir;      // images and reports
+    // Labs built elsewhere, graded as the student's (the tests grade mutants of the solution this way):
+    // <lab> in student_bin_dir, run with GSV_ROOT=student_root. Empty: the kit's own build; unused with
+    // a submission.
+    std::filesystem::path student_bin_dir, student_root;
+    std::vector<std::string> labs;      // empty: every lab with a case file
+    std::vector<std::string> cases;     // empty: every case; else only these names (an unknown one is an error)
+    bool self_check = false;            // golden images only, public cases only, even when solutions are built
+    bool timing = true;                 // instructor mode: time the cases that declare a timing band
+    bool hidden = true;                 // instructor mode: add the hidden cases drawn from the seed
+    bool sandbox = true;                // off only to debug the grader itself
+    bool reuse_builds = true;           // false (--build-all): compile every lab of a submission (grader/submission.h)
+    std::filesystem::path build_cache;  // earlier builds; empty: <bin_dir>/../grader-cache/builds
+    // Where the allow-list walls cannot go up (no namespaces), hidden cases and live references are refused: student
+    // code could read the kit. This grades them anyway, and the report says the kit was readable.
+    bool allow_readable_kit = false;
+    bool namespaces = true;             // false: every wall but the namespaces, as where unshare is refused
+    // A root grader runs student code as this uid; 0: the first one free (grader/src/run/uid_lease.h).
+    unsigned sandbox_uid = 0;
+    std::string todo;                   // only the cases of this TODO ("L02-T3"); empty: all
+    std::shared_ptr<ReferenceCache> reference_cache;  // shared between runs in one process; none: no cache
+    std::optional<std::uint64_t> seed;  // hidden cases; none: a fresh seed, recorded in the report
+    double timeout_s = 0;               // per student process; 0: the case file's timeout_s (always the reference's)
+    // The profile both the student's lab and the reference run on. On ES each lab runs at its lowest ES version
+    // (a case's "es" lifts it); the self-check compares with the goldens, which are core-profile images.
+    Profile profile = Profile::Core;
+};
+
+struct GradeProgress {
+    int done = 0, total = 0;
+    const CaseResult* result = nullptr;  // the check just finished; null while building
+    std::string stage;                   // "building lab01", ...
+};
+
+// Throws gsv::Error on what stops grading as a whole: an unreadable case file, a lab that has none, a
+// submission without labs/. Everything a student's code does is a CaseResult.
+GradeReport grade(const GradeOptions& options, const std::function<void(const GradeProgress&)>& progress = {});
+
+}  // namespace gsv

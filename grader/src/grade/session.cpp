@@ -1,0 +1,128 @@
+#include "grader/src/grade/session.h"
+
+#include "common/app/kit_layout.h"
+#include "grader/src/cases/draw.h"
+#include "grader/src/golden/golden_renderers.h"
+#include "grader/src/run/submission.h"
+
+#include <algorithm>
+
+namespace fs = std::filesystem;
+
+namespace gsv {
+
+GradingSession::GradingSession(const GradeOptions& options, const std::function<void(const GradeProgress&)>& progress,
+                               RunPurpose purpose)
+    : options(options), out(fs::absolute(options.out_dir)), kit(fs::absolute(options.kit_root)), bin(fs::absolute(options.bin_dir)),
+      progress_(progress), purpose_(purpose), start_(std::chrono::steady_clock::now()) {}
+
+void GradingSession::set_up() {
+    report.seed = options.seed ? *options.seed : fresh_seed();
+    report.submission = options.submission.empty() ? KitLayout{kit}.labs().string() : fs::absolute(options.submission).string();
+    load_labs();
+    const bool any_live = std::find(live.begin(), live.end(), true) != live.end();
+    report.mode = purpose_ == RunPurpose::UpdateGoldens ? "update goldens" : any_live ? "instructor" : "self-check";
+    report.profile = profile_name(options.profile);
+    if (purpose_ == RunPurpose::Grade) {
+        const auto renderers = read_golden_renderers(KitLayout{kit}.golden_renderers());
+        for (std::size_t i = 0; i < labs.size(); ++i)
+            if (const auto it = renderers.find(labs[i].lab); !live[i] && it != renderers.end()) report.golden_renderers[it->first] = it->second;
+    }
+    fs::create_directories(out);
+
+    fs::path student_bin = bin, student_root = kit;
+    if (!options.submission.empty()) {
+        const fs::path work = out / "submission-build";
+        student_root = work / "kit";
+        student_bin = work / "build" / "bin";
+        set_up_sandbox(student_bin, student_root, work);
+        std::vector<std::string> lab_ids;
+        for (const auto& lab : labs) lab_ids.push_back(lab.lab);
+        if (progress_) progress_({0, total_, nullptr, "building the submission's labs"});
+        ProcessLimits build_limits = limits(labs.empty() ? LabCases{} : labs.front(), true);
+        if (build_limits.sandbox) build_limits.sandbox = &build_policy_;
+        build_limits.timeout = std::chrono::minutes(5);
+        build_limits.max_output_bytes = 256 * 1024;
+        const SubmissionBuild built = build_submission(options.submission, kit, bin.parent_path(), lab_ids, work, build_limits,
+                                                       options.reuse_builds, options.build_cache);
+        report.builds = built.builds;
+    } else {
+        if (!options.student_bin_dir.empty()) {
+            student_bin = fs::absolute(options.student_bin_dir);
+            student_root = fs::absolute(options.student_root);
+        }
+        set_up_sandbox(student_bin, student_root, {});
+    }
+    // The kit's own labs find their files as they would when a student runs them (GSV_ROOT included).
+    const bool own_labs = options.submission.empty() && options.student_bin_dir.empty();
+    student = LabRunner{student_bin, own_labs ? fs::path() : student_root, true, options.profile};
+    reference = LabRunner{bin, "", false, options.profile};
+}
+
+GradeReport GradingSession::finish() {
+    report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    return report;
+}
+
+CaseResult GradingSession::result_for(const LabCases& lab, const GradeCase& c) const {
+    CaseResult r;
+    r.lab = lab.lab;
+    r.name = c.name;
+    r.todo = c.todo;
+    r.description = c.description;
+    r.visibility = c.visibility;
+    r.settings = c.settings;
+    r.max_points = c.points;
+    // What a student types to see what their lab drew: a public case by name, a hidden one by its settings.
+    r.reproduce = "build/bin/" + lab.lab + " render --size " + std::to_string(lab.width) + "x" + std::to_string(lab.height);
+    if (c.visibility == "public") {
+        r.reproduce += " --case " + c.name;
+    } else {
+        for (const auto& s : c.settings) r.reproduce += " --set " + s;
+    }
+    if (options.profile != Profile::Core) r.reproduce += std::string(" --profile ") + profile_name(options.profile);
+    if (options.profile == Profile::Es && c.es_version) r.reproduce += " --gl " + c.es_version->str();
+    r.reproduce += " --out " + c.name + ".png";
+    return r;
+}
+
+void GradingSession::record(CaseResult r) {
+    report.results.push_back(std::move(r));
+    if (progress_) progress_({static_cast<int>(report.results.size()), total_, &report.results.back(), ""});
+}
+
+ProcessLimits GradingSession::limits(const LabCases& lab, bool student) const {
+    ProcessLimits l;
+    // --timeout is a limit on the student's code; the reference is trusted, and timing it out under a
+    // loaded machine would fail the student's case for the grader's own reason.
+    const double timeout_s = student && options.timeout_s > 0 ? options.timeout_s : lab.timeout_s;
+    l.timeout = std::chrono::milliseconds(static_cast<long>(timeout_s * 1000));
+    if (student && options.sandbox) {
+        l.sandbox = &policy_;
+        l.support = &support_;
+    }
+    return l;
+}
+
+LabRun GradingSession::reference_render(const LabCases& lab, const GradeCase& c) {
+    if (!options.reference_cache) return reference.render(lab.lab + "_solution", lab, c, limits(lab, false));
+    std::string key = lab.lab + "|" + std::to_string(lab.width) + "x" + std::to_string(lab.height) + "|" + bin.string() +
+                      "|" + profile_name(options.profile);
+    for (const auto& s : c.settings) key += "|" + s;
+    auto& runs = options.reference_cache->runs;
+    if (auto it = runs.find(key); it != runs.end()) return it->second;
+    LabRun run = reference.render(lab.lab + "_solution", lab, c, limits(lab, false));
+    if (run.status == CaseStatus::Passed) runs.emplace(key, run);
+    return run;
+}
+
+fs::path GradingSession::student_kit() const { return student.root.empty() ? kit : student.root; }
+
+const LabBuild* GradingSession::build_of(const std::string& lab) const {
+    const LabBuild* build = nullptr;
+    for (const auto& b : report.builds)
+        if (b.lab == lab) build = &b;
+    return build;
+}
+
+}  // namespace gsv

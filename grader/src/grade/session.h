@@ -1,0 +1,70 @@
+#pragma once
+// One run of the grader, set up before any case runs; grading (grade.cpp) and rewriting the goldens
+// (grader/src/golden/golden_update.cpp) share it. Setting up chooses the labs and their cases and checks them
+// (case_selection.cpp), puts up the walls (walls.cpp), builds a submission's labs and makes the two runners; then
+// each check is one row, recorded here.
+#include "grader/src/grade/grade.h"
+#include "grader/src/run/process.h"
+#include "grader/src/run/sandbox.h"
+#include "grader/src/run/uid_lease.h"
+
+#include <chrono>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gsv {
+
+enum class RunPurpose { Grade, UpdateGoldens };
+
+class GradingSession {
+public:
+    GradingSession(const GradeOptions& options, const std::function<void(const GradeProgress&)>& progress, RunPurpose purpose);
+
+    // The seed, the labs and their cases (chosen and checked), the output folder, the walls, a submission's build and
+    // the runners. Throws gsv::Error on what stops the run as a whole.
+    void set_up();
+    // The report, with the run's wall time.
+    GradeReport finish();
+
+    // A result row for a case, before anything ran.
+    CaseResult result_for(const LabCases& lab, const GradeCase& c) const;
+    void record(CaseResult r);
+    ProcessLimits limits(const LabCases& lab, bool student) const;
+    // The reference's image of a case, rendered once per run where the options share a cache.
+    LabRun reference_render(const LabCases& lab, const GradeCase& c);
+    // The student's copy of the kit (its labs/), or the kit itself when its own labs are graded.
+    std::filesystem::path student_kit() const;
+    // The build of a lab of the submission; none when the kit's own labs are graded.
+    const LabBuild* build_of(const std::string& lab) const;
+
+    const GradeOptions& options;
+    const std::filesystem::path out, kit, bin;
+    GradeReport report;
+    std::vector<LabCases> labs;
+    std::vector<bool> live;  // per lab: against its reference rendered in this run, else the committed goldens
+    LabRunner student, reference;
+
+private:
+    // Which labs and cases the options choose, the hidden ones drawn (case_selection.cpp).
+    void load_labs();
+    // An instructor's mistake in a case file stops grading with one line, before any student code runs: a TODO id
+    // no lab has, a parameter the lab does not have or a value out of its range (hidden cases as drawn included).
+    void check_cases() const;
+    // The allow-lists of a lab run and of a build, the uid, and which walls this machine allows (walls.cpp).
+    void set_up_sandbox(const std::filesystem::path& student_bin, const std::filesystem::path& student_root,
+                        const std::filesystem::path& build_dir);
+
+    const std::function<void(const GradeProgress&)>& progress_;
+    const RunPurpose purpose_;
+    const std::chrono::steady_clock::time_point start_;
+    SandboxPolicy policy_;        // running a student's lab
+    SandboxPolicy build_policy_;  // building a submission's labs
+    SandboxSupport support_;
+    std::optional<UidLease> uid_lease_;  // a root grader's uid for student code, held until the run ends
+    int total_ = 0;
+};
+
+}  // namespace gsv

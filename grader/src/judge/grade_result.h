@@ -1,0 +1,124 @@
+#pragma once
+// What grading found: one result per check (a case's image and the numbers its lab hands in, or its frame
+// time against the reference's), the per-lab builds, and how the run was set up. The reports are written from
+// this.
+#include "common/image/image_compare.h"
+#include "grader/src/judge/array_compare.h"
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace gsv {
+
+// Every way a check can end, told apart so the student knows what to fix.
+enum class CaseStatus {
+    Passed,
+    BuildError,          // the lab's C++ did not compile or link
+    ShaderCompileError,  // file:line and the source line are in the output
+    ShaderLinkError,
+    Crash,               // killed by a signal (segfault, abort)
+    Timeout,             // killed after the wall-clock limit
+    MemoryLimit,         // ran out of its address-space limit
+    OutputFlood,         // printed far more than any lab should; killed
+    MissingOutput,       // exited 0 without a valid PNG
+    WrongImage,
+    WrongData,           // the image passed, but the numbers the lab hands in (its particle buffer) are wrong
+    BlankImage,          // one flat colour where the reference has a picture
+    NonFinite,           // NaN or Inf in the float image
+    CopiedImage,         // byte for byte a committed golden image of another case
+    TooSlow,             // frame time over the reference's beyond the case's band
+    MissingBinary,
+    Unsupported,         // the GL context lacks what the lab needs
+    Error,               // any other non-zero exit
+    ReferenceFailed,     // the reference itself failed: not the student's fault, scored 0 and flagged
+    NotDone,             // the starter's not-done colour where the reference draws: the TODO is still open
+    NeedsFirst,          // fails, and a TODO it depends on ("needs") fails its own cases: that one first
+    Refused,             // what it handed in breaks the hand-in's rules: a message over its limit or malformed, a timed
+                         // frame before its challenge, or one that is not the frame drawn with the challenge's settings
+    WroteTooMuch,        // filled its working folder (size or number of files) to the limit
+    GpuMargin,           // against a golden made on another renderer: off by more than the case's budget, but within the
+                         // margin renderers differ by (cross_implementation_tolerance, grader/cases.h); no points
+};
+const char* status_name(CaseStatus status);
+// The reference or the kit failed, not the student: reported apart from the student's failures.
+bool is_kit_fault(CaseStatus status);
+
+struct ImageCheck {
+    bool done = false;
+    ImageTolerance tolerance;
+    int max_channel_diff = 0;
+    long differing_pixels = 0, total_pixels = 0;
+    double psnr = 0, ssim = 0;
+    int diff_x0 = 0, diff_y0 = 0, diff_x1 = -1, diff_y1 = -1;  // inclusive box of differing pixels
+};
+
+// The arrays a case checks (grader/src/judge/data_check.h); a case passes only if its image and these both pass.
+struct DataCheck {
+    bool done = false;
+    std::string reference;        // "live" or "golden" (a golden holds a sample of each array)
+    ArrayTolerance tolerance;
+    std::vector<ArrayDiff> arrays;
+    std::string describes = "the arrays";  // the lab's "arrays_are": "particles"
+    bool passed() const;          // every array within the tolerance (vacuously when none is checked)
+};
+
+struct TimingCheck {
+    bool done = false;
+    double student_ms = 0, reference_ms = 0;  // medians over the interleaved rounds
+    double ratio = 0, max_ratio = 0;          // student over reference, and the case's pass band
+    int rounds = 0;
+    bool remeasured = false;                  // the first measurement was near the band
+};
+
+struct CaseResult {
+    std::string lab, name, todo, description;
+    std::string visibility = "public";        // "public" or "hidden"
+    std::string kind = "image";               // "image" or "timing"
+    std::vector<std::string> settings;        // name=value, as given to the lab with --set
+    double points = 0, max_points = 0;
+    CaseStatus status = CaseStatus::Error;
+    std::string detail;     // one line for the table
+    std::string reproduce;  // the command that draws what the student's lab drew here
+    std::string output;     // what helps the student: compiler messages, the lab's own output
+    std::string reference;  // "live" (rendered in this run) or "golden" (committed image)
+    double seconds = 0;     // wall time of the student's process
+    double reference_seconds = 0;  // wall time of the live reference's process
+    double frame_ms = 0;           // the student's own frame time inside that process (the rest is start-up)
+    ImageCheck image;
+    DataCheck data;
+    TimingCheck timing;
+    // Relative to the output folder; empty when there is none.
+    std::string actual_png, expected_png, diff_png;
+};
+
+struct LabBuild {
+    std::string lab;
+    bool ok = false;
+    std::string log;  // compiler output, capped
+    double seconds = 0;
+    // How the binary came to be: "built", or, where the lab's C++ is byte for byte one already built, "unchanged C++:
+    // the kit's binary" or "unchanged C++: an earlier build" (grader/submission.h says when).
+    std::string origin = "built";
+};
+
+struct GradeReport {
+    std::string submission;   // what was graded: a folder, or the kit's own labs/
+    std::string mode;         // "instructor" (live reference, hidden cases, timing) or "self-check"
+    std::string profile = "core";  // the GL profile the labs ran on: core, compat or es
+    std::string renderer;     // GL_RENDERER the student's labs ran on, as they reported it; empty when none did
+    // Against goldens: GL_RENDERER each graded lab's goldens were rendered on (grader/golden/renderer.json), by lab.
+    std::map<std::string, std::string> golden_renderers;
+    std::uint64_t seed = 0;   // hidden cases were drawn from it
+    bool hidden_included = false, timing_included = false;
+    std::string sandbox;      // which isolation the platform allowed, in words
+    double seconds = 0;       // wall time of the whole run
+    std::vector<LabBuild> builds;
+    std::vector<CaseResult> results;
+
+    double score() const;
+    double max_score() const;
+};
+
+}  // namespace gsv

@@ -1,0 +1,25 @@
+#pragma once
+// The reports of one grading run, all written from the same GradeReport.
+#include "grader/src/judge/grade_result.h"
+
+#include <filesystem>
+#include <string>
+
+namespace gsv {
+
+// Terminal: one line per check, then per-lab and total scores.
+std::string score_table(const GradeReport& report);
+// Gradescope's results.json: score, tests[{name, score, max_score, status, output, visibility, tags}];
+// hidden checks are "after_due_date".
+std::string gradescope_json(const GradeReport& report);
+// Everything the run measured, for tools.
+std::string report_json(const GradeReport& report);
+// JUnit XML: one testsuite per lab, one testcase per check.
+std::string junit_xml(const GradeReport& report);
+// One self-contained HTML file: the images embedded as data URIs, actual / expected / difference side by side.
+std::string html_report(const GradeReport& report, const std::filesystem::path& out_dir);
+
+// Writes results.json, report.json, junit.xml and report.html into out_dir.
+void write_reports(const GradeReport& report, const std::filesystem::path& out_dir);
+
+}  // namespace gsv

@@ -1,0 +1,235 @@
+#include "grader/src/report/report_format.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdint>
+#include <cstdio>
+
+namespace gsv {
+namespace {
+
+void append_utf8(std::string& out, std::uint32_t cp) {
+    if (cp < 0x80) {
+        out += static_cast<char>(cp);
+    } else if (cp < 0x800) {
+        out += static_cast<char>(0xC0 | (cp >> 6));
+        out += static_cast<char>(0x80 | (cp & 0x3F));
+    } else if (cp < 0x10000) {
+        out += static_cast<char>(0xE0 | (cp >> 12));
+        out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
+        out += static_cast<char>(0x80 | (cp & 0x3F));
+    } else {
+        out += static_cast<char>(0xF0 | (cp >> 18));
+        out += static_cast<char>(0x80 | ((cp >> 12) & 0x3F));
+        out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
+        out += static_cast<char>(0x80 | (cp & 0x3F));
+    }
+}
+
+// Decodes one code point at text[pos]; returns false (and consumes one byte) on anything invalid.
+bool decode(std::string_view text, std::size_t& pos, std::uint32_t& cp) {
+    const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(text[i]); };
+    const unsigned char lead = byte(pos);
+    int extra = 0;
+    std::uint32_t min = 0;
+    if (lead < 0x80) { cp = lead; ++pos; return true; }
+    if ((lead & 0xE0) == 0xC0) { extra = 1; cp = lead & 0x1F; min = 0x80; }
+    else if ((lead & 0xF0) == 0xE0) { extra = 2; cp = lead & 0x0F; min = 0x800; }
+    else if ((lead & 0xF8) == 0xF0) { extra = 3; cp = lead & 0x07; min = 0x10000; }
+    else { ++pos; return false; }
+    if (pos + extra >= text.size()) { ++pos; return false; }  // truncated at the end
+    for (int i = 1; i <= extra; ++i) {
+        if ((byte(pos + i) & 0xC0) != 0x80) { ++pos; return false; }
+        cp = (cp << 6) | (byte(pos + i) & 0x3F);
+    }
+    if (cp < min || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) { ++pos; return false; }
+    pos += extra + 1;
+    return true;
+}
+
+// Calls emit(code point) for each character, U+FFFD for each invalid byte.
+template <typename Emit>
+void for_each_char(std::string_view text, Emit&& emit) {
+    std::size_t pos = 0;
+    while (pos < text.size()) {
+        std::uint32_t cp = 0;
+        emit(decode(text, pos, cp) ? cp : 0xFFFD);
+    }
+}
+
+bool xml_allowed(std::uint32_t cp) {
+    if (cp < 0x20) return cp == '\t' || cp == '\n' || cp == '\r';
+    return cp != 0xFFFE && cp != 0xFFFF;
+}
+
+bool mentions_error(std::string_view line) {
+    std::string lower(line);
+    std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+    return lower.find("error") != std::string::npos;
+}
+
+bool blank(std::string_view line) {
+    return std::all_of(line.begin(), line.end(), [](unsigned char c) { return std::isspace(c); });
+}
+
+}  // namespace
+
+std::string check_label(const CaseResult& result) {
+    return result.kind == "timing" ? result.name + " [time]" : result.name;
+}
+
+std::string check_title(const CaseResult& result) {
+    std::string title = result.lab + "/" + check_label(result);
+    if (!result.todo.empty()) title += " (" + result.todo + ")";
+    return title;
+}
+
+std::string status_line(const CaseResult& result) {
+    std::string line = status_name(result.status);
+    if (!result.detail.empty()) line += ": " + result.detail;
+    return line;
+}
+
+std::string check_output(const CaseResult& result) {
+    std::string text = status_line(result);
+    if (result.status != CaseStatus::Passed && result.kind == "image" && !result.reproduce.empty())
+        text += "\nreproduce: " + result.reproduce;
+    if (!result.output.empty()) text += "\n" + result.output;
+    return text;
+}
+
+
+std::string golden_renderers_text(const GradeReport& report) {
+    std::string text, first;
+    bool one = true;
+    for (const auto& [lab, renderer] : report.golden_renderers) {
+        if (first.empty()) first = renderer;
+        one = one && renderer == first;
+        text += (text.empty() ? "" : "; ") + lab + ": " + renderer;
+    }
+    return one ? "rendered on " + first : text;
+}
+
+std::string fixed(double value, int digits) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.*f", digits, value);
+    return buffer;
+}
+
+std::string format_points(double points) {
+    std::string text = fixed(points, 2);
+    if (text.find('.') != std::string::npos) {
+        while (text.back() == '0') text.pop_back();
+        if (text.back() == '.') text.pop_back();
+    }
+    return text == "-0" ? "0" : text;
+}
+
+std::string valid_utf8(std::string_view text) {
+    std::string out;
+    out.reserve(text.size());
+    for_each_char(text, [&](std::uint32_t cp) { append_utf8(out, cp); });
+    return out;
+}
+
+std::string xml_safe_text(std::string_view text) {
+    std::string out;
+    out.reserve(text.size());
+    for_each_char(text, [&](std::uint32_t cp) {
+        if (xml_allowed(cp)) append_utf8(out, cp);
+    });
+    return out;
+}
+
+std::string escape_markup(std::string_view raw, MarkupPlace place) {
+    const std::string text = xml_safe_text(raw);
+    const bool attribute = place == MarkupPlace::Attribute;
+    std::string out;
+    out.reserve(text.size());
+    for (const char c : text) {
+        switch (c) {
+        case '&': out += "&amp;"; break;
+        case '<': out += "&lt;"; break;
+        case '>': out += "&gt;"; break;
+        case '"': out += "&quot;"; break;
+        case '\'': out += "&#39;"; break;
+        case '\r': out += "&#13;"; break;  // a bare CR would be read back as LF
+        case '\t': out += attribute ? "&#9;" : "\t"; break;
+        case '\n': out += attribute ? "&#10;" : "\n"; break;
+        default: out += c;
+        }
+    }
+    return out;
+}
+
+std::string one_line(std::string_view text, std::size_t max_bytes) {
+    std::string flat;
+    flat.reserve(text.size());
+    for_each_char(text, [&](std::uint32_t cp) {
+        if (cp < 0x20 || cp == 0x7F || (cp >= 0x80 && cp < 0xA0)) cp = ' ';
+        append_utf8(flat, cp);
+    });
+    while (!flat.empty() && flat.back() == ' ') flat.pop_back();
+    if (flat.size() <= max_bytes) return flat;
+    const std::size_t keep = max_bytes > 3 ? max_bytes - 3 : 0;
+    std::size_t cut = keep;
+    // Back up over continuation bytes so the cut never splits a character.
+    while (cut > 0 && (static_cast<unsigned char>(flat[cut]) & 0xC0) == 0x80) --cut;
+    return flat.substr(0, cut) + "...";
+}
+
+std::string first_error_line(std::string_view log) {
+    std::string_view first_text;
+    std::size_t start = 0;
+    while (start < log.size()) {
+        std::size_t end = log.find('\n', start);
+        if (end == std::string_view::npos) end = log.size();
+        const std::string_view line = log.substr(start, end - start);
+        if (mentions_error(line)) return one_line(line, 200);
+        if (first_text.empty() && !blank(line)) first_text = line;
+        start = end + 1;
+    }
+    return one_line(first_text, 200);
+}
+
+std::string base64(std::string_view bytes) {
+    static const char alphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    out.reserve((bytes.size() + 2) / 3 * 4);
+    std::size_t i = 0;
+    const auto at = [&](std::size_t k) { return static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[k])); };
+    for (; i + 3 <= bytes.size(); i += 3) {
+        const std::uint32_t group = (at(i) << 16) | (at(i + 1) << 8) | at(i + 2);
+        out += alphabet[(group >> 18) & 63];
+        out += alphabet[(group >> 12) & 63];
+        out += alphabet[(group >> 6) & 63];
+        out += alphabet[group & 63];
+    }
+    const std::size_t rest = bytes.size() - i;
+    if (rest > 0) {
+        const std::uint32_t group = (at(i) << 16) | (rest == 2 ? at(i + 1) << 8 : 0);
+        out += alphabet[(group >> 18) & 63];
+        out += alphabet[(group >> 12) & 63];
+        out += rest == 2 ? alphabet[(group >> 6) & 63] : '=';
+        out += '=';
+    }
+    return out;
+}
+
+std::vector<std::string> lab_order(const GradeReport& report) {
+    std::vector<std::string> labs;
+    const auto add = [&](const std::string& lab) {
+        if (std::find(labs.begin(), labs.end(), lab) == labs.end()) labs.push_back(lab);
+    };
+    for (const auto& r : report.results) add(r.lab);
+    for (const auto& b : report.builds) add(b.lab);
+    return labs;
+}
+
+const LabBuild* find_build(const GradeReport& report, const std::string& lab) {
+    for (const auto& b : report.builds)
+        if (b.lab == lab) return &b;
+    return nullptr;
+}
+
+}  // namespace gsv

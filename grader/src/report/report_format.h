@@ -1,0 +1,56 @@
+#pragma once
+// Text helpers the reports share, so the table, results.json, JUnit and HTML name and describe a
+// check the same way. Student output may hold any bytes, so everything that embeds it goes through
+// these first.
+#include "grader/src/judge/grade_result.h"
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace gsv {
+
+// "phong", or "phong [time]" for the timing check of the same case.
+std::string check_label(const CaseResult& result);
+// "lab01/phong (L01-T3)"; the todo part is left out when the case names none.
+std::string check_title(const CaseResult& result);
+// "wrong image: max diff 37, ..." or just the status name when there is no detail.
+std::string status_line(const CaseResult& result);
+// status_line, then the captured output on the following lines.
+std::string check_output(const CaseResult& result);
+
+// "rendered on llvmpipe (LLVM 15.0.6, 256 bits)", or by lab where the labs' goldens came from different renderers:
+// "lab01: llvmpipe (...); lab05: ...".
+std::string golden_renderers_text(const GradeReport& report);
+
+// 5 -> "5", 2.5 -> "2.5", 1/3 -> "0.33": points as a person writes them.
+std::string format_points(double points);
+// printf-style "%.*f".
+std::string fixed(double value, int digits);
+
+// Invalid UTF-8 sequences (stray bytes, overlong forms, surrogates) become U+FFFD, so every report is
+// valid UTF-8 whatever a student's program printed.
+std::string valid_utf8(std::string_view text);
+// valid_utf8, without the characters XML 1.0 forbids (controls other than tab, LF and CR; U+FFFE,
+// U+FFFF). HTML forbids the same controls, so both escapers use it.
+std::string xml_safe_text(std::string_view text);
+// Escapes xml_safe_text for markup (XML and HTML): & < > " ' and CR always; in an attribute also tab and
+// LF, which a parser would otherwise turn into spaces (attribute-value normalisation).
+enum class MarkupPlace { Text, Attribute };
+std::string escape_markup(std::string_view raw, MarkupPlace place);
+// One line for a table: valid UTF-8, every control character (newlines, ESC of terminal colour codes)
+// a space, cut at a character boundary to at most max_bytes with "..." marking the cut.
+std::string one_line(std::string_view text, std::size_t max_bytes);
+// The first line that mentions an error, else the first non-blank line, else "".
+std::string first_error_line(std::string_view log);
+
+// RFC 4648 base64 with padding.
+std::string base64(std::string_view bytes);
+
+// Labs in the order results name them, then labs that only have a build.
+std::vector<std::string> lab_order(const GradeReport& report);
+// The build of a lab, or nullptr when the report has none.
+const LabBuild* find_build(const GradeReport& report, const std::string& lab);
+
+}  // namespace gsv

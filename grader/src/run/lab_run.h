@@ -1,0 +1,60 @@
+#pragma once
+// Runs a lab binary headless on one case, in a working folder of its own, and takes only what it hands in over
+// the hand-in socket (common/io/handin.h): its image (size-checked), its JSON report and, for a lab whose cases
+// check arrays, the arrays. Nothing is read from the folder the lab wrote into. A timed run also answers the
+// grader's challenges: each timed frame drawn with settings drawn afresh, timed from the challenge to the last
+// byte of the answer, and kept for checking against the reference's frame with the same settings.
+#include "common/gl/gl_version.h"
+#include "common/image/image.h"
+#include "common/io/data_array.h"
+#include "grader/src/cases/cases.h"
+#include "grader/src/judge/grade_result.h"
+#include "grader/src/run/process.h"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace gsv {
+
+struct LabRun {
+    ProcessResult process;
+    CaseStatus status = CaseStatus::Error;  // Passed: it ran, and image is set
+    std::string detail;
+    std::optional<Image> image;
+    std::vector<DataArray> arrays;  // only for a lab that checks arrays, and not for timed runs
+    // A timed run: each challenge's settings, the frame that answered it, and the time from challenge to answer
+    // by the grader's clock (ms); median_ms is their median.
+    std::vector<std::vector<std::string>> challenges;
+    std::vector<Image> frames;
+    std::vector<double> frame_ms;
+    double median_ms = 0;
+    double reported_ms = 0;  // the lab's own claim of its frame time: shown in benchmarks, never graded
+    std::string renderer;    // GL_RENDERER as the lab's report gives it (what it ran on, in words): shown, never graded
+};
+
+struct LabRunner {
+    std::filesystem::path bin_dir;
+    std::filesystem::path root;  // GSV_ROOT for the lab (a submission's kit view); empty: the binary's own
+    bool student = false;        // its working folder is handed to the sandbox user
+    // The GL profile the lab runs on (--profile); on ES a case that declares "es" runs at that version (--gl),
+    // the others at the lab's own lowest ES version.
+    Profile profile = Profile::Core;
+
+    // The case's image at the lab's size (one frame), and its arrays where the lab checks them; or with
+    // `challenges` (one list of settings each), a timed run at the lab's timing size: one frame per challenge.
+    LabRun render(const std::string& binary, const LabCases& lab, const GradeCase& c, const ProcessLimits& limits,
+                  const std::vector<std::vector<std::string>>* challenges = nullptr) const;
+};
+
+double median(std::vector<double> values);  // 0 for none
+
+// The paths in a student process's messages as the student knows them: "labs/lab02_lic/streamline.glsl:12", not the
+// grader's copy of the submission. `student_kit`: the copy of the kit the lab ran in (or the kit itself).
+std::string as_student_sees(std::string text, const std::filesystem::path& student_kit);
+
+// Tells the failure classes apart from how the process ended and the exit status the lab framework
+// gives each (common/app/exit_status.h); Passed when it exited kExitOk.
+CaseStatus classify(const ProcessResult& r, std::string& detail);
+
+}  // namespace gsv

@@ -1,0 +1,371 @@
+#!/usr/bin/env node
+// The browser edition in headless Chromium (README, "Kinds of test": web), one browser for every page of a rasterizer:
+//  - every lab's page (the starter, as the site ships it) loads with no console error and draws its first case; a
+//    screenshot of it is kept; with --native its self-check gives 0 points (once: the not-done colour is the same on
+//    every rasterizer);
+//  - every lab's reference page draws every public case, each within its golden image's tolerance, printing the
+//    largest channel difference and the share of pixels over the tolerance; its self-check gives full marks;
+//  - with --editor: one TODO undone (gsv-make-starters --undone, opened in the editor) loses exactly that TODO's cases;
+//    a broken edit shows file:line and keeps the picture, fixing it restores it, a reload keeps the edit, and the
+//    downloaded zip is what gsv-grade --submission then grades.
+// With --native, each starter's self-check runs and its table is held against gsv-grade --self-check --profile es's on
+// the same files.
+// Usage: check_pages.js --base URL --out DIR --rasterizer NAME --kit ROOT --site WEB_BUILD --bin BIN [--editor] [--native] [--labs lab01,lab02|none]
+'use strict';
+const fs = require('fs');
+const path = require('path');
+const { execFileSync } = require('child_process');
+const { chromium } = require(path.join(__dirname, '../../web/node_modules/playwright-core'));
+
+const args = {};
+for (let i = 2; i < process.argv.length; i++) {
+  const a = process.argv[i];
+  if (a === '--editor') args.editor = true;
+  else if (a === '--native') args.native = true;
+  else args[a.replace(/^--/, '')] = process.argv[++i];
+}
+const rasterizers = {
+  // Mesa's llvmpipe (the goldens' own rasterizer) through ANGLE's GL back end, under Xvfb.
+  'angle-llvmpipe': ['--use-gl=angle', '--use-angle=gl', '--ignore-gpu-blocklist'],
+  // Chromium's own software rasterizer, independent of llvmpipe.
+  'swiftshader': ['--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
+};
+const out = path.join(args.out, args.rasterizer);
+fs.mkdirSync(out, { recursive: true });
+const labs = args.labs === 'none' ? [] : (args.labs || 'lab01,lab02,lab03,lab04,lab05,lab06,lab07').split(',');
+let failures = 0, checks = 0;
+function check(ok, line) {
+  checks++;
+  if (!ok) failures++;
+  console.log((ok ? 'ok   ' : 'FAIL ') + args.rasterizer + ' ' + line);
+}
+
+async function openPage(context, url) {
+  const page = await context.newPage();
+  const problems = [];
+  page.on('console', (m) => { if (m.type() === 'error') problems.push('console error: ' + m.text()); });
+  page.on('pageerror', (e) => problems.push('page error: ' + e.message));
+  const t0 = Date.now();
+  await page.goto(url);
+  await page.waitForFunction(() => window.gsvPage && (window.gsvPage.frames > 0 || window.gsvPage.failed), null,
+                             { timeout: 120000 });
+  const state = await page.evaluate(() => ({ failed: window.gsvPage.failed, status: document.getElementById('status').textContent }));
+  return { page, problems, state, ms: Date.now() - t0 };
+}
+
+// The canvas's pixels as the page drew them (preserveDrawingBuffer), as a data URL, and whether they are one colour.
+async function canvasPixels(page) {
+  return page.evaluate(() => {
+    const canvas = document.getElementById('canvas');
+    const copy = document.createElement('canvas');
+    copy.width = canvas.width;
+    copy.height = canvas.height;
+    const c2d = copy.getContext('2d');
+    c2d.drawImage(canvas, 0, 0);
+    const data = c2d.getImageData(0, 0, copy.width, copy.height).data;
+    let flat = true, black = true;
+    for (let i = 0; i < data.length; i += 4) {
+      if (data[i] !== data[0] || data[i + 1] !== data[1] || data[i + 2] !== data[2]) flat = false;
+      if (data[i] || data[i + 1] || data[i + 2]) black = false;
+    }
+    return { url: copy.toDataURL(), flat, black };
+  });
+}
+
+// gsv-grade's table rows (lab, check, TODO, status, points), without the details, whose numbers differ by rasterizer
+// ("identical" natively, "max diff 1" through ANGLE).
+function tableRows(table) {
+  return table.split('\n').filter((l) => /^lab\d\d  /.test(l)).map((l) => l.trim().split(/\s{2,}/).slice(0, 5).join(' | '));
+}
+// A case the page cannot draw (lab 05's L05-T2 needs ES 3.1; WebGL 2 is 3.0) is "unsupported" there and graded natively
+// at its own ES version: such rows are left out of both tables, every other row must be the same.
+function sameRows(native, inPage) {
+  const unsupported = new Set(tableRows(inPage).filter((r) => r.split(' | ')[3] === 'unsupported').map((r) => r.split(' | ')[1]));
+  const keep = (rows) => rows.filter((r) => !unsupported.has(r.split(' | ')[1]));
+  return JSON.stringify(keep(tableRows(native))) === JSON.stringify(keep(tableRows(inPage)));
+}
+
+function gradeNatively(options, name) {
+  const grades = path.join(out, name + '-grades');
+  fs.rmSync(grades, { recursive: true, force: true });
+  try {
+    return execFileSync(path.join(args.bin, 'gsv-grade'), [...options, '--no-timing', '--out', grades],
+                        { encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
+  } catch (e) {
+    return String(e.stdout || '') + String(e.stderr || '');
+  }
+}
+
+async function selfCheck(page) {
+  return page.evaluate(() => window.gsvSelfCheck.run(''));
+}
+
+function printCases(lab, result) {
+  for (const r of result.results) {
+    const share = r.total_pixels ? (100 * r.differing_pixels / r.total_pixels).toFixed(3) : '-';
+    console.log('     ' + args.rasterizer + ' ' + lab + ' ' + r.name.padEnd(16) + ' ' + r.status.padEnd(12) +
+                ' max channel diff ' + String(r.max_channel_diff).padStart(3) + ', over tolerance (' +
+                r.tolerance_max_channel_diff + ') ' + share + '% of pixels (allowed ' +
+                (100 * r.tolerance_max_differing_fraction).toFixed(2) + '%)');
+  }
+}
+
+async function starterPage(context, lab) {
+  const first = JSON.parse(fs.readFileSync(path.join(args.kit, 'grader/cases', lab + '.json'), 'utf8')).cases[0].name;
+  const { page, problems, state, ms } = await openPage(context, args.base + '/site/' + lab + '/index.html?case=' + first);
+  check(!state.failed, lab + ' page loads and draws its first case (' + first + ') in ' + ms + ' ms' + (state.failed ? ': ' + state.failed : ''));
+  const pixels = await canvasPixels(page);
+  // A starter may paint the whole picture magenta (nothing done yet): drawn, if not yet a picture.
+  check(!pixels.black, lab + ' first frame is drawn (' + (pixels.flat ? 'one colour: the starter\'s' : 'a picture') + ')');
+  await page.screenshot({ path: path.join(out, lab + '-page.png'), fullPage: true });
+  // The starter's self-check draws every case; once (with --native, against gsv-grade's table) is enough: its
+  // not-done colour is the same on every rasterizer.
+  if (!args.native) {
+    check(problems.length === 0, lab + ' no console error' + (problems.length ? ': ' + problems.join('; ') : ''));
+    await page.close();
+    return;
+  }
+  const result = await selfCheck(page);
+  check(result.score === 0 && result.max_score > 0, lab + ' starter: self-check ' + result.score + ' of ' + result.max_score + ' points');
+  {
+    const native = gradeNatively(['--self-check', '--profile', 'es', '--labs', lab], lab + '-starter');
+    check(sameRows(native, result.table), lab + ' starter: the page\'s table has gsv-grade --self-check --profile es\'s rows' +
+          (sameRows(native, result.table) ? '' : ':\n' + result.table + '\nnative:\n' + native));
+  }
+  check(problems.length === 0, lab + ' no console error' + (problems.length ? ': ' + problems.join('; ') : ''));
+  await page.close();
+}
+
+async function solutionPage(context, lab) {
+  const { page, problems, state } = await openPage(context, args.base + '/solution-pages/' + lab + '/index.html');
+  check(!state.failed, lab + ' reference page starts' + (state.failed ? ': ' + state.failed : ''));
+  check(!(await canvasPixels(page)).flat, lab + ' reference page draws a picture, not one flat colour');
+  let result = await selfCheck(page);
+  fs.writeFileSync(path.join(out, lab + '-solution-table.txt'), result.table || result.error);
+  await page.screenshot({ path: path.join(out, lab + '-reference-self-check.png'), fullPage: true });
+  const desktopOnly = result.results.filter((r) => r.status === 'unsupported');
+  check(result.score === result.max_score - desktopOnly.reduce((s, r) => s + r.max_points, 0),
+        lab + ' reference: self-check ' + result.score + ' of ' + result.max_score + ' points' +
+        (desktopOnly.length ? ' (' + desktopOnly.map((r) => r.name).join(', ') + ': desktop only)' : ''));
+  printCases(lab, result);
+  for (const r of result.results) if (r.status !== 'passed' && r.status !== 'unsupported') check(false, lab + ' ' + r.name + ': ' + r.detail);
+  check(problems.length === 0, lab + ' reference page: no console error' + (problems.length ? ': ' + problems.join('; ') : ''));
+  await page.close();
+}
+
+// One TODO undone in the reference loses that TODO's cases and no other.
+async function oneTodoUndone(context, lab, todo) {
+  const dir = path.join(out, 'undone-' + todo);
+  execFileSync(path.join(args.bin, 'gsv-make-starters'), ['--undone', todo, '--to', dir]);
+  const { page } = await openPage(context, args.base + '/solution-pages/' + lab + '/index.html');
+  const shaders = fs.readdirSync(dir).filter((n) => /\.(vert|frag|glsl|comp)$/.test(n));
+  await page.setInputFiles('#open', shaders.map((n) => path.join(dir, n)));
+  await page.waitForFunction(() => /^Opened/.test(document.getElementById('status').textContent));
+  await page.waitForTimeout(800);  // the editor's 300 ms pause, then the rebuild
+  const result = await selfCheck(page);
+  const lost = result.results.filter((r) => r.status !== 'passed').map((r) => r.name + '(' + r.todo + ')');
+  check(result.results.some((r) => r.todo === todo && r.status !== 'passed') &&
+        result.results.every((r) => r.todo !== todo || r.status !== 'passed'),
+        lab + ' ' + todo + ' undone loses every case of ' + todo + ': ' + lost.join(', '));
+  // The same files graded natively (gsv-grade --self-check --profile es): the same rows, so any other case lost is
+  // lost there too (one that draws with the undone code, such as Gooch shading under a later TODO's case).
+  const submission = path.join(out, 'undone-' + todo + '-submission');
+  const folder = fs.readdirSync(path.join(args.kit, 'solutions')).find((d) => d.startsWith(lab + '_'));
+  fs.rmSync(submission, { recursive: true, force: true });
+  fs.mkdirSync(path.join(submission, 'labs'), { recursive: true });
+  fs.cpSync(dir, path.join(submission, 'labs', folder), { recursive: true });
+  const native = gradeNatively(['--submission', submission, '--self-check', '--profile', 'es', '--labs', lab], 'undone-' + todo);
+  check(sameRows(native, result.table), lab + ' ' + todo + ' undone: the page\'s table has gsv-grade --self-check\'s rows' +
+        (sameRows(native, result.table) ? '' : ':\n' + result.table + '\nnative:\n' + native));
+  await page.evaluate(() => localStorage.clear());
+  await page.close();
+}
+
+// The editor: a broken edit, its fix, a reload, and the download graded by gsv-grade.
+async function editor(context, lab) {
+  const { page } = await openPage(context, args.base + '/solution-pages/' + lab + '/index.html');
+  await page.evaluate(() => localStorage.clear());
+  const before = (await canvasPixels(page)).url;
+  // A fragment shader the student writes in (one with a TODO), so the picture depends on it.
+  const file = await page.evaluate(() => window.gsvEditor.files().find((f) => /\.frag$/.test(f.name) && /TODO\(/.test(f.starter)).name);
+  const original = await page.evaluate((name) => window.gsvEditor.files().find((f) => f.name === name).doc.getValue(), file);
+  // A line that does not compile, after the first line of main().
+  const lines = original.split('\n');
+  const at = lines.findIndex((l) => /void main\(/.test(l)) + 1;
+  lines.splice(at + 1, 0, '    this is not GLSL;');
+  const broken = lines.join('\n');
+  await page.evaluate(([name, text]) => { window.gsvEditor.show(name); window.gsvEditor.files().find((f) => f.name === name).doc.setValue(text); }, [file, broken]);
+  await page.waitForFunction(() => document.getElementById('shader-error').textContent !== '', null, { timeout: 10000 });
+  const shown = await page.evaluate(() => document.getElementById('shader-error').textContent);
+  const expectedLine = at + 2;
+  const where = /([\w./-]+):(\d+)/.exec(shown);
+  check(where && where[1].endsWith(file) && Number(where[2]) === expectedLine,
+        lab + ' a broken edit shows the student\'s file:line: ' + shown.split('\n')[0].slice(0, 140) + ' (expected ' + file + ':' + expectedLine + ')');
+  await page.waitForTimeout(200);
+  check((await canvasPixels(page)).url === before, lab + ' the broken edit keeps the last picture');
+  await page.screenshot({ path: path.join(out, lab + '-broken-edit.png'), fullPage: true });
+  // The fix: a comment added, so the edit differs from the reference and is kept.
+  const fixed = original.replace(/void main\(\) \{/, 'void main() { // edited in the page');
+  await page.evaluate(([name, text]) => window.gsvEditor.files().find((f) => f.name === name).doc.setValue(text), [file, fixed]);
+  await page.waitForFunction(() => document.getElementById('shader-error').textContent === '', null, { timeout: 10000 });
+  await page.waitForTimeout(200);
+  check((await canvasPixels(page)).url === before, lab + ' fixing it restores the picture');
+  await page.reload();
+  await page.waitForFunction(() => window.gsvPage && window.gsvPage.frames > 0, null, { timeout: 60000 });
+  const kept = await page.evaluate((name) => window.gsvEditor.files().find((f) => f.name === name).doc.getValue(), file);
+  check(kept === fixed, lab + ' a reload keeps the edit');
+  const download = page.waitForEvent('download');
+  await page.click('#download');
+  const zip = path.join(out, lab + '-download.zip');
+  await (await download).saveAs(zip);
+  const submission = path.join(out, lab + '-submission');
+  fs.rmSync(submission, { recursive: true, force: true });
+  fs.mkdirSync(submission, { recursive: true });
+  execFileSync('python3', ['-m', 'zipfile', '-e', zip, submission]);
+  const folder = fs.readdirSync(path.join(submission, 'labs'))[0];
+  const graded = fs.readFileSync(path.join(submission, 'labs', folder, file), 'utf8');
+  check(graded === fixed, lab + ' the download holds labs/' + folder + '/' + file + ' as edited');
+  const table = gradeNatively(['--submission', submission, '--labs', lab], lab + '-download');
+  const total = /total\s+([\d.]+)\s*\/\s*([\d.]+)/.exec(table);
+  check(total && total[1] === total[2], lab + ' gsv-grade --submission grades the downloaded files: ' + (total ? total[0] : table.slice(-300)));
+  await page.evaluate(() => localStorage.clear());
+  await page.close();
+}
+
+// Each fault gives one clear line in the page, and nothing is lost.
+async function faults(context, browser) {
+  const status = (page) => page.evaluate(() => document.getElementById('status').textContent);
+  // Opened from file://: the page says to serve it.
+  const fromFile = await context.newPage();
+  await fromFile.goto('file://' + path.resolve(args.site, 'site/lab01/index.html'));
+  await fromFile.waitForTimeout(300);
+  const fileLine = await status(fromFile);
+  check(/file:\/\//.test(fileLine) && /http/.test(fileLine), 'file:// says: ' + fileLine);
+  await fromFile.close();
+  // A browser without WebGL 2: named.
+  const noGl = await context.newPage();
+  await noGl.addInitScript(() => {
+    const get = HTMLCanvasElement.prototype.getContext;
+    HTMLCanvasElement.prototype.getContext = function (kind, ...rest) { return kind === 'webgl2' ? null : get.call(this, kind, ...rest); };
+  });
+  await noGl.goto(args.base + '/site/lab01/index.html');
+  await noGl.waitForTimeout(300);
+  const glLine = await status(noGl);
+  check(/no WebGL 2/.test(glLine), 'no WebGL 2 says: ' + glLine);
+  await noGl.close();
+  // A missing extension a lab needs: the ES refusal's words.
+  // Lab 02 starts, and its frame is refused with the ES refusal's line (the page's status; no frame is drawn).
+  const noLinear = await context.newPage();
+  await noLinear.goto(args.base + '/site/lab02/index.html?without=OES_texture_float_linear');
+  await noLinear.waitForFunction(() => window.gsvPage && (window.gsvPage.frames > 0 || window.gsvPage.failed ||
+                                 (window.gsvPage.ready && document.getElementById('status').className === 'warning')),
+                                 null, { timeout: 120000 });
+  const linearLine = await status(noLinear);
+  check(/GL_OES_texture_float_linear/.test(linearLine), 'without OES_texture_float_linear lab02 says: ' + linearLine);
+  await noLinear.screenshot({ path: path.join(out, 'lab02-without-float-linear.png'), fullPage: true });
+  await noLinear.close();
+  const { page: noFloat } = await openPage(context, args.base + '/site/lab01/index.html?without=EXT_color_buffer_float');
+  await noFloat.evaluate(() => window.gsvSelfCheck.run('diffuse'));
+  const floatLine = await noFloat.evaluate(() => document.getElementById('driver-note').textContent);
+  check(/GL_EXT_color_buffer_float/.test(floatLine), 'without EXT_color_buffer_float lab01 says: ' + floatLine);
+  await noFloat.close();
+  // A file that is not one of the lab's, and storage that refuses the edits.
+  const stranger = path.join(out, 'notes.txt');
+  fs.writeFileSync(stranger, 'not a shader');
+  const refusing = await context.newPage();
+  await refusing.addInitScript(() => {
+    Storage.prototype.setItem = function () { throw new DOMException('the quota is used up', 'QuotaExceededError'); };
+  });
+  await refusing.goto(args.base + '/site/lab01/index.html');
+  await refusing.waitForFunction(() => window.gsvPage && window.gsvPage.frames > 0);
+  await refusing.setInputFiles('#open', [stranger]);
+  await refusing.waitForFunction(() => /^Not opened/.test(document.getElementById('status').textContent));
+  const openLine = await status(refusing);
+  check(/notes\.txt/.test(openLine) && /nothing else was changed/.test(openLine), 'a file not of the lab says: ' + openLine);
+  await refusing.evaluate(() => { const f = window.gsvEditor.files()[0]; f.doc.setValue(f.doc.getValue() + '\n// kept'); });
+  await refusing.waitForFunction(() => document.getElementById('storage-note').textContent !== '', null, { timeout: 5000 });
+  const storageLine = await refusing.evaluate(() => document.getElementById('storage-note').textContent);
+  const kept = await refusing.evaluate(() => window.gsvEditor.files()[0].doc.getValue().endsWith('// kept'));
+  check(/only copy/.test(storageLine) && kept, 'storage refused says: ' + storageLine + (kept ? ' (the edit stays in the editor)' : ' (the edit is LOST)'));
+  // A lost context: one line, edits kept.
+  await refusing.evaluate(() => {
+    window.gsvTestLoseContext = document.getElementById('canvas').getContext('webgl2').getExtension('WEBGL_lose_context');
+    window.gsvTestLoseContext.loseContext();
+  });
+  await refusing.waitForTimeout(300);
+  const lostLine = await status(refusing);
+  const stillThere = await refusing.evaluate(() => window.gsvEditor.files()[0].doc.getValue().endsWith('// kept'));
+  check(/WebGL context/.test(lostLine) && stillThere, 'a lost context says: ' + lostLine);
+  // Given back: the lab's GPU objects went with the old context, so the line says to reload; the edit is still there.
+  await refusing.evaluate(() => window.gsvTestLoseContext.restoreContext());
+  await refusing.waitForFunction(() => /came back/.test(document.getElementById('status').textContent), null, { timeout: 10000 });
+  const backLine = await status(refusing);
+  const keptAfter = await refusing.evaluate(() => window.gsvEditor.files()[0].doc.getValue().endsWith('// kept'));
+  check(/reload/.test(backLine) && keptAfter, 'a restored context says: ' + backLine);
+  await refusing.screenshot({ path: path.join(out, 'lab01-context-lost.png'), fullPage: true });
+  await refusing.close();
+}
+
+// A deck beside its live lab (the decks are there where the slides test or scripts/kit slides built them).
+async function deckWithLiveLab(context) {
+  const deck = path.resolve(args.site, 'site/slides/01-gooch.html');
+  if (!fs.existsSync(deck)) {
+    console.log('     ' + args.rasterizer + ': no deck in site/slides (the slides test, or scripts/kit slides, builds them): the deck screenshot is skipped');
+    return;
+  }
+  const page = await context.newPage();
+  await page.setViewportSize({ width: 1024, height: 768 });
+  await page.goto(args.base + '/site/slides/01-gooch.html');
+  const last = await page.evaluate(() => document.querySelectorAll('body > section').length);
+  await page.goto(args.base + '/site/slides/01-gooch.html#' + last);
+  await page.waitForTimeout(1500);  // dzslides' transition
+  const frame = page.frames().find((f) => /lab01\/index\.html/.test(f.url()));
+  if (frame) await frame.waitForFunction(() => window.gsvPage && (window.gsvPage.frames > 0 || window.gsvPage.failed), null, { timeout: 60000 });
+  check(!!frame, 'the lab 01 deck\'s last slide holds the live lab');
+  await page.waitForTimeout(500);
+  await page.screenshot({ path: path.join(out, 'deck-01-live-lab.png') });
+  await page.close();
+}
+
+(async () => {
+  const browser = await chromium.launch({
+    executablePath: process.env.GSV_CHROMIUM || '/usr/bin/chromium', headless: true,
+    args: ['--no-sandbox', ...rasterizers[args.rasterizer]],
+  });
+  const context = await browser.newContext({ acceptDownloads: true, viewport: { width: 1280, height: 900 } });
+  const probe = await context.newPage();
+  await probe.goto(args.base + '/site/index.html');
+  const renderer = await probe.evaluate(() => {
+    const gl = document.createElement('canvas').getContext('webgl2');
+    const info = gl && gl.getExtension('WEBGL_debug_renderer_info');
+    return gl ? (info ? gl.getParameter(info.UNMASKED_RENDERER_WEBGL) : gl.getParameter(gl.RENDERER)) : 'no WebGL 2';
+  });
+  console.log('     ' + args.rasterizer + ': WebGL 2 on ' + renderer);
+  await probe.screenshot({ path: path.join(out, 'index.png'), fullPage: true });
+  await probe.close();
+  for (const lab of labs) {
+    const t0 = Date.now();
+    try {
+      await starterPage(context, lab);
+      await solutionPage(context, lab);
+    } catch (e) {
+      check(false, lab + ': ' + e.message.split('\n')[0]);
+    }
+    console.log('     ' + args.rasterizer + ' ' + lab + ': its pages took ' + ((Date.now() - t0) / 1000).toFixed(0) + ' s');
+  }
+  if (args.editor) {
+    const t0 = Date.now();
+    try {
+      await oneTodoUndone(context, 'lab01', 'L01-T4');
+      await editor(context, 'lab01');
+      await faults(context, browser);
+      await deckWithLiveLab(context);
+    } catch (e) {
+      check(false, 'editor: ' + e.message.split('\n')[0]);
+    }
+    console.log('     ' + args.rasterizer + ': one TODO undone, the editor, the faults and the deck took ' + ((Date.now() - t0) / 1000).toFixed(0) + ' s');
+  }
+  await browser.close();
+  console.log(args.rasterizer + ': ' + (checks - failures) + ' passed, ' + failures + ' failed');
+  process.exit(failures ? 1 : 0);
+})();

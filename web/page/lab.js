@@ -1,0 +1,358 @@
+// A lab's page: starts the lab's WebAssembly in web mode (common/app/app_web.cpp), builds the controls from the lab's
+// own declarations, draws when something changed, and hands the student's shader edits to the lab's shader library.
+// Everything the page says goes on one status line; the tests read window.gsvPage.
+'use strict';
+(function () {
+  const $ = (id) => document.getElementById(id);
+  const lab = document.body.dataset.lab;
+  const query = new URLSearchParams(location.search);
+  const page = window.gsvPage = {
+    lab, ready: false, failed: '', frames: 0, lastFrameMs: NaN, description: null, errors: [], log: [],
+    dirty: true, playing: false, caseIndex: -1, view: 'yours',
+  };
+
+  function say(line, kind) {
+    const status = $('status');
+    status.textContent = line;
+    status.className = kind || '';
+    if (kind === 'error') page.failed = line;
+  }
+  function log(line) {
+    page.log.push(line);
+    $('log').textContent += line + '\n';
+  }
+  page.say = say;
+
+  // Faults that stop the page before anything is loaded, each in one line.
+  if (location.protocol === 'file:') {
+    say('This page was opened from file://, where a browser will not load its WebAssembly and data: serve the folder ' +
+        '(scripts/kit serve, or any static web server) and open it through http://.', 'error');
+    return;
+  }
+  const probe = document.createElement('canvas');
+  if (!probe.getContext('webgl2')) {
+    const webgl1 = !!probe.getContext('webgl');
+    say('This browser gives the page no WebGL 2 context' + (webgl1 ? ' (it has WebGL 1 only)' : ' (nor WebGL 1)') +
+        ': the labs need WebGL 2, which is OpenGL ES 3.0. A current Chrome, Edge, Firefox or Safari has it; ' +
+        'check that hardware acceleration is on.', 'error');
+    return;
+  }
+
+  // An extension hidden from the lab, to see the page without it (and to test that): ?without=OES_texture_float_linear.
+  for (const name of query.getAll('without')) {
+    const proto = WebGL2RenderingContext.prototype;
+    const supported = proto.getSupportedExtensions, get = proto.getExtension;
+    proto.getSupportedExtensions = function () { return (supported.call(this) || []).filter((e) => e !== name); };
+    proto.getExtension = function (e) { return e === name ? null : get.call(this, e); };
+  }
+
+  window.Module = {
+    canvas: $('canvas'),
+    noInitialRun: true,
+    print: (line) => log(line),
+    // The lab's stderr is its messages (the GL it got, a refusal, a note such as "frames render into RGBA8"): the
+    // page's log, and once it runs its status line, not console errors.
+    printErr: (line) => {
+      log(line);
+      if (!page.ready || !line.startsWith(lab + ':')) return;
+      say(line, 'warning');
+      // What the browser's driver lacks (an extension, so a fallback) stays in view after the status line moves on.
+      if (/ lacks GL_| needs GL_/.test(line)) {
+        const note = $('driver-note');
+        if (!note.textContent.includes(line)) note.textContent += (note.textContent ? '\n' : '') + line;
+        note.hidden = false;
+      }
+    },
+    onRuntimeInitialized: () => start(),
+    onAbort: (what) => say('The lab stopped: ' + what + ' (reload the page; your edits are kept).', 'error'),
+  };
+  const script = document.createElement('script');
+  script.src = lab + '.js';
+  script.onerror = () => say('Could not load ' + script.src + ': is the page served from its built folder?', 'error');
+  document.body.appendChild(script);
+
+  // The lab's size (the case file's "size"), so the picture is the one its cases and golden images have.
+  function labSize(root) {
+    try {
+      const cases = JSON.parse(Module.FS.readFile(root + '/grader/cases/' + lab + '.json', { encoding: 'utf8' }));
+      return cases.size || '512x512';
+    } catch (e) {
+      return '512x512';
+    }
+  }
+
+  function run(args) {
+    try {
+      Module.callMain(args);
+    } catch (e) {
+      if (!(e && e.name === 'ExitStatus')) log(String(e) + (e && e.stack ? '\n' + e.stack : ''));
+    }
+    try {
+      return JSON.parse(Module.describe());
+    } catch (e) {
+      return null;
+    }
+  }
+
+  function start() {
+    const root = '/kit';
+    const args = ['web', '--size', query.get('size') || labSize(root)];
+    if (query.get('case')) args.push('--case', query.get('case'));
+    const before = page.log.length;
+    const editor = window.gsvEditor;
+    // The student's edits go in before the lab starts; a lab cannot start with a broken shader, so where they do not
+    // build, it starts from the starter and the edits are then reloaded (the error shown, the starter's picture kept).
+    const restored = editor ? editor.restoreIntoFiles(root, lab) : 0;
+    let description = run(args);
+    if (!description && restored && editor) {
+      editor.writeStarterFiles();
+      description = run(args);
+      if (description) editor.writeEditedFiles();
+    }
+    if (!description) {
+      const lines = page.log.slice(before).filter((l) => l.startsWith(lab + ':') && !/ backend$/.test(l));
+      say(lines.length ? lines[lines.length - 1] : 'The lab did not start (see its output below).', 'error');
+      return;
+    }
+    page.description = description;
+    const canvas = $('canvas');
+    canvas.style.width = description.width + 'px';
+    canvas.style.height = description.height + 'px';
+    buildControls(description.params);
+    buildCases(description.cases);
+    bindKeysAndMouse();
+    watchContext(canvas);
+    page.ready = true;
+    say(description.title + ' (' + description.variant + ') on ' + description.gl);
+    if (editor) editor.open(description, () => { page.dirty = true; });
+    if (window.gsvSelfCheck) window.gsvSelfCheck.attach(description);
+    requestAnimationFrame(loop);
+  }
+
+  // Drawn only when something changed (or while playing): an idle page costs nothing.
+  let lastTime = 0;
+  function loop(time) {
+    if (page.lost) return;
+    if (page.playing) {
+      const error = Module.play(lastTime ? (time - lastTime) / 1000 : 0);
+      if (error) say(error, 'warning');
+      page.dirty = true;
+      refreshStates();
+    }
+    lastTime = time;
+    if (page.dirty) {
+      page.dirty = false;
+      const ms = Module.draw();
+      if (ms >= 0) {
+        page.frames++;
+        if (page.frames === 1) page.firstFrameMs = performance.now();  // since navigation began
+        page.lastFrameMs = ms;
+        $('frame-time').textContent = 'frame ' + ms.toFixed(1) + ' ms, ' + frameTimeNote();
+      } else {
+        say(Module.status(), 'warning');
+        refreshStates();
+      }
+    }
+    requestAnimationFrame(loop);
+  }
+
+  // glFinish brackets the frame natively; in the page, WebGL's finish() returns early, so the frame is bracketed by a
+  // one-pixel read-back, which waits for the browser's GPU process to run every command before it.
+  function frameTimeNote() {
+    return 'bracketed by a one-pixel read-back, which waits for the GPU';
+  }
+
+  function changed(error) {
+    if (error) say(error, 'warning');
+    else if ($('status').className === 'warning') say(page.description.title + ' on ' + page.description.gl);
+    page.dirty = true;
+    refreshStates();
+  }
+  page.changed = changed;
+
+  // ---- Controls from the lab's declarations (common/app/page_description.cpp) ----
+  const controls = new Map();
+
+  function buildControls(params) {
+    const form = $('controls');
+    form.textContent = '';
+    for (const p of params) {
+      const row = document.createElement('div');
+      row.className = 'param';
+      const label = document.createElement('label');
+      label.textContent = p.name;
+      label.title = p.help;
+      const input = makeInput(p);
+      input.id = 'param-' + p.name;
+      input.name = p.name;
+      label.htmlFor = input.id;
+      const value = document.createElement('output');
+      const note = document.createElement('small');
+      note.className = 'why';
+      row.append(label, input, value, note);
+      const help = document.createElement('small');
+      help.className = 'help';
+      help.textContent = p.help + (p.compile_time ? ' (compiled in)' : '') + (p.knob ? ' (the accuracy knob)' : '');
+      row.append(help);
+      form.append(row);
+      controls.set(p.name, { spec: p, row, input, value, note });
+      input.addEventListener(p.kind === 'float' || p.kind === 'int' ? 'input' : 'change', () => {
+        changed(Module.setParam(p.name, readInput(p, input)));
+      });
+    }
+    refreshStates();
+  }
+
+  function makeInput(p) {
+    if (p.kind === 'choice') {
+      const select = document.createElement('select');
+      for (const c of p.choices) select.append(new Option(c, c));
+      return select;
+    }
+    const input = document.createElement('input');
+    if (p.kind === 'bool') input.type = 'checkbox';
+    else if (p.kind === 'float' || p.kind === 'int') {
+      input.type = 'range';
+      input.min = p.min;
+      input.max = p.max;
+      input.step = p.kind === 'int' ? 1 : 'any';
+    } else input.type = 'text';  // vec3 as "x,y,z", a file by its path
+    return input;
+  }
+
+  function readInput(p, input) {
+    if (p.kind === 'bool') return input.checked ? 'on' : 'off';
+    return input.value;
+  }
+
+  function refreshStates() {
+    for (const s of JSON.parse(Module.states())) {
+      const c = controls.get(s.name);
+      if (!c) continue;
+      if (c.spec.kind === 'bool') c.input.checked = s.value === 'on';
+      else if (document.activeElement !== c.input || c.spec.kind === 'choice') c.input.value = s.value;
+      c.value.textContent = c.spec.kind === 'bool' ? '' : s.value;
+      // Greyed with the window's reason: what would enable it.
+      c.input.disabled = !!s.inactive;
+      c.row.classList.toggle('inactive', !!s.inactive);
+      c.note.textContent = s.inactive ? 'no effect now: it ' + s.inactive : '';
+      c.row.title = s.inactive ? 'no effect now: it ' + s.inactive : '';
+    }
+  }
+
+  // ---- Named cases ----
+  function buildCases(cases) {
+    const select = $('case');
+    for (const c of cases) select.append(new Option(c.name + (c.todo ? ' (' + c.todo + ')' : ' (demo)'), c.name));
+    select.addEventListener('change', () => pickCase(select.selectedIndex - 1));
+    const initial = query.get('case');
+    if (initial) select.value = initial;
+    describeCase();
+  }
+
+  function describeCase() {
+    const c = page.description.cases[$('case').selectedIndex - 1];
+    $('case-description').textContent = c ? c.description + (c.settings.length ? ' — ' + c.settings.join(' ') : '') : '';
+  }
+
+  function pickCase(index) {
+    const cases = page.description.cases;
+    page.caseIndex = index;
+    $('case').selectedIndex = index + 1;
+    describeCase();
+    changed(Module.applyCase(index >= 0 ? cases[index].name : ''));
+    if (page.view !== 'yours') showView();
+  }
+  page.pickCase = (name) => pickCase(page.description.cases.findIndex((c) => c.name === name));
+
+  // ---- Keys and the mouse, as the window has them ----
+  function bindKeysAndMouse() {
+    const canvas = $('canvas');
+    let drag = null;
+    canvas.addEventListener('pointerdown', (e) => {
+      drag = { x: e.clientX, y: e.clientY };
+      canvas.setPointerCapture(e.pointerId);
+      canvas.focus();
+    });
+    canvas.addEventListener('pointerup', () => { drag = null; });
+    canvas.addEventListener('pointermove', (e) => {
+      if (!drag) return;
+      const dx = e.clientX - drag.x, dy = e.clientY - drag.y;
+      drag = { x: e.clientX, y: e.clientY };
+      changed(Module.orbit(dx, dy, 0));
+    });
+    canvas.addEventListener('wheel', (e) => {
+      e.preventDefault();
+      changed(Module.orbit(0, 0, e.deltaY < 0 ? 1 : -1));
+    }, { passive: false });
+    document.addEventListener('keydown', (e) => {
+      const target = e.target;
+      if (target.closest && (target.closest('.CodeMirror') || ['INPUT', 'SELECT', 'TEXTAREA'].includes(target.tagName))) return;
+      const key = e.key.length === 1 ? e.key.toUpperCase() : e.key;
+      if (key === 'C') pickCase((page.caseIndex + 1) % page.description.cases.length);
+      else if (key === 'V') nextView();
+      else if (key === 'S') savePicture();
+      else if (key === 'U') document.body.classList.toggle('panel-hidden');
+      else if (key === ' ') togglePlay();
+      else return;
+      e.preventDefault();
+    });
+  }
+
+  function togglePlay() {
+    const axis = page.description.params.find((p) => p.animated);
+    if (!axis) {
+      say(page.description.lab + ' has no animated parameter to play', 'warning');
+      return;
+    }
+    page.playing = !page.playing;
+    lastTime = 0;
+    say((page.playing ? 'playing ' : 'paused ') + axis.name);
+  }
+
+  function savePicture() {
+    $('canvas').toBlob((blob) => {
+      const a = document.createElement('a');
+      a.href = URL.createObjectURL(blob);
+      a.download = lab + '-screenshot.png';
+      a.click();
+    });
+  }
+
+  // V: yours, then the current case's golden image, then yours | golden | difference (the self-check's compare view).
+  function nextView() {
+    const views = ['yours', 'golden', 'compare'];
+    page.view = views[(views.indexOf(page.view) + 1) % views.length];
+    showView();
+  }
+
+  function showView() {
+    const overlay = $('overlay');
+    const c = page.description.cases[page.caseIndex];
+    if (page.view === 'yours' || !c || !c.todo || !window.gsvSelfCheck) {
+      overlay.hidden = true;
+      if (page.view !== 'yours') say('V compares a graded case with its golden image: pick one with C first', 'warning');
+      page.view = 'yours';
+      return;
+    }
+    const url = page.view === 'golden' ? window.gsvSelfCheck.goldenUrl(c.name) : window.gsvSelfCheck.compareUrl(c.name);
+    overlay.src = url;
+    overlay.hidden = false;
+    say('view: ' + (page.view === 'golden' ? 'the golden image of ' + c.name : 'yours | golden | difference, ' + c.name));
+  }
+
+  // ---- A lost WebGL context: restored where the browser gives it back, else one line; the edits are kept ----
+  function watchContext(canvas) {
+    canvas.addEventListener('webglcontextlost', (e) => {
+      e.preventDefault();  // asks the browser to restore it
+      page.lost = true;
+      say('The browser took the WebGL context away (too many pages using the GPU, or a driver reset): waiting for it ' +
+          'to come back. Your edits are kept; reload the page if the picture does not return.', 'error');
+      if (window.gsvEditor) window.gsvEditor.saveAll();
+    });
+    canvas.addEventListener('webglcontextrestored', () => {
+      say('The WebGL context came back, but the lab\'s GPU objects are gone with the old one: reload the page to go ' +
+          'on (your edits are kept in this browser).', 'error');
+    });
+  }
+})();
