@@ -16,7 +16,8 @@ const char* const kGradeUsage =
     " [--labs lab01,lab02] [--cases gyre,wrap] [--todo L02-T3] [--seed N] [--self-check] [--no-timing]\n"
     "                 [--public-only] [--profile core|es]"
     " [--timeout S] [--fail-under F] [--update-goldens] [--allow-readable-kit] [--no-namespaces]\n"
-    "                 [--no-sandbox] [--build-all] [--quiet] [--help] [--version]\n"
+    "                 [--no-sandbox] [--build-all] [--fresh-references] [--grader-cache DIR] [--regrade-only changed]\n"
+    "                 [--quiet] [--help] [--version]\n"
     "  --kit DIR         the kit (cases, goldens, hidden cases, solutions); default: the one this was built from\n"
     "  --bin DIR         the kit's built labs and <lab>_solution; default: this build's bin/\n"
     "  --submission DIR  a copy of the kit whose labs/ hold a student's work: built against this kit, then graded\n"
@@ -41,6 +42,14 @@ const char* const kGradeUsage =
     "                    references anyway; without it they are refused there, and the report says which walls were up\n"
     "  --no-namespaces   every wall but the namespaces: how the grader behaves where unshare is refused\n"
     "  --no-sandbox      run student code without namespaces and limits (to debug the grader only)\n"
+    "  --regrade-only changed  grade only the labs whose inputs (the student's lab folder, the kit's files for that lab\n"
+    "                    and those all labs share, the built labs and gsv-grade, the seed and options) changed since the\n"
+    "                    last run in --out, and keep the others' rows from it; with --batch, for each submission. Without\n"
+    "                    --seed, the last run's seed\n"
+    "  --fresh-references  render every live reference in this run (and store it anew) rather than take one kept in\n"
+    "                    <bin>/../grader-cache/references by an earlier run with the same kit, build, driver and case\n"
+    "  --grader-cache DIR  where earlier builds (DIR/builds) and live references (DIR/references) are kept; default\n"
+    "                    <bin>/../grader-cache\n"
     "  --build-all       compile every lab of a submission, even one whose C++ is byte for byte the kit's starter's\n"
     "                    (otherwise the kit's binary) or an earlier build's (kept in <bin>/../grader-cache/builds)\n"
     "       gsv-grade merge OUT SHARD_OUT...  the --out folders of a batch's shards joined into OUT (new or empty):\n"
@@ -106,6 +115,19 @@ GradeAction read_grade_command(int argc, char** argv, GradeCommand& command) {
         else if (a == "--public-only") flag(options.hidden, false);
         else if (a == "--no-sandbox") flag(options.sandbox, false);
         else if (a == "--build-all") flag(options.reuse_builds, false);
+        else if (a == "--fresh-references") flag(options.stored_references, false);
+        else if (a == "--grader-cache") {
+            const std::filesystem::path cache = std::filesystem::absolute(value());
+            options.build_cache = cache / "builds";
+            options.reference_store = cache / "references";
+            pass_through.insert(pass_through.end(), {a, cache.string()});
+        }
+        else if (a == "--regrade-only") {
+            const std::string what = value();
+            if (what != "changed") throw Error("--regrade-only takes 'changed' (the labs whose inputs changed), got '" + what + "'");
+            command.regrade_only_changed = true;
+            pass_through.insert(pass_through.end(), {a, what});
+        }
         else if (a == "--allow-readable-kit") flag(options.allow_readable_kit, true);
         else if (a == "--no-namespaces") flag(options.namespaces, false);
         else if (a == "--todo") {
@@ -133,6 +155,7 @@ GradeAction read_grade_command(int argc, char** argv, GradeCommand& command) {
                     std::string(profile_name(options.profile)));
     if (command.batch.empty() && !command.shard.empty()) throw Error("--shard " + command.shard + " needs --batch DIR");
     if (command.batch.empty() && !command.roster.empty()) throw Error("--roster needs --batch DIR");
+    if (command.update_goldens && command.regrade_only_changed) throw Error("--regrade-only grades; --update-goldens rewrites the goldens");
     return GradeAction::Grade;
 }
 

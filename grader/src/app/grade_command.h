@@ -17,6 +17,9 @@ struct GradeCommand {
     bool update_goldens = false;  // rewrite the committed goldens instead of grading (grader/src/golden/golden_update.h)
     double fail_under = -1;       // exit kGradeFailed under this share of the maximum score; < 0: no gate
     bool quiet = false;           // no progress and no table
+    // --regrade-only changed: grade only the labs whose inputs changed since the last run in --out, keep the others'
+    // rows (grader/src/grade/regrade.h).
+    bool regrade_only_changed = false;
     std::filesystem::path batch;  // a folder of submissions; empty: one
     int workers = 2;
     std::string shard;            // K/N of a batch

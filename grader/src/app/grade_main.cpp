@@ -15,6 +15,7 @@
 #include "grader/src/golden/golden_update.h"
 #include "grader/src/grade/grade.h"
 #include "grader/src/grade/grade_exit.h"
+#include "grader/src/grade/regrade.h"
 #include "grader/src/report/report.h"
 #include "grader/src/report/report_format.h"
 
@@ -139,11 +140,49 @@ int rewrite_goldens(const gsv::GradeCommand& command) {
     return failed ? gsv::kGradeFailed : gsv::kGradeOk;
 }
 
-// One submission, or the kit's own labs/: the reports, the table, and the exit status a CI gate reads.
-int grade_one(const gsv::GradeCommand& command) {
-    const gsv::GradeOptions& options = command.options;
-    const gsv::GradeReport report = gsv::grade(options, print_progress);
+// The run, or with --regrade-only changed only the labs whose inputs changed since the last run in --out, merged
+// with that run's rows of the others (grader/src/grade/regrade.h). Every run records its labs' inputs for the next.
+gsv::GradeReport grade_changed(const gsv::GradeCommand& command, const char* argv0) {
+    gsv::GradeOptions options = command.options;
+    if (command.regrade_only_changed && !options.seed) {
+        // The same hidden cases as the last run, where no seed is given.
+        try {
+            options.seed = gsv::read_report_json(options.out_dir / "report.json").seed;
+        } catch (const gsv::Error&) {
+        }
+    }
+    if (!options.seed) options.seed = gsv::fresh_seed();
+    const std::vector<std::string> labs = gsv::labs_of_run(options);
+    const gsv::LabInputs inputs = gsv::lab_inputs(options, labs, *options.seed, gsv::Assets::executable_path(argv0));
+    gsv::GradeReport report;
+    if (!command.regrade_only_changed) {
+        report = gsv::grade(options, print_progress);
+    } else {
+        const gsv::RegradePlan plan = gsv::plan_regrade(options.out_dir, inputs);
+        if (!plan.note.empty()) std::fprintf(stderr, "gsv-grade: --regrade-only changed: %s\n", plan.note.c_str());
+        if (!plan.earlier) {
+            report = gsv::grade(options, print_progress);
+            report.regraded = labs;
+        } else if (plan.regrade.empty()) {
+            report = *plan.earlier;
+            report.regraded.clear();
+            report.kept = plan.keep;
+        } else if (const std::optional<gsv::GradeOptions> regrade = gsv::options_for_regrade(options, plan)) {
+            report = gsv::merge_regraded(*plan.earlier, gsv::grade(*regrade, print_progress), plan, labs);
+        } else {
+            // None of the asked cases is in the labs to regrade: nothing of them to grade.
+            report = gsv::merge_regraded(*plan.earlier, *plan.earlier, plan, labs);
+        }
+    }
     gsv::write_reports(report, options.out_dir);
+    gsv::write_lab_inputs(options.out_dir, inputs);
+    return report;
+}
+
+// One submission, or the kit's own labs/: the reports, the table, and the exit status a CI gate reads.
+int grade_one(const gsv::GradeCommand& command, const char* argv0) {
+    const gsv::GradeOptions& options = command.options;
+    const gsv::GradeReport report = grade_changed(command, argv0);
     if (!quiet) {
         std::printf("%s", gsv::score_table(report).c_str());
         std::printf("reports (report.html, junit.xml, results.json, report.json) and images in %s\n", options.out_dir.c_str());
@@ -183,7 +222,7 @@ int main(int argc, char** argv) {
         // Before any build or lab runs: a grading that cannot write its reports says so first (a batch once its
         // command line is known good, so that a refused one leaves no folder behind).
         gsv::prepare_output_folder(command.options.out_dir, "--out");
-        return command.update_goldens ? rewrite_goldens(command) : grade_one(command);
+        return command.update_goldens ? rewrite_goldens(command) : grade_one(command, argv[0]);
     } catch (const gsv::Error& e) {
         std::fprintf(stderr, "gsv-grade: %s\n", e.what());
         // A submission that could not be graded at all still gets a results.json saying why (Gradescope

@@ -111,6 +111,14 @@ std::vector<BatchEntry> grade_batch(const BatchOptions& options, void (*progress
                 entry.score = results.number_at("score");
                 for (const Json& t : results.array_at("tests").as_array()) entry.max_score += t.number_at("max_score");
                 entry.graded = true;
+                // --regrade-only changed: which labs were graded again (grader/src/grade/regrade.h).
+                const Json report = fs::exists(out / "report.json") ? read_json_file(out / "report.json") : Json::object();
+                if (const Json* kept = report.find("kept"); kept && kept->size() > 0) {
+                    entry.regraded.clear();
+                    for (const Json& lab : report.array_at("regraded").as_array())
+                        entry.regraded += (entry.regraded.empty() ? "" : ", ") + lab.as_string();
+                    if (entry.regraded.empty()) entry.regraded = "none";
+                }
             } catch (const Error& e) {
                 entry.problem = e.what();
             }
@@ -127,14 +135,14 @@ std::vector<BatchEntry> grade_batch(const BatchOptions& options, void (*progress
 
 std::string class_csv(const std::vector<BatchEntry>& entries) {
     std::ostringstream out;
-    out << "submission,graded,score,max_score,seconds,problem\n";
+    out << "submission,graded,score,max_score,seconds,problem,regraded\n";
     for (const auto& e : entries) {
         std::string problem = e.problem;
         std::replace(problem.begin(), problem.end(), '"', '\'');
         std::replace(problem.begin(), problem.end(), '\n', ' ');
         char line[128];
         std::snprintf(line, sizeof line, ",%s,%g,%g,%.1f,", e.graded ? "yes" : "no", e.score, e.max_score, e.seconds);
-        out << '"' << e.name << '"' << line << '"' << problem << "\"\n";
+        out << '"' << e.name << '"' << line << '"' << problem << "\",\"" << (e.graded ? e.regraded : "") << "\"\n";
     }
     return out.str();
 }
@@ -142,12 +150,14 @@ std::string class_csv(const std::vector<BatchEntry>& entries) {
 std::string class_table(const std::vector<BatchEntry>& entries) {
     std::ostringstream out;
     char line[512];
-    std::snprintf(line, sizeof line, "%-24s %12s %8s  %s\n", "submission", "score", "seconds", "problem");
+    // The regraded column only where some submission kept rows from the last run.
+    const bool regrade = std::any_of(entries.begin(), entries.end(), [](const BatchEntry& e) { return e.graded && e.regraded != "all"; });
+    std::snprintf(line, sizeof line, "%-24s %12s %8s  %s\n", "submission", "score", "seconds", regrade ? "regraded / problem" : "problem");
     out << line;
     for (const auto& e : entries) {
         const std::string score = e.graded ? format_points(e.score) + " / " + format_points(e.max_score) : "-";
-        std::snprintf(line, sizeof line, "%-24s %12s %8.1f  %s\n", e.name.c_str(), score.c_str(), e.seconds,
-                      e.graded ? "" : e.problem.substr(0, 80).c_str());
+        const std::string last = e.graded ? (regrade ? e.regraded : "") : e.problem;
+        std::snprintf(line, sizeof line, "%-24s %12s %8.1f  %s\n", e.name.c_str(), score.c_str(), e.seconds, last.substr(0, 80).c_str());
         out << line;
     }
     return out.str();

@@ -40,6 +40,9 @@ struct BatchEntry {
     double score = 0, max_score = 0;
     double seconds = 0;
     std::string problem;   // why it was not graded
+    // Which labs this run graded: "all", or with --regrade-only changed the labs whose inputs changed ("lab03, lab05"),
+    // or "none" (every lab's rows kept from the last run).
+    std::string regraded = "all";
 };
 
 // The entries of this shard, in class order; `class_names`, when given, gets the whole class, sorted.

@@ -48,8 +48,12 @@ std::vector<std::string> recorded_options(const std::vector<std::string>& pass_t
             ++i;
             continue;
         }
-        // The grades are the same either way (grader/submission.h): shards may differ in it.
-        if (pass_through[i] == "--build-all") continue;
+        // The grades are the same either way (run/submission.h, run/reference_store.h): shards may differ in them.
+        if (pass_through[i] == "--build-all" || pass_through[i] == "--fresh-references") continue;
+        if (pass_through[i] == "--regrade-only" || pass_through[i] == "--grader-cache") {
+            ++i;
+            continue;
+        }
         kept.push_back(pass_through[i]);
     }
     return kept;
@@ -76,6 +80,7 @@ void write_batch_record(const BatchRecord& record, const fs::path& out_dir) {
         row["max_score"] = e.max_score;
         row["seconds"] = e.seconds;
         row["problem"] = e.problem;
+        row["regraded"] = e.regraded;
         rows.push_back(row);
     }
     root["entries"] = rows;
@@ -111,6 +116,7 @@ BatchRecord read_batch_record(const fs::path& out_dir) {
         e.max_score = row.number_at("max_score");
         e.seconds = row.number_at("seconds");
         e.problem = row.string_at("problem");
+        if (const Json* regraded = row.find("regraded")) e.regraded = regraded->as_string();
         record.entries.push_back(e);
     }
     return record;

@@ -49,6 +49,10 @@ struct GradeOptions {
     unsigned sandbox_uid = 0;
     std::string todo;                   // only the cases of this TODO ("L02-T3"); empty: all
     std::shared_ptr<ReferenceCache> reference_cache;  // shared between runs in one process; none: no cache
+    // Live references kept on disk across runs (grader/src/run/reference_store.h); empty: <bin_dir>/../grader-cache/
+    // references. Used only where the allow-list walls are up.
+    std::filesystem::path reference_store;
+    bool stored_references = true;      // false (--fresh-references): render every live reference (and store it anew)
     std::optional<std::uint64_t> seed;  // hidden cases; none: a fresh seed, recorded in the report
     double timeout_s = 0;               // per student process; 0: the case file's timeout_s (always the reference's)
     // The profile both the student's lab and the reference run on. On ES each lab runs at its lowest ES version

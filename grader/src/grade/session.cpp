@@ -57,9 +57,25 @@ void GradingSession::set_up() {
     const bool own_labs = options.submission.empty() && options.student_bin_dir.empty();
     student = LabRunner{student_bin, own_labs ? fs::path() : student_root, true, options.profile};
     reference = LabRunner{bin, "", false, options.profile};
+    // Live references kept across runs, but only where student code cannot write them: behind the allow-list.
+    if (purpose_ == RunPurpose::Grade && any_live) {
+        if (options.sandbox && support_.allow_list()) {
+            reference_store_.emplace(options.reference_store.empty() ? bin.parent_path() / "grader-cache" / "references"
+                                                                      : fs::absolute(options.reference_store));
+            reference_context_ = reference_context(kit);
+        } else {
+            report.references = "rendered in this run; none kept on disk, where the walls are down student code could change them";
+        }
+    }
 }
 
 GradeReport GradingSession::finish() {
+    if (reference_store_) {
+        report.references = std::to_string(references_rendered_) + " rendered, " + std::to_string(reference_store_->hits()) +
+                            " from the store (" + reference_store_->folder().string() + ")" +
+                            (options.stored_references ? "" : " (--fresh-references: none read)");
+        if (!reference_store_->problem().empty()) report.references += "; " + reference_store_->problem();
+    }
     report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     return report;
 }
@@ -104,14 +120,42 @@ ProcessLimits GradingSession::limits(const LabCases& lab, bool student) const {
     return l;
 }
 
+// Everything the reference's render of a case depends on: its command line (grader/src/run/lab_run.cpp's render), with
+// the binary and the kit as fingerprints of their bytes, and the driver and its environment (reference_context).
+std::string GradingSession::reference_key(const LabCases& lab, const GradeCase& c) {
+    const std::string binary = lab.lab + "_solution";
+    auto fingerprint = solution_fingerprints_.find(binary);
+    if (fingerprint == solution_fingerprints_.end())
+        fingerprint = solution_fingerprints_.emplace(binary, file_fingerprint(bin / binary)).first;
+    std::string key = reference_context_ + "binary " + binary + " " + fingerprint->second + "\nrender --size " +
+                      std::to_string(lab.width) + "x" + std::to_string(lab.height) + (lab.checks_arrays() ? " --arrays" : "") +
+                      " --profile " + profile_name(options.profile);
+    if (options.profile == Profile::Es && c.es_version) key += " --gl " + c.es_version->str();
+    for (const auto& s : c.settings) key += "\n--set " + s;
+    return key + "\n";
+}
+
 LabRun GradingSession::reference_render(const LabCases& lab, const GradeCase& c) {
-    if (!options.reference_cache) return reference.render(lab.lab + "_solution", lab, c, limits(lab, false));
+    const auto render = [&] {
+        ++references_rendered_;
+        return reference.render(lab.lab + "_solution", lab, c, limits(lab, false));
+    };
+    const auto from_store = [&] {
+        if (!reference_store_) return render();
+        const std::string key = reference_key(lab, c);
+        if (options.stored_references)
+            if (std::optional<LabRun> stored = reference_store_->load(key)) return *stored;
+        LabRun run = render();
+        reference_store_->store(key, run);
+        return run;
+    };
+    if (!options.reference_cache) return from_store();
     std::string key = lab.lab + "|" + std::to_string(lab.width) + "x" + std::to_string(lab.height) + "|" + bin.string() +
-                      "|" + profile_name(options.profile);
+                      "|" + profile_name(options.profile) + "|" + (c.es_version ? c.es_version->str() : "");
     for (const auto& s : c.settings) key += "|" + s;
     auto& runs = options.reference_cache->runs;
     if (auto it = runs.find(key); it != runs.end()) return it->second;
-    LabRun run = reference.render(lab.lab + "_solution", lab, c, limits(lab, false));
+    LabRun run = from_store();
     if (run.status == CaseStatus::Passed) runs.emplace(key, run);
     return run;
 }

@@ -5,12 +5,14 @@
 // each check is one row, recorded here.
 #include "grader/src/grade/grade.h"
 #include "grader/src/run/process.h"
+#include "grader/src/run/reference_store.h"
 #include "grader/src/run/sandbox.h"
 #include "grader/src/run/uid_lease.h"
 
 #include <chrono>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -33,7 +35,8 @@ public:
     CaseResult result_for(const LabCases& lab, const GradeCase& c) const;
     void record(CaseResult r);
     ProcessLimits limits(const LabCases& lab, bool student) const;
-    // The reference's image of a case, rendered once per run where the options share a cache.
+    // The reference's image of a case: from the in-process cache where the options share one, else from the store on
+    // disk where the walls allow one, else rendered (and stored).
     LabRun reference_render(const LabCases& lab, const GradeCase& c);
     // The student's copy of the kit (its labs/), or the kit itself when its own labs are graded.
     std::filesystem::path student_kit() const;
@@ -64,6 +67,13 @@ private:
     SandboxPolicy build_policy_;  // building a submission's labs
     SandboxSupport support_;
     std::optional<UidLease> uid_lease_;  // a root grader's uid for student code, held until the run ends
+    // Live references on disk, where the walls keep student code from them; its key's context (kit, driver, environment)
+    // and each reference binary's fingerprint, computed once.
+    std::optional<ReferenceStore> reference_store_;
+    std::string reference_context_;
+    std::map<std::string, std::string> solution_fingerprints_;
+    int references_rendered_ = 0;
+    std::string reference_key(const LabCases& lab, const GradeCase& c);
     int total_ = 0;
 };
 

@@ -113,9 +113,13 @@ struct GradeReport {
     std::uint64_t seed = 0;   // hidden cases were drawn from it
     bool hidden_included = false, timing_included = false;
     std::string sandbox;      // which isolation the platform allowed, in words
+    std::string references;   // live references: how many rendered, how many from the store; empty without any
     double seconds = 0;       // wall time of the whole run
     std::vector<LabBuild> builds;
     std::vector<CaseResult> results;
+    // --regrade-only changed (grader/src/grade/regrade.h): the labs graded in this run, and those whose rows were kept
+    // from the last run in the same --out because nothing they depend on changed. Both empty in a plain run.
+    std::vector<std::string> regraded, kept;
 
     double score() const;
     double max_score() const;

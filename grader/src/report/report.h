@@ -19,6 +19,9 @@ std::string junit_xml(const GradeReport& report);
 // One self-contained HTML file: the images embedded as data URIs, actual / expected / difference side by side.
 std::string html_report(const GradeReport& report, const std::filesystem::path& out_dir);
 
+// report.json read back: an earlier run's report, whole. Throws gsv::Error naming the file and what is wrong.
+GradeReport read_report_json(const std::filesystem::path& file);
+
 // Writes results.json, report.json, junit.xml and report.html into out_dir.
 void write_reports(const GradeReport& report, const std::filesystem::path& out_dir);
 

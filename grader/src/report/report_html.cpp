@@ -236,8 +236,9 @@ std::string html_report(const GradeReport& report, const fs::path& out_dir) {
         std::snprintf(seed, sizeof seed, "%" PRIu64, report.seed);
         out << "<tr><th>seed</th><td>" << seed << "</td></tr>\n";
     }
-    out << "<tr><th>sandbox</th><td>" << html(report.sandbox) << "</td></tr>\n"
-        << "<tr><th>time</th><td>" << fixed(std::isfinite(report.seconds) ? report.seconds : 0.0, 1) << " s</td></tr>\n"
+    out << "<tr><th>sandbox</th><td>" << html(report.sandbox) << "</td></tr>\n";
+    if (!report.references.empty()) out << "<tr><th>references</th><td>" << html(report.references) << "</td></tr>\n";
+    out << "<tr><th>time</th><td>" << fixed(std::isfinite(report.seconds) ? report.seconds : 0.0, 1) << " s</td></tr>\n"
         << "</table>\n";
 
     bool any_failed_build = false;

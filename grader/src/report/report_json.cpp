@@ -204,6 +204,7 @@ std::string report_json(const GradeReport& report) {
     root["hidden_included"] = report.hidden_included;
     root["timing_included"] = report.timing_included;
     root["sandbox"] = text(report.sandbox);
+    root["references"] = text(report.references);
     root["seconds"] = number_or_null(report.seconds);
     root["score"] = number_or_null(report.score());
     root["max_score"] = number_or_null(report.max_score());
@@ -221,6 +222,14 @@ std::string report_json(const GradeReport& report) {
     Json results = Json::array();
     for (const auto& r : report.results) results.push_back(result_json(r));
     root["results"] = results;
+    // --regrade-only changed: which labs this run graded, and which kept the last run's rows.
+    if (!report.regraded.empty() || !report.kept.empty()) {
+        Json regraded = Json::array(), kept = Json::array();
+        for (const auto& lab : report.regraded) regraded.push_back(text(lab));
+        for (const auto& lab : report.kept) kept.push_back(text(lab));
+        root["regraded"] = regraded;
+        root["kept"] = kept;
+    }
     return root.dump(2) + "\n";
 }
 

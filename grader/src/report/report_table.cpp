@@ -19,6 +19,12 @@ std::size_t display_width(const std::string& text) {
     }));
 }
 
+std::string joined(const std::vector<std::string>& items) {
+    std::string text;
+    for (const auto& item : items) text += (text.empty() ? "" : ", ") + item;
+    return text;
+}
+
 std::string pad_right(const std::string& text, std::size_t width) {
     const std::size_t w = display_width(text);
     return w >= width ? text : text + std::string(width - w, ' ');
@@ -140,6 +146,11 @@ std::string score_table(const GradeReport& report) {
         out << "seed     " << seed << " (the hidden cases were drawn from it)\n";
     }
     out << "sandbox  " << (report.sandbox.empty() ? "(not given)" : one_line(report.sandbox, 200)) << "\n";
+    if (!report.references.empty()) out << "references  " << one_line(report.references, 300) << "\n";
+    if (!report.regraded.empty() || !report.kept.empty())
+        out << "regraded " << (report.regraded.empty() ? std::string("none") : joined(report.regraded))
+            << (report.kept.empty() ? std::string() : "; kept from the last run (nothing they depend on changed): " + joined(report.kept))
+            << "\n";
     return out.str();
 }
 

@@ -52,13 +52,6 @@ std::vector<std::string> copy_plain_tree(const fs::path& from, const fs::path& t
 }
 
 // A value from the kit build's CMakeCache.txt ("" where it has none): the generator, each lab's folder.
-std::string cmake_cache_value(const fs::path& kit_build, const std::string& name) {
-    std::ifstream cache(kit_build / "CMakeCache.txt");
-    const std::string key = name + ":";
-    for (std::string line; std::getline(cache, line);)
-        if (line.rfind(key, 0) == 0 && line.find('=') != std::string::npos) return line.substr(line.find('=') + 1);
-    return "";
-}
 
 // The binary of a lab whose C++ is one already built (grader/submission.h): the kit's own, or the build cache's.
 // Fills build.origin and returns true when `to` holds it; a lab that must be built returns false.
@@ -86,6 +79,14 @@ bool reuse_build(const std::string& lab, const fs::path& submission_lab, const f
 }
 
 }  // namespace
+
+std::string cmake_cache_value(const fs::path& kit_build, const std::string& name) {
+    std::ifstream cache(kit_build / "CMakeCache.txt");
+    const std::string key = name + ":";
+    for (std::string line; std::getline(cache, line);)
+        if (line.rfind(key, 0) == 0 && line.find('=') != std::string::npos) return line.substr(line.find('=') + 1);
+    return "";
+}
 
 SubmissionBuild build_submission(const fs::path& submission, const fs::path& kit_root, const fs::path& kit_build,
                                  const std::vector<std::string>& labs, const fs::path& work_dir,

@@ -33,6 +33,9 @@ struct SubmissionBuild {
 // libraries and the inputs, holding a copy of the inputs that is compared byte for byte, never trusted by key),
 // that build's binary. A cache that cannot be read or written is one line in the build log; the lab is built.
 // Throws gsv::Error when the submission has no labs/ folder or the kit build is not configured.
+// A value of the kit build's CMakeCache.txt ("GSV_LAB_DIR_lab01" -> "lab01_gooch"); "" when it has none.
+std::string cmake_cache_value(const std::filesystem::path& kit_build, const std::string& name);
+
 SubmissionBuild build_submission(const std::filesystem::path& submission, const std::filesystem::path& kit_root,
                                  const std::filesystem::path& kit_build, const std::vector<std::string>& labs,
                                  const std::filesystem::path& work_dir, const ProcessLimits& limits, bool reuse = true,
