@@ -4,12 +4,14 @@
 
 #include "grader/src/run/lab_run.h"
 #include "grader/src/run/process.h"
+#include "grader/src/run/uid_lease.h"
 
 #include "common/io/folder_tree.h"
 
 #include <csignal>
 #include <sstream>
 #include <cstdlib>
+#include <optional>
 #include <fcntl.h>
 #include <pty.h>
 #include <sys/ioctl.h>
@@ -25,6 +27,17 @@ namespace {
 ProcessResult sh(const std::string& script, const std::filesystem::path& dir, ProcessLimits limits = {},
                  const std::vector<std::string>& env = {}) {
     return run_process({"/bin/sh", "-c", script}, dir, limits, env);
+}
+
+// A root test's sandboxed processes run as a uid leased as a grader run leases one (grader/src/run/uid_lease.h).
+// Without namespaces the sandbox ends every process of its uid after each run; the policy's default uid, unleased, is
+// the one the first grader run on the machine leases, whose labs that would kill (seen: another test's lab processes
+// killed by signal 9 while this one ran beside them).
+std::optional<UidLease> lease_uid(SandboxPolicy& policy) {
+    if (geteuid() != 0) return std::nullopt;
+    UidLease lease = UidLease::any();
+    policy.uid = lease.uid();
+    return lease;
 }
 
 }  // namespace
@@ -84,6 +97,7 @@ TEST_CASE("sandbox: an allow-list file system, private /tmp, no network, limits 
     policy.read_only = {allowed};
     policy.file_size_bytes = 1 << 20;
     policy.tmp_bytes = 4 << 20;
+    const std::optional<UidLease> lease = lease_uid(policy);
     const SandboxSupport support = probe_sandbox(policy);
     hand_over(work, policy, support);
     INFO(support.describe(policy));
@@ -245,6 +259,7 @@ TEST_CASE("process: a private working folder has a size and a file-count limit, 
     SandboxPolicy policy;
     policy.folder_bytes = 8 << 20;
     policy.folder_files = 500;
+    const std::optional<UidLease> lease = lease_uid(policy);
     SandboxSupport probed = probe_sandbox(policy);
     SandboxSupport none;
     none.refused = "a test of the fallback";

@@ -3,6 +3,7 @@
 // as the self-check grades, and prints per case how much of its budget correct renders use and how far the nearest
 // must-fail mutant is. A measurement: it exits 0 whatever it finds, unless asked to hold a line (--fail-if-missed, or
 // --check, what the softpipe kind of test runs).
+#include "common/context/context.h"
 #include "common/core/error.h"
 #include "common/core/version.h"
 #include "common/io/json.h"
@@ -23,7 +24,8 @@ namespace {
 
 const char* kUsage =
     "usage: gsv-margins [--kit DIR] [--bin DIR] [--labs lab01,lab02] [--impl NAME,...] [--no-mutants] [--no-variants]\n"
-    "                   [--json FILE] [--work DIR] [--fail-if-missed] [--check] [--list-impl] [--help] [--version]\n"
+    "                   [--json FILE] [--work DIR] [--fail-if-missed] [--check] [--es-version V] [--list-impl] [--help]\n"
+    "                   [--version]\n"
     "       gsv-margins --table FILE.json...\n"
     "  renders every public case on each implementation (the solutions, and the mutants and correct variants of\n"
     "  tests/mutants/), graded against the goldens, and prints per case the worst correct render and the nearest\n"
@@ -32,6 +34,7 @@ const char* kUsage =
     "  --labs LABS       only these labs\n"
     "  --no-mutants      no mutants\n"
     "  --no-variants     no correct variants\n"
+    "  --es-version V    on OpenGL ES, every case at least at version V (3.0, 3.1, 3.2); default: each lab's lowest\n"
     "  --json FILE       also write the measurement (what --table reads)\n"
     "  --table FILES     print the table of measurements written by --json (one per implementation, say), joined\n"
     "  --work DIR        scratch folder (default: a fresh one under the system's temporary folder)\n"
@@ -86,6 +89,8 @@ int main(int argc, char** argv) {
                 options.mutants = false;
             } else if (a == "--no-variants") {
                 options.variants = false;
+            } else if (a == "--es-version") {
+                options.es_at_least = gsv::parse_gl_version(value(), gsv::Profile::Es);
             } else if (a == "--check") {
                 check = true;
             } else if (a == "--json") {

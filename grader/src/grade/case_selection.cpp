@@ -88,6 +88,9 @@ void GradingSession::load_labs() {
             add_hidden_cases(lab, hidden, report.seed);
             report.hidden_included = true;
         }
+        if (options.es_at_least)
+            for (GradeCase& c : lab.cases)
+                if (!c.es_version || *c.es_version < *options.es_at_least) c.es_version = options.es_at_least;
         if (!options.cases.empty())
             lab.cases.erase(std::remove_if(lab.cases.begin(), lab.cases.end(),
                                            [&](const GradeCase& c) {

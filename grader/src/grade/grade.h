@@ -58,6 +58,8 @@ struct GradeOptions {
     // The profile both the student's lab and the reference run on. On ES each lab runs at its lowest ES version
     // (a case's "es" lifts it); the self-check compares with the goldens, which are core-profile images.
     Profile profile = Profile::Core;
+    // On ES: every case at least at this version (a case's own "es" above it stands); none: each lab's lowest.
+    std::optional<GlVersion> es_at_least;
 };
 
 struct GradeProgress {

@@ -1,6 +1,7 @@
 #include "grader/src/grade/session.h"
 
 #include "common/app/kit_layout.h"
+#include "common/core/error.h"
 #include "grader/src/cases/draw.h"
 #include "grader/src/golden/golden_renderers.h"
 #include "grader/src/run/submission.h"
@@ -60,9 +61,13 @@ void GradingSession::set_up() {
     // Live references kept across runs, but only where student code cannot write them: behind the allow-list.
     if (purpose_ == RunPurpose::Grade && any_live) {
         if (options.sandbox && support_.allow_list()) {
-            reference_store_.emplace(options.reference_store.empty() ? bin.parent_path() / "grader-cache" / "references"
-                                                                      : fs::absolute(options.reference_store));
-            reference_context_ = reference_context(kit);
+            try {
+                reference_context_ = reference_context(kit);
+                reference_store_.emplace(options.reference_store.empty() ? bin.parent_path() / "grader-cache" / "references"
+                                                                          : fs::absolute(options.reference_store));
+            } catch (const Error& e) {
+                report.references = std::string("rendered in this run; none kept on disk: ") + e.what();
+            }
         } else {
             report.references = "rendered in this run; none kept on disk, where the walls are down student code could change them";
         }

@@ -228,6 +228,7 @@ private:
         g.hidden = false;
         g.timing = false;
         g.profile = implementation.profile;
+        if (implementation.profile == Profile::Es) g.es_at_least = options_.es_at_least;
         g.todo = todo;
         g.cases = cases;
         GradeReport report = grade(g);

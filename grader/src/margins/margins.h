@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -79,6 +80,7 @@ struct MarginOptions {
     std::vector<std::string> implementations;  // empty: every known one
     bool mutants = true;                       // the mutants too, not only the solutions
     bool variants = true;                      // the correct variants too
+    std::optional<GlVersion> es_at_least;      // on ES, every case at least at this version (--es-version)
 };
 
 // Renders and grades everything (the solutions in self-check, against the goldens; each mutant on the public cases it
