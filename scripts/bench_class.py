@@ -6,8 +6,6 @@ C++ too). Each round grades the batch three ways, in alternating order between r
   every lab built, every live reference rendered    gsv-grade --batch ... --build-all --fresh-references
   only what differs built, references kept on disk  gsv-grade --batch ...           (a fresh --grader-cache each round)
   a rerun with nothing changed                      gsv-grade --batch ... --regrade-only changed (into the reusing run's --out)
-  the reusing path with its caches warm             gsv-grade --batch ...           (the same --grader-cache, a new --out):
-                                                    what each later submission of a class costs, every lab graded
 and checks that the first two give every submission the same score. Prints seconds per submission, the ratios with
 their spread over rounds, and what 300 students would take on one such machine and on 8. A benchmark: it never fails
 on speed, only when the grades of the two paths differ or a run fails.
@@ -81,7 +79,7 @@ def main():
     try:
         class_dir = os.path.join(work, "class")
         make_class(kit, class_dir)
-        today, reuse, rerun, warm = [], [], [], []
+        today, reuse, rerun = [], [], []
         for r in range(rounds):
             cache_today, cache_new = os.path.join(work, "cache-today-%d" % r), os.path.join(work, "cache-new-%d" % r)
             ways = [("today", ["--build-all", "--fresh-references", "--grader-cache", cache_today]),
@@ -104,12 +102,6 @@ def main():
                          {name: again[name]["regraded"] for name in DONE})
             rerun.append(seconds / n)
             print("round %d, rerun  %7.1f s (nothing changed, nothing regraded)" % (r + 1, seconds), flush=True)
-            seconds, rows["warm"] = grade(grader, class_dir, os.path.join(work, "warm-%d" % r), ["--grader-cache", cache_new],
-                                          workers, flags)
-            if any(rows["warm"][name]["score"] != rows["today"][name]["score"] for name in DONE):
-                sys.exit("bench_class: the reusing path with warm caches scored otherwise than today's path")
-            warm.append(seconds / n)
-            print("round %d, warm   %7.1f s (the reusing path again, its caches warm)" % (r + 1, seconds), flush=True)
 
         def spread(values):
             return "%.2f" % statistics.median(values) + ("" if len(values) < 2 else " (%.2f-%.2f)" % (min(values), max(values)))
@@ -118,16 +110,13 @@ def main():
               (n, workers, "public cases, no timing" if quick else "hidden cases, timing, live references", rounds))
         print("  every lab built, every reference rendered  %s" % spread(today))
         print("  only what differs built, references kept   %s" % spread(reuse))
-        print("  the reusing path, its caches warm          %s" % spread(warm))
         print("  rerun, nothing changed                     %s" % spread(rerun))
         print("  reusing / today                            %s" % spread([b / a for a, b in zip(today, reuse)]))
-        print("  reusing, caches warm / today               %s" % spread([c / a for a, c in zip(today, warm)]))
         print("  rerun / first reusing run                  %s" % spread([c / b for b, c in zip(reuse, rerun)]))
         print("  every submission scored the same both ways")
-        for way, per in (("today's path", statistics.median(today)), ("the reusing path", statistics.median(reuse)),
-                         ("it, caches warm", statistics.median(warm))):
+        for way, per in (("today's path", statistics.median(today)), ("the reusing path", statistics.median(reuse))):
             class_s = 300 * per
-            print("  300 students by %-18s %5.1f h on this machine, %5.1f h on 8 such (shards)" % (way + ":", class_s / 3600, class_s / 3600 / 8))
+            print("  300 students by %-17s %5.1f h on this machine, %5.1f h on 8 such (shards)" % (way + ":", class_s / 3600, class_s / 3600 / 8))
         print("  (a class's submissions reuse one another's builds and references more than these six do)")
     finally:
         shutil.rmtree(work, ignore_errors=True)

@@ -41,13 +41,7 @@ Image draw_case(Session& s, const LabCases& lab, const GradeCase& c) {
 }
 
 CaseResult check_case(Session& s, const LabCases& lab, const GradeCase& c) {
-    CaseResult r;
-    r.lab = lab.lab;
-    r.name = c.name;
-    r.todo = c.todo;
-    r.description = c.description;
-    r.settings = c.settings;
-    r.max_points = c.points;
+    CaseResult r = case_row(lab, c);
     r.reference = "golden";
     if (!fits_webgl2(c)) {
         r.status = CaseStatus::Unsupported;

@@ -86,14 +86,7 @@ GradeReport GradingSession::finish() {
 }
 
 CaseResult GradingSession::result_for(const LabCases& lab, const GradeCase& c) const {
-    CaseResult r;
-    r.lab = lab.lab;
-    r.name = c.name;
-    r.todo = c.todo;
-    r.description = c.description;
-    r.visibility = c.visibility;
-    r.settings = c.settings;
-    r.max_points = c.points;
+    CaseResult r = case_row(lab, c);
     // What a student types to see what their lab drew: a public case by name, a hidden one by its settings.
     r.reproduce = "build/bin/" + lab.lab + " render --size " + std::to_string(lab.width) + "x" + std::to_string(lab.height);
     if (c.visibility == "public") {

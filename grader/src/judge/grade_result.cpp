@@ -33,6 +33,18 @@ const char* status_name(CaseStatus status) {
     return "unknown";
 }
 
+CaseResult case_row(const LabCases& lab, const GradeCase& c) {
+    CaseResult r;
+    r.lab = lab.lab;
+    r.name = c.name;
+    r.todo = c.todo;
+    r.description = c.description;
+    r.visibility = c.visibility;
+    r.settings = c.settings;
+    r.max_points = c.points;
+    return r;
+}
+
 bool is_kit_fault(CaseStatus status) { return status == CaseStatus::ReferenceFailed; }
 
 bool DataCheck::passed() const {

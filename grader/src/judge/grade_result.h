@@ -3,6 +3,7 @@
 // time against the reference's), the per-lab builds, and how the run was set up. The reports are written from
 // this.
 #include "common/image/image_compare.h"
+#include "grader/src/cases/cases.h"
 #include "grader/src/judge/array_compare.h"
 
 #include <cstdint>
@@ -102,6 +103,10 @@ struct LabBuild {
     // the kit's binary" or "unchanged C++: an earlier build" (grader/submission.h says when).
     std::string origin = "built";
 };
+
+// A case's row before anything ran: its lab, name, TODO, description, visibility, settings and points. The grader
+// (grade/session.cpp) and the browser page's self-check (app/page_self_check.cpp) start every row from it.
+CaseResult case_row(const LabCases& lab, const GradeCase& c);
 
 struct GradeReport {
     std::string submission;   // what was graded: a folder, or the kit's own labs/
