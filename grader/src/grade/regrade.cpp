@@ -6,6 +6,7 @@
 #include "common/io/json.h"
 #include "grader/src/cases/cases.h"
 #include "grader/src/report/report.h"
+#include "grader/src/run/reference_store.h"
 #include "grader/src/run/submission.h"
 
 #include <algorithm>
@@ -20,16 +21,8 @@ namespace {
 
 constexpr const char* kInputsFormat = "gsv-inputs 1";
 
-void add_file(Fnv1a& hash, const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) {
-        hash.add("unreadable");
-        return;
-    }
-    std::vector<char> buffer(1 << 16);
-    while (in.read(buffer.data(), static_cast<std::streamsize>(buffer.size())) || in.gcount() > 0)
-        hash.add(buffer.data(), static_cast<std::size_t>(in.gcount()));
-}
+// A file by its bytes ("" where it cannot be read, which differs from any file's fingerprint).
+void add_file(Fnv1a& hash, const fs::path& file) { hash.add(file_fingerprint(file)); }
 
 // A tree by the names, kinds and bytes of what is in it, never following a link. Student trees are hostile: one over
 // the submission's limits (run/submission.h) gets a fingerprint of its own each time, so it is always graded (where
