@@ -337,6 +337,36 @@ TEST_CASE("grader: where the walls cannot go up, hidden cases and live reference
     CHECK(grade(options).sandbox.find("no namespaces here") != std::string::npos);
 }
 
+// Seen on a GPU machine whose kit sat behind a symbolic link: the sandbox binds each allowed path where it really is,
+// so a lab started by its linked path was not there, and every case ended in "the lab binary could not be started".
+TEST_CASE("grader: a kit, a build and a student's labs reached through symbolic links are graded where they really are",
+          "[grader][submission]") {
+    const Json unchanged = parse_json(R"({"name": "unchanged", "file": "shade.frag", "find": "void main", "replace": "void main"})", "test");
+    const test::EditedKit kit("lab01", test::mutant_spec("lab01").string_at("lab_dir"), unchanged);
+    test::TempDir links;
+    fs::create_directory_symlink(test::source_root(), links.path("kit"));
+    fs::create_directory_symlink(test::bin_dir(), links.path("bin"));
+    GradeOptions options = kit.options();
+    fs::create_directory_symlink(options.student_bin_dir, links.path("student-bin"));
+    fs::create_directory_symlink(options.student_root, links.path("student-kit"));
+    fs::create_directories(links.path("real-out"));
+    fs::create_directory_symlink(links.path("real-out"), links.path("out"));
+    options.kit_root = links.path("kit");
+    options.bin_dir = links.path("bin");
+    options.student_bin_dir = links.path("student-bin");
+    options.student_root = links.path("student-kit");
+    options.out_dir = links.path("out") / "report";
+    options.cases = {"gooch"};
+    options.timing = false;
+    options.hidden = false;
+    const GradeReport report = grade(options);
+    const auto results = test::by_name(report);
+    REQUIRE(results.count("gooch"));
+    INFO(results.at("gooch").detail);
+    CHECK(results.at("gooch").status == CaseStatus::Passed);  // the solution, run by its linked path
+    CHECK(fs::exists(links.path("real-out") / "report" / "lab01" / "gooch" / "expected.png"));
+}
+
 TEST_CASE("grader: a batch of hostile submissions, graded by a grader that is not root, reaches no sibling and earns nothing",
           "[grader][submission][attacks]") {
     // Root tests this as nobody (uid 65534), as an instructor's own account would run it; a grader that is not root

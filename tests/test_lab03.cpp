@@ -338,8 +338,11 @@ TEST_CASE("lab03: the sweep measures sampling error, temporal error and memory f
             INFO(rows[i]);
             const double sample_err = std::stod(cell(rows[i], 6));
             // Holding a slice, the array hands it back exactly; a 3D texture read at slice centres nearly so.
-            // A blend is exact to float rounding.
+            // The array's blend is the shader's mix(), exact to float rounding. The 3D texture's blend is the
+            // texture unit's: exact to float rounding on llvmpipe, but GPUs weigh with 8-bit fractions of a texel
+            // (an NVIDIA H200 measured up to 1.61e-4 here, and the 8-bit stand-in GSV_TEXEL_SNAP=256 gives the same).
             if (storage == "array" && cell(rows[i], 0) == "nearest") CHECK(sample_err == 0.0);
+            else if (storage == "volume" && cell(rows[i], 0) == "linear") CHECK(sample_err < 1e-3);
             else CHECK(sample_err < 1e-5);
             // 32 x 16 texels x 8 bytes per slice.
             CHECK(std::stod(cell(rows[i], 8)) == Approx(std::stod(cell(rows[i], 1)) * 32 * 16 * 8 / 1048576.0));

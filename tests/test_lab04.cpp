@@ -167,9 +167,12 @@ TEST_CASE("lab04: a step far below one sample loses the normal to float32 cancel
         for (int k = 0; k <= 6; ++k) std::getline(s, cell, ',');  // normal_err_mean_deg
         return std::stod(cell);
     };
-    // A whole sample: 0.0015 degrees; 1e-2: a few times that; 1e-4: hundreds of times (measured 0.9 degrees).
+    // A whole sample: 0.0015 degrees; 1e-4: hundreds of times (measured 0.9 degrees on llvmpipe). 1e-2 depends on how
+    // the texture unit weighs texels: llvmpipe in float, a few times a whole sample's error; a GPU with 8-bit
+    // fractions of a texel rounds a 1/100 step to 2/256 or 3/256 (an NVIDIA H200 measured 2.85 degrees, and the 8-bit
+    // stand-in GSV_TEXEL_SNAP=256 the same): on GPUs the normal is lost to the filter before float32 cancels it.
     CHECK(mean_error(3) < 0.01);
-    CHECK(mean_error(2) < 0.05);
+    CHECK(mean_error(2) < 5.0);
     CHECK(mean_error(1) > 100 * mean_error(3));
 }
 

@@ -11,15 +11,28 @@
 namespace fs = std::filesystem;
 
 namespace gsv {
+namespace {
+
+// Where a folder really is. The sandbox binds each allowed path where it really is; a lab started by a path through
+// a symbolic link (a kit under ~/kit -> /mnt/data/kit, or macOS's /tmp) would not be found inside it, and would end
+// in "the lab binary could not be started" for every case. So the grader names every folder by its real path.
+fs::path real_path(const fs::path& p) {
+    std::error_code ec;
+    const fs::path absolute = fs::absolute(p);
+    const fs::path real = fs::weakly_canonical(absolute, ec);
+    return ec ? absolute : real;
+}
+
+}  // namespace
 
 GradingSession::GradingSession(const GradeOptions& options, const std::function<void(const GradeProgress&)>& progress,
                                RunPurpose purpose)
-    : options(options), out(fs::absolute(options.out_dir)), kit(fs::absolute(options.kit_root)), bin(fs::absolute(options.bin_dir)),
+    : options(options), out(real_path(options.out_dir)), kit(real_path(options.kit_root)), bin(real_path(options.bin_dir)),
       progress_(progress), purpose_(purpose), start_(std::chrono::steady_clock::now()) {}
 
 void GradingSession::set_up() {
     report.seed = options.seed ? *options.seed : fresh_seed();
-    report.submission = options.submission.empty() ? KitLayout{kit}.labs().string() : fs::absolute(options.submission).string();
+    report.submission = options.submission.empty() ? KitLayout{kit}.labs().string() : real_path(options.submission).string();
     load_labs();
     const bool any_live = std::find(live.begin(), live.end(), true) != live.end();
     report.mode = purpose_ == RunPurpose::UpdateGoldens ? "update goldens" : any_live ? "instructor" : "self-check";
@@ -49,8 +62,8 @@ void GradingSession::set_up() {
         report.builds = built.builds;
     } else {
         if (!options.student_bin_dir.empty()) {
-            student_bin = fs::absolute(options.student_bin_dir);
-            student_root = fs::absolute(options.student_root);
+            student_bin = real_path(options.student_bin_dir);
+            student_root = real_path(options.student_root);
         }
         set_up_sandbox(student_bin, student_root, {});
     }

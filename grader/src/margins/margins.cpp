@@ -92,6 +92,8 @@ std::string budget_text(const LabCases& lab, const GradeCase& c) {
 std::vector<Implementation> known_implementations() {
     return {
         {"default", "the machine's own GL (llvmpipe on a machine without a GPU)", {}, Profile::Core, {}},
+        // What a Chromebook or a phone's browser runs: the same GL on OpenGL ES, each lab at its lowest ES version.
+        {"default-es", "the machine's own GL on OpenGL ES (--profile es; llvmpipe on a machine without a GPU)", {}, Profile::Es, {}},
         {"softpipe-es", "GALLIUM_DRIVER=softpipe, --profile es: Mesa's other rasterizer, shaders interpreted",
          {{"GALLIUM_DRIVER", "softpipe"}}, Profile::Es, {"softpipe"}},
         {"llvmpipe-128", "LP_NATIVE_VECTOR_WIDTH=128: llvmpipe with SSE-wide vectors",
