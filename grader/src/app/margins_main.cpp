@@ -40,7 +40,8 @@ const char* kUsage =
     "  --work DIR        scratch folder (default: a fresh one under the system's temporary folder)\n"
     "  --fail-if-missed  exit 1 when a case misses the bar\n"
     "  --check           exit 1 unless every correct render passes and every mutant fails a case it must fail, on\n"
-    "                    each implementation, naming the implementation in each failure; 77 when none is here\n"
+    "                    each implementation, naming the implementation in each failure; 77 when none is here. Each\n"
+    "                    mutant is graded up to the first case it fails (the table's nearest mutant is of those)\n"
     "exit status: 0 measured, 1 a case missed the bar (--fail-if-missed) or a check failed (--check), 2 usage or\n"
     "internal error, 77 (--check) none of the implementations is available here\n";
 
@@ -93,6 +94,7 @@ int main(int argc, char** argv) {
                 options.es_at_least = gsv::parse_gl_version(value(), gsv::Profile::Es);
             } else if (a == "--check") {
                 check = true;
+                options.mutant_until_first_failure = true;
             } else if (a == "--json") {
                 json_out = value();
             } else if (a == "--work") {

@@ -92,8 +92,6 @@ std::string budget_text(const LabCases& lab, const GradeCase& c) {
 std::vector<Implementation> known_implementations() {
     return {
         {"default", "the machine's own GL (llvmpipe on a machine without a GPU)", {}, Profile::Core, {}},
-        // What a Chromebook or a phone's browser runs: the same GL on OpenGL ES, each lab at its lowest ES version.
-        {"default-es", "the machine's own GL on OpenGL ES (--profile es; llvmpipe on a machine without a GPU)", {}, Profile::Es, {}},
         {"softpipe-es", "GALLIUM_DRIVER=softpipe, --profile es: Mesa's other rasterizer, shaders interpreted",
          {{"GALLIUM_DRIVER", "softpipe"}}, Profile::Es, {"softpipe"}},
         {"llvmpipe-128", "LP_NATIVE_VECTOR_WIDTH=128: llvmpipe with SSE-wide vectors",
@@ -102,6 +100,8 @@ std::vector<Implementation> known_implementations() {
          {{"GALLIUM_DRIVER", "llvmpipe"}, {"LP_NUM_THREADS", "1"}}, Profile::Core, {"llvmpipe"}},
         {"filter-8bit", "GSV_TEXEL_SNAP=256: every texture coordinate snapped to 1/256 of a texel, as GPUs' 8-bit filter weights",
          {{"GSV_TEXEL_SNAP", "256"}}, Profile::Core, {}},
+        // What a Chromebook or a phone's browser runs: the same GL on OpenGL ES, each lab at its lowest ES version.
+        {"default-es", "the machine's own GL on OpenGL ES (--profile es; llvmpipe on a machine without a GPU)", {}, Profile::Es, {}},
     };
 }
 
@@ -239,6 +239,11 @@ private:
         return report;
     }
 
+    static bool all_passed(const GradeReport& report) {
+        return std::all_of(report.results.begin(), report.results.end(),
+                           [](const CaseResult& r) { return r.status == CaseStatus::Passed; });
+    }
+
     void record(const Implementation& implementation, const GradeReport& report, const std::string& kind, const std::string& source) {
         for (const auto& r : report.results) {
             if (r.kind != "image") continue;
@@ -275,7 +280,12 @@ private:
                                 if (known.visibility == "public" && known.name == c.as_string()) cases.push_back(c.as_string());
                     if (cases.empty()) continue;
                     const auto edit = [&](const fs::path& folder) { apply_mutant_edits(folder, m, options_.kit_root); };
-                    grade_edited(implementation, lab, edit, "", cases, "mutant", m.string_at("name"));
+                    if (options_.mutant_until_first_failure) {
+                        for (const auto& c : cases)
+                            if (!all_passed(grade_edited(implementation, lab, edit, "", {c}, "mutant", m.string_at("name")))) break;
+                    } else {
+                        grade_edited(implementation, lab, edit, "", cases, "mutant", m.string_at("name"));
+                    }
                     ++count;
                 }
                 say(implementation.name + ": " + lab.cases.lab + ": " + std::to_string(count) + " mutants graded");

@@ -81,6 +81,9 @@ struct MarginOptions {
     bool mutants = true;                       // the mutants too, not only the solutions
     bool variants = true;                      // the correct variants too
     std::optional<GlVersion> es_at_least;      // on ES, every case at least at this version (--es-version)
+    // Each mutant graded on its must-fail cases one at a time, up to the first it fails (--check: one failing case is
+    // what it is held to); false: on all of them, for the table's nearest mutant.
+    bool mutant_until_first_failure = false;
 };
 
 // Renders and grades everything (the solutions in self-check, against the goldens; each mutant on the public cases it
