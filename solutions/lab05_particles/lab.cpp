@@ -72,6 +72,10 @@ public:
         draw_ = &kit.program("particles", {"particles.vert", "particles.frag"});
         // Transform feedback draws every particle in one call: no work groups, so no limits on them.
         if (compute_) limits_ = gsv::compute_limits();
+        // Rows of at most the 65535 work groups GL guarantees, on every GPU: a dispatch this long is split into rows
+        // everywhere, so the cases that split it (L05-T2) grade alike. An NVIDIA H200 holds 2^31 - 1 groups in a row,
+        // where a shader that ignored the rows passed them.
+        limits_.max_group_count[0] = std::min<std::int64_t>(limits_.max_group_count[0], 65535);
         // The point size comes from gl_PointSize (particles.vert): always so on ES, where this enum is unknown.
         if (kit.profile() != gsv::Profile::Es) glEnable(GL_PROGRAM_POINT_SIZE);
     }
