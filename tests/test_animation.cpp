@@ -249,7 +249,7 @@ int run_pulse(std::vector<std::string> args, bool animated = true, std::vector<d
     args.insert(args.begin(), "pulse");
     std::vector<const char*> argv;
     for (const auto& a : args) argv.push_back(a.c_str());
-    return run_lab(std::make_unique<PulseLab>(animated, phases_seen), "tests/shaders", "solution",
+    return run_lab([&] { return std::unique_ptr<Lab>(std::make_unique<PulseLab>(animated, phases_seen)); }, "tests/shaders", "solution",
                    static_cast<int>(argv.size()), argv.data());
 }
 

@@ -519,18 +519,24 @@ void write_fake_lab(const fs::path& bin, const std::string& binary, const fs::pa
                              "        if not more: sys.exit(0)\n"
                              "        data += more\n"
                              "    return data\n"
-                             "for name in sorted(f for f in os.listdir(fixture) if f.endswith('.arr')):\n"
-                             "    send(b'ARR1', open(os.path.join(fixture, name), 'rb').read())\n"
-                             "image = open(os.path.join(fixture, 'image.msg'), 'rb').read()\n"
-                             "send(b'IMG1', image)\n"
-                             "send(b'RPT1', b'{\"timing\": {\"median_ms\": 1}"
-                          << (lab.renderer.empty() ? "" : ", \"gl\": {\"renderer\": \"" + lab.renderer + "\"}") << "}')\n"
-                             "send(b'RDY1')\n"
-                             "while True:\n"
+                             "def message():\n"
                              "    tag, size = read(4), struct.unpack('<I', read(4))[0]\n"
-                             "    payload = read(size)\n"
-                             "    if tag == b'END1': sys.exit(0)\n"
-                             "    send(b'FRM1', payload[:4] + image)\n";
+                             "    return tag, read(size)\n"
+                             "image = open(os.path.join(fixture, 'image.msg'), 'rb').read()\n"
+                             "def render_case():\n"
+                             "    for name in sorted(f for f in os.listdir(fixture) if f.endswith('.arr')):\n"
+                             "        send(b'ARR1', open(os.path.join(fixture, name), 'rb').read())\n"
+                             "    send(b'IMG1', image)\n"
+                             "    send(b'RPT1', b'{\"timing\": {\"median_ms\": 1}"
+                          << (lab.renderer.empty() ? "" : ", \"gl\": {\"renderer\": \"" + lab.renderer + "\"}") << "}')\n"
+                             "    send(b'RDY1')\n"
+                             "    while True:\n"
+                             "        tag, payload = message()\n"
+                             "        if tag == b'END1': return\n"
+                             "        send(b'FRM1', payload[:4] + image)\n"
+                             // render --serve: a case per request, until the grader's END.
+                             "while '--serve' in sys.argv and message()[0] == b'CAS1': render_case()\n"
+                             "if '--serve' not in sys.argv: render_case()\n";
     fs::permissions(script, fs::perms::owner_all);
 }
 

@@ -46,7 +46,7 @@ int render(const std::vector<DataArray>& arrays, const fs::path& png) {
                                         "--warmup", "1", "--arrays"};
     std::vector<const char*> argv;
     for (const auto& a : args) argv.push_back(a.c_str());
-    return run_lab(std::make_unique<ArraysLab>(arrays), "tests/shaders", "solution", static_cast<int>(argv.size()),
+    return run_lab([&] { return std::unique_ptr<Lab>(std::make_unique<ArraysLab>(arrays)); }, "tests/shaders", "solution", static_cast<int>(argv.size()),
                    argv.data());
 }
 

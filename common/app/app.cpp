@@ -91,6 +91,7 @@ void Session::open(Backend backend, int extra_width) {
     context_options.width = options.width + extra_width;
     context_options.height = options.height;
     context_options.title = title();
+    context_options.keep_display = keep_display;
     try {
         context = create_context(context_options);
     } catch (const UnsupportedError& e) {
@@ -179,21 +180,48 @@ static void print_list(Session& s) {
     }
 }
 
-int run_lab(std::unique_ptr<Lab> lab, const char* lab_dir, const char* variant, int argc, const char* const* argv) {
+void start_session(Session& session, std::unique_ptr<Lab> lab, const char* lab_dir, const char* variant,
+                   const std::filesystem::path& executable) {
+    session.lab = std::move(lab);
+    session.info = session.lab->info();
+    session.variant = variant;
+    session.lab_dir = lab_dir;
+    session.executable = executable;
+    session.lab->declare(session.params);
+    session.defaults = session.params;
+}
+
+int with_exit_status(const Session& session, const std::string& stage, const std::function<int()>& body) {
+    try {
+        return body();
+    } catch (const UnsupportedError& e) {
+        std::fprintf(stderr, "%s: %s\n", session.info.id.c_str(), e.what());
+        return kExitUnsupported;
+    } catch (const Error& e) {
+        std::fprintf(stderr, "%s: %s\n", session.info.id.c_str(), e.what());
+        return kExitError;
+    } catch (const std::filesystem::filesystem_error& e) {
+        // A file or folder that could not be read or written: the user's to fix, and the message names it.
+        std::fprintf(stderr, "%s: %s\n", session.info.id.c_str(), e.what());
+        return kExitError;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "%s: internal error during %s: %s\n", session.info.id.c_str(), stage.c_str(), e.what());
+        return kExitError;
+    }
+}
+
+int run_lab(const LabFactory& make_lab, const char* lab_dir, const char* variant, int argc, const char* const* argv) {
     // On the heap: web mode hands it to the page, which draws with it after main() has returned.
     auto owned = std::make_unique<Session>();
     Session& session = *owned;
     std::string stage = "command line";
-    try {
-        session.lab = std::move(lab);
-        session.info = session.lab->info();
-        session.variant = variant;
-        session.lab_dir = lab_dir;
-        session.executable = Assets::executable_path(argc > 0 ? argv[0] : nullptr);
-        session.lab->declare(session.params);
-        session.defaults = session.params;
+    return with_exit_status(session, stage, [&]() -> int {
+        start_session(session, make_lab(), lab_dir, variant, Assets::executable_path(argc > 0 ? argv[0] : nullptr));
         try {
             session.options = parse_cli(argc, argv);
+            // Served, each case brings its own settings: the command line's are not the cases'.
+            if (session.options.serve && (!session.options.case_name.empty() || !session.options.assignments.empty()))
+                throw Error("render --serve takes each case's settings from the grader, not --case or --set");
             session.apply_command_line_settings();
             const bool informational = session.options.help || session.options.version;
             if (session.options.mode == RunMode::Animate && !informational) check_animate_command(session);
@@ -218,6 +246,7 @@ int run_lab(std::unique_ptr<Lab> lab, const char* lab_dir, const char* variant, 
             return kExitOk;
         }
         stage = "start";
+        if (session.options.serve) return run_serve(make_lab, session);
         session.find_assets();
         switch (session.options.mode) {
         case RunMode::Window: return run_window(session);
@@ -229,20 +258,7 @@ int run_lab(std::unique_ptr<Lab> lab, const char* lab_dir, const char* variant, 
         case RunMode::List: break;
         }
         return kExitOk;
-    } catch (const UnsupportedError& e) {
-        std::fprintf(stderr, "%s: %s\n", session.info.id.c_str(), e.what());
-        return kExitUnsupported;
-    } catch (const Error& e) {
-        std::fprintf(stderr, "%s: %s\n", session.info.id.c_str(), e.what());
-        return kExitError;
-    } catch (const std::filesystem::filesystem_error& e) {
-        // A file or folder that could not be read or written: the user's to fix, and the message names it.
-        std::fprintf(stderr, "%s: %s\n", session.info.id.c_str(), e.what());
-        return kExitError;
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "%s: internal error during %s: %s\n", session.info.id.c_str(), stage.c_str(), e.what());
-        return kExitError;
-    }
+    });
 }
 
 }  // namespace gsv

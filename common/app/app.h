@@ -154,12 +154,15 @@ private:
 void add_orbit_camera(Params& params, float yaw, float pitch, float distance, float min_distance = 1.2f);
 OrbitCamera orbit_camera(const Params& params);
 
-int run_lab(std::unique_ptr<Lab> lab, const char* lab_dir, const char* variant, int argc, const char* const* argv);
+// Makes the lab anew: `render --serve` starts each case from a lab object of its own.
+using LabFactory = std::function<std::unique_ptr<Lab>()>;
+
+int run_lab(const LabFactory& make_lab, const char* lab_dir, const char* variant, int argc, const char* const* argv);
 
 #ifdef GSV_LAB_DIR  // defined for lab executables by cmake/labs.cmake
 template <class L>
 int run_lab(int argc, char** argv) {
-    return run_lab(std::make_unique<L>(), GSV_LAB_DIR, GSV_LAB_VARIANT, argc, argv);
+    return run_lab([] { return std::unique_ptr<Lab>(std::make_unique<L>()); }, GSV_LAB_DIR, GSV_LAB_VARIANT, argc, argv);
 }
 #endif
 

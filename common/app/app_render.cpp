@@ -95,6 +95,8 @@ void answer_challenges(Session& s, const HandinChannel& grader, const Frame& fra
         s.render_frame(frame);
     }
     glFinish();
+    // What the case printed reaches the grader before it hears the case is done (a served lab goes on to the next).
+    std::fflush(stdout);
     grader.send(kTagReady, {});
     while (const auto message = grader.receive()) {
         if (message->tag == kTagEnd) return;

@@ -6,6 +6,7 @@
 #include "common/image/image_compare.h"
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -31,6 +32,7 @@ struct Session {
     std::unique_ptr<Context> context;
     std::unique_ptr<LabKit> kit;
     bool told_no_float_target = false;  // frame_target said once that frames render into RGBA8
+    bool keep_display = false;          // the EGL display outlives this session's context (render --serve)
 
     // Creates the context, checks the lab's GL needs, builds the kit and runs lab->setup. A window is
     // `extra_width` wider than --size says (the panel's column beside the picture).
@@ -73,8 +75,20 @@ Framebuffer frame_target(Session& session, int width, int height);
 // settings, stand for no value.
 Image with_lab_legend(Session& session, const Image& image);
 
+// Declares `lab`'s parameters into the session and keeps them as its defaults; `started` gives the rest of where it
+// runs from (its folder, variant and executable).
+void start_session(Session& session, std::unique_ptr<Lab> lab, const char* lab_dir, const char* variant,
+                   const std::filesystem::path& executable);
+// Runs `body` as a lab binary's main does: its result, or for what it throws the exit status the lab framework gives
+// each kind of error (common/app/exit_status.h), with the error's line on stderr. `stage` names what ran for an
+// internal error's line.
+int with_exit_status(const Session& session, const std::string& stage, const std::function<int()>& body);
+
 int run_window(Session& session);
 int run_render(Session& session);
+// render --serve (common/app/app_serve.cpp): the grader's cases one after another over its hand-in socket, each in a
+// session, lab and GL context of its own made by `make_lab`, as `started` (the command line's session) runs.
+int run_serve(const LabFactory& make_lab, const Session& started);
 int run_sweep(Session& session);
 // Throws the one-line usage error (exit 2) for a sweep this lab cannot run (no knob, a bad --knob or --values).
 void check_sweep_command(const Session& session);

@@ -86,6 +86,7 @@ CliOptions parse_cli(int argc, const char* const* argv) {
         } else if (arg == "--out" || arg == "-o") o.out = next();
         else if (arg == "--json") o.json = next();
         else if (arg == "--arrays") o.arrays = true;
+        else if (arg == "--serve") o.serve = true;
         else if (arg == "--debug-images") o.debug_images = true;
         else if (arg == "--legend") o.legend = true;
         else if (arg == "--out-dir") o.out_dir = next();
@@ -121,6 +122,7 @@ CliOptions parse_cli(int argc, const char* const* argv) {
     parse_scripted_keys(o.presses);  // a bad key is a bad command line, refused before any window opens
     if (o.legend && o.mode != RunMode::Render && o.mode != RunMode::Animate)
         throw Error("--legend is for render and animate (a window's panel shows the legend by itself)");
+    if (o.serve && o.mode != RunMode::Render) throw Error("--serve is for render (the grader's cases, one after another)");
     return o;
 }
 
@@ -156,6 +158,8 @@ std::string cli_usage(const std::string& program) {
            "  --frames N          timed frames (median reported); --warmup N untimed frames first\n"
            "  --arrays            render: also write the numbers the lab hands the grader beside the image\n"
            "                      (lab 05: every particle's position and velocity, <png stem>.<name>.f32)\n"
+           "  --serve             render: the grader's cases one after another in this process, each from the declared\n"
+           "                      defaults in a fresh GL context (only under gsv-grade, which sends them)\n"
            "  --debug-images      render: also the lab's intermediate images into <png stem>-debug/ (lab 06: every\n"
            "                      port of its network); in a window, S writes them beside each screenshot\n"
            "  --backend B         egl (headless default), osmesa (where built), window\n"

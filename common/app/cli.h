@@ -27,6 +27,7 @@ struct CliOptions {
     std::string out;                     // render, compare: PNG path; window: screenshot path
     std::string json;                    // render: JSON path (default: the PNG's with .json)
     bool arrays = false;                 // render: also the numbers the lab hands the grader (--arrays)
+    bool serve = false;                  // render: the grader's cases one after another, over its socket (--serve)
     bool debug_images = false;           // render: also the lab's intermediate images (--debug-images)
     bool legend = false;                 // render, animate: a colour bar beside the image (--legend)
     std::string out_dir;                 // sweep: folder for CSV and plot; animate: for frames and APNG

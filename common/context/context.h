@@ -22,6 +22,9 @@ struct ContextOptions {
     std::string title = "gsv";
     bool visible = true;
     bool vsync = false;
+    // EGL: leave the display initialized when the context goes, so that a process making context after context
+    // (render --serve: a fresh one per case) starts the driver once. The process's end releases it.
+    bool keep_display = false;
 };
 
 struct ContextInfo {

@@ -57,7 +57,7 @@ EGLDisplay open_headless_display() {
 
 class EglContext final : public Context {
 public:
-    explicit EglContext(const ContextOptions& options) {
+    explicit EglContext(const ContextOptions& options) : keep_display_(options.keep_display) {
         display_ = open_headless_display();
         const char* extensions = eglQueryString(display_, EGL_EXTENSIONS);
         if (!in_extension_list(extensions, "EGL_KHR_surfaceless_context")) {
@@ -110,9 +110,10 @@ private:
     void release() {
         eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         if (context_ != EGL_NO_CONTEXT) eglDestroyContext(display_, context_);
-        eglTerminate(display_);
+        if (!keep_display_) eglTerminate(display_);
         context_ = EGL_NO_CONTEXT;
     }
+    bool keep_display_ = false;
     EGLDisplay display_ = EGL_NO_DISPLAY;
     EGLContext context_ = EGL_NO_CONTEXT;
 };

@@ -58,6 +58,34 @@ private:
 
 bool same(const HandinTag& a, const HandinTag& b) { return a == b; }
 
+// Settings as "name=value" lines, the rest of a challenge's or a case's payload.
+void put_settings(std::vector<std::uint8_t>& out, const std::vector<std::string>& settings, const char* what) {
+    for (const auto& s : settings) {
+        if (s.find('\n') != std::string::npos || s.find('=') == std::string::npos)
+            throw Error(std::string(what) + " setting '" + s + "' is not name=value");
+        out.insert(out.end(), s.begin(), s.end());
+        out.push_back('\n');
+    }
+}
+
+std::vector<std::string> read_settings(PayloadReader& in, const char* what) {
+    const std::size_t n = in.left();
+    const std::uint8_t* text = in.bytes(n);
+    std::vector<std::string> settings;
+    std::string line;
+    for (const std::uint8_t* p = text; p != text + n; ++p) {
+        if (*p != '\n') {
+            line += static_cast<char>(*p);
+            continue;
+        }
+        if (line.find('=') == std::string::npos) throw Error(std::string(what) + " setting '" + line + "' is not name=value");
+        settings.push_back(line);
+        line.clear();
+    }
+    if (!line.empty()) throw Error(std::string(what) + " ends inside a setting");
+    return settings;
+}
+
 }  // namespace
 
 std::string tag_name(const HandinTag& tag) {
@@ -169,12 +197,9 @@ HandinArray read_array_payload(const std::vector<std::uint8_t>& payload) {
 
 std::vector<std::uint8_t> challenge_payload(const HandinChallenge& challenge) {
     std::vector<std::uint8_t> out;
+    out.reserve(kMaxHandinChallengeBytes);  // also keeps GCC 12 from a false -Wstringop-overflow on the first insert
     put_u32(out, challenge.number);
-    for (const auto& s : challenge.settings) {
-        if (s.find('\n') != std::string::npos || s.find('=') == std::string::npos) throw Error("a challenge setting '" + s + "' is not name=value");
-        out.insert(out.end(), s.begin(), s.end());
-        out.push_back('\n');
-    }
+    put_settings(out, challenge.settings, "a challenge");
     if (out.size() > kMaxHandinChallengeBytes) throw Error("a challenge over " + std::to_string(kMaxHandinChallengeBytes) + " bytes");
     return out;
 }
@@ -183,18 +208,32 @@ HandinChallenge read_challenge_payload(const std::vector<std::uint8_t>& payload)
     PayloadReader in(payload, 0, "a challenge");
     HandinChallenge c;
     c.number = in.u32();
-    const std::uint8_t* text = in.bytes(in.left());
-    std::string line;
-    for (const std::uint8_t* p = text; p != payload.data() + payload.size(); ++p) {
-        if (*p != '\n') {
-            line += static_cast<char>(*p);
-            continue;
-        }
-        if (line.find('=') == std::string::npos) throw Error("a challenge setting '" + line + "' is not name=value");
-        c.settings.push_back(line);
-        line.clear();
-    }
-    if (!line.empty()) throw Error("a challenge ends inside a setting");
+    c.settings = read_settings(in, "a challenge");
+    return c;
+}
+
+std::vector<std::uint8_t> case_payload(const HandinCase& request) {
+    std::vector<std::uint8_t> out;
+    out.reserve(kMaxHandinCaseBytes);
+    for (const std::uint32_t v : {request.width, request.height, request.warmup, request.arrays ? 1u : 0u, request.gl_major, request.gl_minor})
+        put_u32(out, v);
+    put_settings(out, request.settings, "a case");
+    if (out.size() > kMaxHandinCaseBytes) throw Error("a case over " + std::to_string(kMaxHandinCaseBytes) + " bytes");
+    return out;
+}
+
+HandinCase read_case_payload(const std::vector<std::uint8_t>& payload) {
+    PayloadReader in(payload, 0, "a case");
+    HandinCase c;
+    c.width = in.u32();
+    c.height = in.u32();
+    c.warmup = in.u32();
+    const std::uint32_t flags = in.u32();
+    if (flags > 1) throw Error("a case message has flags " + std::to_string(flags) + " (1: arrays, the only one)");
+    c.arrays = flags == 1;
+    c.gl_major = in.u32();
+    c.gl_minor = in.u32();
+    c.settings = read_settings(in, "a case");
     return c;
 }
 
@@ -206,6 +245,7 @@ std::uint32_t checked_payload_size(const HandinTag& tag, std::uint32_t declared,
     else if (same(tag, kTagArray)) most = 12 + kMaxArrayNameBytes + 4 * max_array_floats;
     else if (same(tag, kTagReport)) most = kMaxHandinReportBytes;
     else if (same(tag, kTagChallenge)) most = kMaxHandinChallengeBytes;
+    else if (same(tag, kTagCase)) most = kMaxHandinCaseBytes;
     else if (same(tag, kTagEnd) || same(tag, kTagReady)) most = 0;
     else throw Error("a message tagged '" + tag_name(tag) + "', which is no message of the hand-in");
     if (declared > most)

@@ -9,6 +9,11 @@
 // answers with the frame's pixels. The grader times request to answer and compares each answer with the reference's frame drawn with the
 // same settings, so a frame is only fast if its work was done fast (grader/src/run/lab_run.cpp).
 //
+// A lab started with `render --serve` renders case after case in one process: the grader sends each case as a request
+// (its size, warm-up, arrays and settings, what a one-case command line would say), the lab answers it with exactly
+// the messages above (and the challenges of a timed case), and the grader's END after them closes the case. Another
+// request follows only once the last is answered; an END while the lab waits for a case ends the process.
+//
 // A message: a 4-byte tag, a 4-byte little-endian payload size, the payload. Integers are little-endian.
 #include <array>
 #include <cstdint>
@@ -31,13 +36,15 @@ inline constexpr HandinTag kTagReady{'R', 'D', 'Y', '1'};   // after the hand-in
 inline constexpr HandinTag kTagFrame{'F', 'R', 'M', '1'};   // u32 challenge number, then as an image
 // Grader to lab.
 inline constexpr HandinTag kTagChallenge{'C', 'H', 'L', '1'};  // u32 number, then settings as "name=value" lines
-inline constexpr HandinTag kTagEnd{'E', 'N', 'D', '1'};        // no more challenges: exit
+inline constexpr HandinTag kTagEnd{'E', 'N', 'D', '1'};        // no more challenges: exit (served: the case is over)
+inline constexpr HandinTag kTagCase{'C', 'A', 'S', '1'};       // served: the next case (HandinCase below)
 
 inline constexpr std::uint32_t kHandinHeaderBytes = 8;
 // The most a message may hold: an image of 4096 x 4096; a report of 1 MiB; a challenge of 4 KiB.
 inline constexpr std::uint64_t kMaxHandinImagePixels = 4096ull * 4096ull;
 inline constexpr std::uint32_t kMaxHandinReportBytes = 1u << 20;
 inline constexpr std::uint32_t kMaxHandinChallengeBytes = 4096;
+inline constexpr std::uint32_t kMaxHandinCaseBytes = 16384;
 
 struct HandinMessage {
     HandinTag tag{};
@@ -80,6 +87,18 @@ struct HandinChallenge {
 };
 std::vector<std::uint8_t> challenge_payload(const HandinChallenge& challenge);
 HandinChallenge read_challenge_payload(const std::vector<std::uint8_t>& payload);
+
+// A served lab's next case: u32 width, height, warm-up frames, flags (1: hand in the arrays), the GL version's
+// major and minor (0.0: the lab's own), then its settings as "name=value" lines, applied over the declared defaults.
+struct HandinCase {
+    std::uint32_t width = 0, height = 0;
+    std::uint32_t warmup = 0;  // untimed frames before a timed case's challenges (--warmup)
+    bool arrays = false;       // --arrays
+    std::uint32_t gl_major = 0, gl_minor = 0;  // --gl; 0.0: none given
+    std::vector<std::string> settings;  // --set name=value, in order
+};
+std::vector<std::uint8_t> case_payload(const HandinCase& request);
+HandinCase read_case_payload(const std::vector<std::uint8_t>& payload);
 
 // A message's size as its header declares it, refused before anything is read when the tag is unknown or the size
 // is over what that tag may carry (images: `max_pixels`). Throws gsv::Error naming the tag and the size.

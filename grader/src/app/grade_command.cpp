@@ -17,7 +17,7 @@ const char* const kGradeUsage =
     "                 [--public-only] [--profile core|es]"
     " [--timeout S] [--fail-under F] [--update-goldens] [--allow-readable-kit] [--no-namespaces]\n"
     "                 [--no-sandbox] [--build-all] [--fresh-references] [--grader-cache DIR] [--regrade-only changed]\n"
-    "                 [--quiet] [--help] [--version]\n"
+    "                 [--one-process-per-case] [--quiet] [--help] [--version]\n"
     "  --kit DIR         the kit (cases, goldens, hidden cases, solutions); default: the one this was built from\n"
     "  --bin DIR         the kit's built labs and <lab>_solution; default: this build's bin/\n"
     "  --submission DIR  a copy of the kit whose labs/ hold a student's work: built against this kit, then graded\n"
@@ -52,6 +52,9 @@ const char* const kGradeUsage =
     "                    <bin>/../grader-cache\n"
     "  --build-all       compile every lab of a submission, even one whose C++ is byte for byte the kit's starter's\n"
     "                    (otherwise the kit's binary) or an earlier build's (kept in <bin>/../grader-cache/builds)\n"
+    "  --one-process-per-case  start a lab process for each case, rather than one per lab that renders the lab's cases\n"
+    "                    one after another, each from a fresh lab and GL context (the default, but for --cases); the\n"
+    "                    grades are the same\n"
     "       gsv-grade merge OUT SHARD_OUT...  the --out folders of a batch's shards joined into OUT (new or empty):\n"
     "                    the per-submission folders, class.csv, class.txt, batch.json; refused when the shards were\n"
     "                    graded with other seeds, kits, labs or options, overlap, or one is missing\n"
@@ -116,6 +119,10 @@ GradeAction read_grade_command(int argc, char** argv, GradeCommand& command) {
         else if (a == "--no-sandbox") flag(options.sandbox, false);
         else if (a == "--build-all") flag(options.reuse_builds, false);
         else if (a == "--fresh-references") flag(options.stored_references, false);
+        else if (a == "--one-process-per-case") {
+            options.lab_processes = LabProcesses::PerCase;
+            pass_through.push_back(a);
+        }
         else if (a == "--grader-cache") {
             const std::filesystem::path cache = std::filesystem::absolute(value());
             options.build_cache = cache / "builds";

@@ -116,6 +116,18 @@ void grade_case(GradingSession& s, CopySearch& copies, const LabCases& lab, cons
     s.record(check_timing(lab, c, image_row, s.student, s.limits(lab, true), s.reference, s.limits(lab, false)));
 }
 
+// A lab's served processes (GradingSession::serve) for the length of its cases, ended however grading it ends.
+class ServedWhileGrading {
+public:
+    ServedWhileGrading(GradingSession& s, const LabCases& lab) : s_(s) { s_.serve(lab); }
+    ~ServedWhileGrading() { s_.end_serving(); }
+    ServedWhileGrading(const ServedWhileGrading&) = delete;
+    ServedWhileGrading& operator=(const ServedWhileGrading&) = delete;
+
+private:
+    GradingSession& s_;
+};
+
 }  // namespace
 
 GradeReport grade(const GradeOptions& options, const std::function<void(const GradeProgress&)>& progress) {
@@ -126,6 +138,7 @@ GradeReport grade(const GradeOptions& options, const std::function<void(const Gr
         const LabCases& lab = s.labs[i];
         const LabBuild* build = s.build_of(lab.lab);
         const std::size_t first = s.report.results.size();
+        const ServedWhileGrading served(s, lab);
         for (const auto& c : lab.cases) {
             try {
                 grade_case(s, copies, lab, c, s.live[i], build);

@@ -1,6 +1,6 @@
 #pragma once
-// Grades the labs of one submission headless. Each case is rendered by the student's binary in its own
-// sandboxed process and compared with the reference: rendered live by <lab>_solution in the same run
+// Grades the labs of one submission headless. Each case is rendered by the student's binary in a sandboxed process
+// (one per lab, serving its cases one after another, or one per case: LabProcesses) and compared with the reference: rendered live by <lab>_solution in the same run
 // (instructor grading: public and hidden cases, timing) or the committed golden image (self-check). A lab
 // that hands in arrays (lab 05's particles) has them checked as well (grader/src/judge/data_check.h).
 // The run's set-up is session.h's, each check judge/'s; rewriting the goldens is apart (golden/golden_update.h).
@@ -22,6 +22,14 @@ namespace gsv {
 // mutants) in one process renders each reference case once.
 struct ReferenceCache {
     std::map<std::string, LabRun> runs;
+};
+
+// How the labs' processes are started: one per lab for the student and one for the reference, each rendering the lab's
+// cases one after another (render --serve, grader/src/run/lab_serve.h), or one per case.
+enum class LabProcesses {
+    Default,  // one per lab; one per case for a rerun of named cases (`cases`), which is today's path, a few processes
+    PerLab,
+    PerCase,  // --one-process-per-case
 };
 
 struct GradeOptions {
@@ -60,6 +68,9 @@ struct GradeOptions {
     Profile profile = Profile::Core;
     // On ES: every case at least at this version (a case's own "es" above it stands); none: each lab's lowest.
     std::optional<GlVersion> es_at_least;
+    // The grades are the same either way (tests/test_grader_serve.cpp); one process per lab is a fraction of the time.
+    // A student's lab is served only behind the allow-list walls, whose sandbox can stop it between its cases.
+    LabProcesses lab_processes = LabProcesses::Default;
 };
 
 struct GradeProgress {

@@ -171,6 +171,27 @@ LabRun GradingSession::reference_render(const LabCases& lab, const GradeCase& c)
     return run;
 }
 
+void GradingSession::serve(const LabCases& lab) {
+    end_serving();
+    const bool per_lab = options.lab_processes == LabProcesses::PerLab ||
+                         (options.lab_processes == LabProcesses::Default && options.cases.empty());
+    if (!per_lab) return;
+    // Student code is served only where its sandbox can stop it between its cases (sandbox.h): without namespaces its
+    // processes would run on while the grader judges, the reference renders or anything is timed.
+    if (options.sandbox && support_.allow_list()) {
+        served_student_ = std::make_unique<ServedLab>(lab.lab);
+        student.served = served_student_.get();
+    }
+    served_reference_ = std::make_unique<ServedLab>(lab.lab + "_solution");
+    reference.served = served_reference_.get();
+}
+
+void GradingSession::end_serving() {
+    student.served = reference.served = nullptr;
+    served_student_.reset();
+    served_reference_.reset();
+}
+
 fs::path GradingSession::student_kit() const { return student.root.empty() ? kit : student.root; }
 
 const LabBuild* GradingSession::build_of(const std::string& lab) const {

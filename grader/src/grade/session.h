@@ -4,6 +4,7 @@
 // (case_selection.cpp), puts up the walls (walls.cpp), builds a submission's labs and makes the two runners; then
 // each check is one row, recorded here.
 #include "grader/src/grade/grade.h"
+#include "grader/src/run/lab_serve.h"
 #include "grader/src/run/process.h"
 #include "grader/src/run/reference_store.h"
 #include "grader/src/run/sandbox.h"
@@ -13,6 +14,7 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -42,6 +44,10 @@ public:
     std::filesystem::path student_kit() const;
     // The build of a lab of the submission; none when the kit's own labs are graded.
     const LabBuild* build_of(const std::string& lab) const;
+    // From serve(lab) to end_serving(), the runners render the lab's cases through one process each (lab_serve.h),
+    // where the options choose it and, for the student, the allow-list walls are up; ended by end_serving.
+    void serve(const LabCases& lab);
+    void end_serving();
 
     const GradeOptions& options;
     const std::filesystem::path out, kit, bin;
@@ -75,6 +81,8 @@ private:
     int references_rendered_ = 0;
     std::string reference_key(const LabCases& lab, const GradeCase& c);
     int total_ = 0;
+    // Last: their processes end before the walls (policy_, support_) and the uid lease they run under go.
+    std::unique_ptr<ServedLab> served_student_, served_reference_;
 };
 
 }  // namespace gsv

@@ -1,7 +1,7 @@
 #pragma once
-// Runs a lab binary headless on one case, in a working folder of its own, and takes only what it hands in over
-// the hand-in socket (common/io/handin.h): its image (size-checked), its JSON report and, for a lab whose cases
-// check arrays, the arrays. Nothing is read from the folder the lab wrote into. A timed run also answers the
+// Runs a lab binary headless on one case, in a working folder of its own (a process for the case, or one that serves
+// the lab's cases one after another: lab_serve.h), and takes only what it hands in over the hand-in socket
+// (common/io/handin.h): its image (size-checked), its JSON report and, for a lab whose cases check arrays, the arrays. Nothing is read from the folder the lab wrote into. A timed run also answers the
 // grader's challenges: each timed frame drawn with settings drawn afresh, timed from the challenge to the last
 // byte of the answer, and kept for checking against the reference's frame with the same settings.
 #include "common/gl/gl_version.h"
@@ -33,6 +33,8 @@ struct LabRun {
     std::string renderer;    // GL_RENDERER as the lab's report gives it (what it ran on, in words): shown, never graded
 };
 
+class ServedLab;
+
 struct LabRunner {
     std::filesystem::path bin_dir;
     std::filesystem::path root;  // GSV_ROOT for the lab (a submission's kit view); empty: the binary's own
@@ -40,11 +42,16 @@ struct LabRunner {
     // The GL profile the lab runs on (--profile); on ES a case that declares "es" runs at that version (--gl),
     // the others at the lab's own lowest ES version.
     Profile profile = Profile::Core;
+    // Where one is open: the lab binary that renders this runner's cases of it one after another, in one process
+    // (lab_serve.h); renders of other binaries, and all where none is open, each start a process of their own.
+    ServedLab* served = nullptr;
 
     // The case's image at the lab's size (one frame), and its arrays where the lab checks them; or with
     // `challenges` (one list of settings each), a timed run at the lab's timing size: one frame per challenge.
     LabRun render(const std::string& binary, const LabCases& lab, const GradeCase& c, const ProcessLimits& limits,
                   const std::vector<std::vector<std::string>>* challenges = nullptr) const;
+    // What the lab's process gets in its environment: GSV_ROOT where root is set.
+    std::vector<std::string> environment() const;
 };
 
 double median(std::vector<double> values);  // 0 for none

@@ -12,6 +12,7 @@
 #include <dirent.h>
 #include <fcntl.h>
 #include <grp.h>
+#include <poll.h>
 #include <sched.h>
 #include <sys/mount.h>
 #include <sys/prctl.h>
@@ -262,6 +263,86 @@ int wait_for(pid_t pid) {
     return status;
 }
 
+// What the working folder holds now, from inside (it goes with the namespace, so only here can it be seen), said on the
+// report channel as "<word> BYTES FILES FULL"; just "<word>" where the folder is not the namespace's own.
+void say_folder(const SandboxPlan& plan, const char* word) {
+    if (plan.report_fd < 0) return;
+    char line[128];
+    int n = std::snprintf(line, sizeof line, "%s\n", word);
+    struct statvfs use {};
+    if (!plan.folder_options.empty() && statvfs(plan.working_dir.c_str(), &use) == 0) {
+        const unsigned long long bytes = (use.f_blocks - use.f_bfree) * use.f_frsize, files = use.f_files - use.f_ffree;
+        // Full: less room left than one more block, or no entry left.
+        const int full = use.f_bavail == 0 || use.f_favail == 0;
+        n = std::snprintf(line, sizeof line, "%s %llu %llu %d\n", word, bytes, files, full);
+    }
+    (void)!write(plan.report_fd, line, static_cast<std::size_t>(n));
+}
+
+// Whether every thread of every process of the namespace but this one (its first) is stopped or gone, as its /proc
+// says (a /proc the kernel refused to mount shows none).
+bool all_stopped() {
+    DIR* proc = opendir("/proc");
+    if (!proc) return true;
+    bool stopped = true;
+    char path[600], stat[512];  // path: room for two names of up to 255 bytes
+    while (const dirent* e = readdir(proc)) {
+        if (e->d_name[0] < '1' || e->d_name[0] > '9' || std::strcmp(e->d_name, "1") == 0) continue;
+        std::snprintf(path, sizeof path, "/proc/%s/task", e->d_name);
+        DIR* tasks = opendir(path);
+        if (!tasks) continue;  // gone meanwhile
+        while (const dirent* t = readdir(tasks)) {
+            if (t->d_name[0] < '1' || t->d_name[0] > '9') continue;
+            std::snprintf(path, sizeof path, "/proc/%s/task/%s/stat", e->d_name, t->d_name);
+            const int fd = open(path, O_RDONLY | O_CLOEXEC);
+            if (fd < 0) continue;
+            const ssize_t n = read(fd, stat, sizeof stat - 1);
+            close(fd);
+            if (n <= 0) continue;
+            stat[n] = '\0';
+            // The state follows the name, which is in parentheses and may hold anything.
+            const char* at = std::strrchr(stat, ')');
+            const char state = at && at[1] == ' ' ? at[2] : 'R';
+            if (state != 'T' && state != 't' && state != 'Z' && state != 'X') stopped = false;
+        }
+        closedir(tasks);
+    }
+    closedir(proc);
+    return stopped;
+}
+
+// The namespace's first process while a served lab runs (ServedProcess, process.h): it waits for the student's process
+// and answers the grader's commands on the report channel, a byte each. 'p' stops every other process of the namespace
+// and says "paused" with what the working folder holds once each of their threads has stopped, so nothing of the
+// student's runs between its cases: not while the grader judges, the reference renders or anything is timed, and no
+// message can reach the hand-in socket then. 'r' lets them run again. The grader gone (its end closed), all end.
+int answer_commands(const SandboxPlan& plan, pid_t student) {
+    while (true) {
+        int status = 0;
+        if (waitpid(student, &status, WNOHANG) == student) return status;
+        pollfd p{plan.report_fd, POLLIN, 0};
+        if (poll(&p, 1, 50) <= 0) continue;
+        char command = 0;
+        const ssize_t n = read(plan.report_fd, &command, 1);
+        if (n < 0 && (errno == EINTR || errno == EAGAIN)) continue;
+        if (n <= 0) {
+            kill(-1, SIGKILL);
+            return wait_for(student);
+        }
+        if (command == 'p') {
+            // Again until every thread has stopped: a process forked while the signal went round was not sent it.
+            for (int tries = 0; tries < 4000; ++tries) {
+                kill(-1, SIGSTOP);
+                if (all_stopped()) break;
+                usleep(500);
+            }
+            say_folder(plan, "paused");
+        } else if (command == 'r') {
+            kill(-1, SIGCONT);
+        }
+    }
+}
+
 // Absolute, with every folder on the way resolved; the last component is kept as it is, so a link stays a link
 // (a submission's view of the kit links to its shaders/ and data/, which are bound too).
 std::string host_path(const fs::path& p) {
@@ -362,18 +443,9 @@ bool enter_sandbox(const SandboxPlan& plan, std::string& why) {
     const pid_t student = fork();
     if (student < 0) return fail(why, "cannot fork the student's process");
     if (student > 0) {
-        const int status = wait_for(student);
+        const int status = plan.answers_commands ? answer_commands(plan, student) : wait_for(student);
         (void)!write(status_pipe[1], &status, sizeof status);
-        // What the working folder holds now, from inside: it goes with the namespace, so only here can it be seen.
-        struct statvfs use {};
-        if (plan.report_fd >= 0 && !plan.folder_options.empty() && statvfs(plan.working_dir.c_str(), &use) == 0) {
-            const unsigned long long bytes = (use.f_blocks - use.f_bfree) * use.f_frsize, files = use.f_files - use.f_ffree;
-            // Full: less room left than one more block, or no entry left.
-            const int full = use.f_bavail == 0 || use.f_favail == 0;
-            char line[96];
-            const int n = std::snprintf(line, sizeof line, "folder %llu %llu %d\n", bytes, files, full);
-            (void)!write(plan.report_fd, line, static_cast<std::size_t>(n));
-        }
+        say_folder(plan, "folder");
         _exit(0);  // every other process of the namespace ends here
     }
     close(status_pipe[1]);

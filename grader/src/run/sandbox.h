@@ -80,6 +80,10 @@ struct SandboxPlan {
     // Where the namespace's first process says, once the student's process ended, what the working folder holds
     // ("folder BYTES FILES FULL\n"); -1: not asked.
     int report_fd = -1;
+    // A served lab (ServedProcess, process.h): while the student's process runs, the namespace's first process also
+    // answers the grader's commands on report_fd: 'p' stops every other process of the namespace and says "paused"
+    // with what the working folder holds (as above), 'r' lets them run again.
+    bool answers_commands = false;
     std::uint64_t address_space_bytes = 0, file_size_bytes = 0, processes = 0, cpu_seconds = 0;
 };
 // `private_folder`: the working folder is the tmpfs kCaseFolder inside (with namespaces; `working_dir` is then

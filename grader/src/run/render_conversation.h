@@ -1,0 +1,78 @@
+#pragma once
+// One render of a case as the grader asks a lab for it, the same whether the lab runs for that case alone
+// (`render` with the case on its command line: lab_run.cpp) or serves case after case (`render --serve`, the case
+// as a request: lab_serve.cpp), and the grader's side of the hand-in that answers it. Internal to grader/src/run/.
+#include "grader/src/run/lab_run.h"
+
+#include "common/io/handin.h"
+#include "common/io/json.h"
+
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace gsv {
+
+// What one render asks of the lab: the case's settings at the lab's size, or for a timed run at its timing size after
+// its warm-up, one frame per challenge.
+struct RenderRequest {
+    int width = 0, height = 0, warmup = 0;
+    bool arrays = false;
+    Profile profile = Profile::Core;
+    std::optional<GlVersion> gl;  // on ES: the case's version, where it names one
+    std::vector<std::string> settings;
+    const std::vector<std::vector<std::string>>* challenges = nullptr;
+
+    bool timed() const { return challenges != nullptr; }
+    // The one-case command line after the binary: render --size WxH --frames 1 --warmup N [--arrays] [--profile P]
+    // [--gl X.Y] --set name=value...
+    std::vector<std::string> command_line() const;
+    // The same as a served lab's request (common/io/handin.h).
+    HandinCase served() const;
+};
+RenderRequest render_request(const LabCases& lab, const GradeCase& c, Profile profile,
+                             const std::vector<std::vector<std::string>>* challenges);
+
+// The grader's side of one render: the hand-in (arrays, image, report: the report last), then, once the lab says it
+// is warm, for a timed run one challenge at a time, each answered by its frame. Anything out of that order, or
+// malformed, is refused.
+class RenderConversation : public HandinConversation {
+public:
+    explicit RenderConversation(const RenderRequest& request)
+        : width_(request.width), height_(request.height), challenges_(request.challenges) {}
+
+    std::uint64_t max_image_pixels() const override { return std::uint64_t(width_) * std::uint64_t(height_); }
+    void received(HandinMessage message, double t, const Reply& reply) override;
+    // Served: the hand-in, the ready that follows it and every frame asked for, after which the grader said END.
+    bool answered() const override { return ready_ && answered_all(); }
+
+    bool handed_in() const { return report_.has_value(); }
+    // The frame time the lab reports for its own frame: for the benchmark's breakdown only, never for a grade.
+    double reported_frame_ms() const;
+    // GL_RENDERER as the lab reports it: one line of at most 200 bytes, whatever a student's lab wrote there.
+    std::string renderer() const;
+    bool answered_all() const { return !challenges_ || frames.size() == challenges_->size(); }
+
+    std::optional<Image> image;
+    std::vector<DataArray> arrays;
+    std::vector<Image> frames;
+    std::vector<double> frame_ms;
+
+private:
+    // The next challenge, or the end.
+    void ask(const Reply& reply);
+
+    int width_, height_;
+    const std::vector<std::vector<std::string>>* challenges_;
+    std::optional<Json> report_;
+    std::set<std::string> names_;
+    bool ready_ = false, asked_ = false;
+    double asked_at_ = 0;
+};
+
+// The run as the grader grades it: how the process ended (classify), then what it handed in (an image of the asked
+// size, the arrays, every timed frame asked for).
+LabRun rendered(ProcessResult process, RenderConversation& conversation, const LabCases& lab, const RenderRequest& request);
+
+}  // namespace gsv
