@@ -2,13 +2,17 @@
 """A class graded by today's path and by the reusing one, in the same run (scripts/kit bench; grader/README.md).
 
 Six submissions: the starters, the solutions, and four with one lab's TODOs done (labs 02, 04 and 06: GLSL only; lab 05:
-C++ too). Each round grades the batch three ways, in alternating order between rounds:
-  every lab built, every live reference rendered    gsv-grade --batch ... --build-all --fresh-references
-  only what differs built, references kept on disk  gsv-grade --batch ...           (a fresh --grader-cache each round)
-  a rerun with nothing changed                      gsv-grade --batch ... --regrade-only changed (into the reusing run's --out)
-and checks that the first two give every submission the same score. Prints seconds per submission, the ratios with
+C++ too). Each round grades the batch four ways, the first three in an order that turns between rounds:
+  today: every lab built, every live reference rendered, a process per case
+                                 gsv-grade --batch ... --build-all --fresh-references --one-process-per-case
+  reusing: only what differs built, references kept on disk, a process per case
+                                 gsv-grade --batch ... --one-process-per-case  (a fresh --grader-cache each round)
+  served: the same, and one process per lab renders its cases
+                                 gsv-grade --batch ...                         (a fresh --grader-cache each round)
+  a rerun with nothing changed   gsv-grade --batch ... --regrade-only changed (into the served run's --out)
+and checks that the first three give every submission the same score. Prints seconds per submission, the ratios with
 their spread over rounds, and what 300 students would take on one such machine and on 8. A benchmark: it never fails
-on speed, only when the grades of the two paths differ or a run fails.
+on speed, only when the grades of the paths differ or a run fails.
 
 usage: bench_class.py BIN_DIR KIT_ROOT [--rounds N] [--workers N] [--quick]
   --quick: public cases only, no timing checks (about a fifth of the time)
@@ -79,24 +83,25 @@ def main():
     try:
         class_dir = os.path.join(work, "class")
         make_class(kit, class_dir)
-        today, reuse, rerun = [], [], []
+        per_way = {"today": [], "reuse": [], "served": []}
+        rerun = []
         for r in range(rounds):
-            cache_today, cache_new = os.path.join(work, "cache-today-%d" % r), os.path.join(work, "cache-new-%d" % r)
-            ways = [("today", ["--build-all", "--fresh-references", "--grader-cache", cache_today]),
-                    ("reuse", ["--grader-cache", cache_new])]
-            if r % 2:
-                ways.reverse()
+            cache = {way: os.path.join(work, "cache-%s-%d" % (way, r)) for way in per_way}
+            ways = [("today", ["--build-all", "--fresh-references", "--one-process-per-case", "--grader-cache", cache["today"]]),
+                    ("reuse", ["--one-process-per-case", "--grader-cache", cache["reuse"]]),
+                    ("served", ["--grader-cache", cache["served"]])]
+            ways = ways[r % 3:] + ways[:r % 3]
             rows = {}
             for way, extra in ways:
                 seconds, rows[way] = grade(grader, class_dir, os.path.join(work, "%s-%d" % (way, r)), extra, workers, flags)
-                (today if way == "today" else reuse).append(seconds / n)
+                per_way[way].append(seconds / n)
                 print("round %d, %-6s %7.1f s for %d submissions" % (r + 1, way, seconds, n), flush=True)
             for name in DONE:
-                if rows["today"][name]["score"] != rows["reuse"][name]["score"]:
-                    sys.exit("bench_class: %s scored %s by today's path and %s by the reusing one" %
-                             (name, rows["today"][name]["score"], rows["reuse"][name]["score"]))
-            seconds, again = grade(grader, class_dir, os.path.join(work, "reuse-%d" % r),
-                                   ["--grader-cache", cache_new, "--regrade-only", "changed"], workers, flags)
+                scores = {way: rows[way][name]["score"] for way in per_way}
+                if len(set(scores.values())) != 1:
+                    sys.exit("bench_class: %s scored differently by the paths: %s" % (name, scores))
+            seconds, again = grade(grader, class_dir, os.path.join(work, "served-%d" % r),
+                                   ["--grader-cache", cache["served"], "--regrade-only", "changed"], workers, flags)
             if any(again[name]["regraded"] != "none" for name in DONE):
                 sys.exit("bench_class: a rerun with nothing changed regraded something: %s" %
                          {name: again[name]["regraded"] for name in DONE})
@@ -108,13 +113,18 @@ def main():
         print()
         print("grading %d submissions, %d workers, %s, %d round(s), seconds per submission (median, range):" %
               (n, workers, "public cases, no timing" if quick else "hidden cases, timing, live references", rounds))
-        print("  every lab built, every reference rendered  %s" % spread(today))
-        print("  only what differs built, references kept   %s" % spread(reuse))
-        print("  rerun, nothing changed                     %s" % spread(rerun))
-        print("  reusing / today                            %s" % spread([b / a for a, b in zip(today, reuse)]))
-        print("  rerun / first reusing run                  %s" % spread([c / b for b, c in zip(reuse, rerun)]))
-        print("  every submission scored the same both ways")
-        for way, per in (("today's path", statistics.median(today)), ("the reusing path", statistics.median(reuse))):
+        today, reuse, served = per_way["today"], per_way["reuse"], per_way["served"]
+        print("  today: every lab built, every reference rendered, a process per case  %s" % spread(today))
+        print("  reusing: only what differs built, references kept, a process per case %s" % spread(reuse))
+        print("  served: reusing, and one process per lab                              %s" % spread(served))
+        print("  rerun, nothing changed                                                %s" % spread(rerun))
+        print("  reusing / today                                                       %s" % spread([b / a for a, b in zip(today, reuse)]))
+        print("  served / today                                                        %s" % spread([b / a for a, b in zip(today, served)]))
+        print("  served / reusing                                                      %s" % spread([b / a for a, b in zip(reuse, served)]))
+        print("  rerun / first served run                                              %s" % spread([c / b for b, c in zip(served, rerun)]))
+        print("  every submission scored the same every way")
+        for way, per in (("today's path", statistics.median(today)), ("the reusing path", statistics.median(reuse)),
+                         ("the served path", statistics.median(served))):
             class_s = 300 * per
             print("  300 students by %-17s %5.1f h on this machine, %5.1f h on 8 such (shards)" % (way + ":", class_s / 3600, class_s / 3600 / 8))
         print("  (a class's submissions reuse one another's builds and references more than these six do)")

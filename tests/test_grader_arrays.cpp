@@ -535,7 +535,10 @@ void write_fake_lab(const fs::path& bin, const std::string& binary, const fs::pa
                              "        if tag == b'END1': return\n"
                              "        send(b'FRM1', payload[:4] + image)\n"
                              // render --serve: a case per request, until the grader's END.
-                             "while '--serve' in sys.argv and message()[0] == b'CAS1': render_case()\n"
+                             "if '--serve' in sys.argv: send(b'DNE1')\n"
+                             "while '--serve' in sys.argv and message()[0] == b'CAS1':\n"
+                             "    render_case()\n"
+                             "    send(b'DNE1')\n"
                              "if '--serve' not in sys.argv: render_case()\n";
     fs::permissions(script, fs::perms::owner_all);
 }

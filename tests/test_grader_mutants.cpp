@@ -175,50 +175,6 @@ TEST_CASE("grader: a shader doing sixteen times the work is too slow, though its
     CHECK(timed_faults == 1);
 }
 
-namespace {
-
-// A TODO's block of C++ (//@solution ... //@starter ... //@end) becomes a choice made at run time, so that one
-// build holds the solution, the TODO left undone and each classic bug: $GSV_TEST_MUTANT picks (the grader passes
-// GSV_ variables on to student processes).
-std::string switch_blocks(const std::string& text, const std::string& file, const Json& cpp_mutants) {
-    std::istringstream in(text);
-    std::string out = "bool gsv_test_mutant_is(const char* name);\n", line, todo, solution, starter;
-    enum { Both, Solution, Starter } state = Both;
-    while (std::getline(in, line)) {
-        const auto marker = line.find_first_not_of(" \t");
-        const std::string t = marker == std::string::npos ? "" : line.substr(marker);
-        if (t.rfind("//@solution", 0) == 0) {
-            todo = t.substr(12);
-            solution.clear();
-            starter.clear();
-            state = Solution;
-        } else if (t == "//@starter") {
-            state = Starter;
-        } else if (t == "//@end") {
-            out += "if (gsv_test_mutant_is(\"" + todo + " left undone\")) {\n" + starter + "}";
-            for (const Json& m : cpp_mutants.as_array()) {
-                if (m.string_at("file") != file || m.string_at("todo") != todo) continue;
-                std::string bugged = solution;
-                const auto at = bugged.find(m.string_at("find"));
-                if (at == std::string::npos) FAIL("cpp mutant '" << m.string_at("name") << "': its find is not in " << todo << "'s block");
-                bugged.replace(at, m.string_at("find").size(), m.string_at("replace"));
-                out += " else if (gsv_test_mutant_is(\"" + m.string_at("name") + "\")) {\n" + bugged + "}";
-            }
-            out += " else {\n" + solution + "}\n";
-            state = Both;
-        } else if (state == Solution) {
-            solution += line + "\n";
-        } else if (state == Starter) {
-            starter += line.substr(line.find("//") + 2) + "\n";
-        } else {
-            out += line + "\n";
-        }
-    }
-    return out;
-}
-
-}  // namespace
-
 TEST_CASE("every C++ TODO: left undone or with a classic bug it loses points, live and in the self-check", "[grader][mutants]") {
     const auto cache = std::make_shared<ReferenceCache>();
     for (const auto& lab : test::labs_with_mutants()) {
@@ -232,17 +188,7 @@ TEST_CASE("every C++ TODO: left undone or with a classic bug it loses points, li
         const Json& cpp_mutants = spec.contains("cpp_mutants") ? spec.array_at("cpp_mutants") : none;
         // One submission: the reference with every C++ TODO block switched at run time.
         test::TempDir dir;
-        const auto folder = dir.path("submission/labs") / lab_dir;
-        std::filesystem::create_directories(folder.parent_path());
-        std::filesystem::copy(test::source_root() / "solutions" / lab_dir, folder, std::filesystem::copy_options::recursive);
-        for (const auto& e : std::filesystem::directory_iterator(folder))
-            if (is_cpp_file(e.path().filename().string())) {
-                const std::string switched = switch_blocks(test::read_text(e.path()), e.path().filename().string(), cpp_mutants);
-                std::ofstream(e.path(), std::ios::binary) << switched;
-            }
-        std::ofstream(folder / "mutant_switch.cpp")
-            << "#include <cstdlib>\n#include <cstring>\nbool gsv_test_mutant_is(const char* name) {\n"
-               "    const char* chosen = std::getenv(\"GSV_TEST_MUTANT\");\n    return chosen && std::strcmp(chosen, name) == 0;\n}\n";
+        test::write_switched_cpp_submission(dir.path("submission"), lab_dir, cpp_mutants);
         GradeOptions built = test::instructor_options(lab, dir.path("built"));
         built.submission = dir.path("submission");
         for (const auto& todo : cpp_todos) {

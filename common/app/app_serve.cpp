@@ -60,12 +60,16 @@ int run_serve(const LabFactory& make_lab, const Session& started) {
     if (!grader.active())
         throw Error("render --serve renders the cases gsv-grade sends over its hand-in socket ($" + std::string(kHandinVariable) +
                     " is not set): run render without --serve");
+    // Waiting for the first case: what this process sent before it (nothing, honestly) the grader refuses.
+    grader.send(kTagDone, {});
     while (const auto message = grader.receive()) {
         if (message->tag == kTagEnd) return kExitOk;
         if (message->tag != kTagCase) throw Error("the grader sent a " + tag_name(message->tag) + " message, not a case");
         const int status = serve_case(make_lab, started, read_case_payload(message->payload));
         // A case that failed ends the process as its one-case run would have ended: the grader starts another.
         if (status != kExitOk) return status;
+        std::fflush(stdout);
+        grader.send(kTagDone, {});
     }
     return kExitOk;  // the grader closed its end
 }

@@ -246,7 +246,7 @@ std::uint32_t checked_payload_size(const HandinTag& tag, std::uint32_t declared,
     else if (same(tag, kTagReport)) most = kMaxHandinReportBytes;
     else if (same(tag, kTagChallenge)) most = kMaxHandinChallengeBytes;
     else if (same(tag, kTagCase)) most = kMaxHandinCaseBytes;
-    else if (same(tag, kTagEnd) || same(tag, kTagReady)) most = 0;
+    else if (same(tag, kTagEnd) || same(tag, kTagReady) || same(tag, kTagDone)) most = 0;
     else throw Error("a message tagged '" + tag_name(tag) + "', which is no message of the hand-in");
     if (declared > most)
         throw Error("a " + tag_name(tag) + " message of " + std::to_string(declared) + " bytes, over the " +

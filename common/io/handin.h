@@ -9,10 +9,12 @@
 // answers with the frame's pixels. The grader times request to answer and compares each answer with the reference's frame drawn with the
 // same settings, so a frame is only fast if its work was done fast (grader/src/run/lab_run.cpp).
 //
-// A lab started with `render --serve` renders case after case in one process: the grader sends each case as a request
-// (its size, warm-up, arrays and settings, what a one-case command line would say), the lab answers it with exactly
-// the messages above (and the challenges of a timed case), and the grader's END after them closes the case. Another
-// request follows only once the last is answered; an END while the lab waits for a case ends the process.
+// A lab started with `render --serve` renders case after case in one process. It says DONE when it waits for its first
+// case; the grader sends each case as a request (its size, warm-up, arrays and settings, what a one-case command line
+// would say), the lab answers it with exactly the messages above (and the challenges of a timed case), and after the
+// grader's END it says DONE again once everything of the case is gone (its lab, session and GL context): the case's
+// time ends there, as a process's would at its exit. Another request follows only once the last is answered; an END
+// while the lab waits for a case ends the process. Anything else the lab sends while no request is open is refused.
 //
 // A message: a 4-byte tag, a 4-byte little-endian payload size, the payload. Integers are little-endian.
 #include <array>
@@ -34,6 +36,7 @@ inline constexpr HandinTag kTagArray{'A', 'R', 'R', '1'};   // u32 name bytes, n
 inline constexpr HandinTag kTagReport{'R', 'P', 'T', '1'};  // the JSON report; always last of the hand-in
 inline constexpr HandinTag kTagReady{'R', 'D', 'Y', '1'};   // after the hand-in and the warm-up: ready for challenges
 inline constexpr HandinTag kTagFrame{'F', 'R', 'M', '1'};   // u32 challenge number, then as an image
+inline constexpr HandinTag kTagDone{'D', 'N', 'E', '1'};    // served: waiting for a case (at the start, after each)
 // Grader to lab.
 inline constexpr HandinTag kTagChallenge{'C', 'H', 'L', '1'};  // u32 number, then settings as "name=value" lines
 inline constexpr HandinTag kTagEnd{'E', 'N', 'D', '1'};        // no more challenges: exit (served: the case is over)

@@ -125,8 +125,12 @@ void write_line(int fd, const char* text) { (void)!write(fd, text, std::strlen(t
 class UnaskedConversation : public HandinConversation {
 public:
     std::uint64_t max_image_pixels() const override { return 0; }
-    void received(HandinMessage message, double, const Reply&) override {
-        throw Error("handed in a " + tag_name(message.tag) + " message before the grader asked for a case");
+    void announced(const HandinTag& tag) override { refuse(tag); }
+    void received(HandinMessage message, double, const Reply&) override { refuse(message.tag); }
+
+private:
+    [[noreturn]] static void refuse(const HandinTag& tag) {
+        throw Error("handed in a " + tag_name(tag) + " message before the grader asked for a case");
     }
 };
 
@@ -188,6 +192,7 @@ private:
                 n -= k;
                 if (header_got_ < kHandinHeaderBytes) return;
                 std::memcpy(message_.tag.data(), header_, 4);
+                conversation.announced(message_.tag);
                 payload_left_ = checked_payload_size(message_.tag, u32_from_le_bytes(header_ + 4),
                                                      conversation.max_image_pixels(), kMaxArrayFloats);
                 message_.payload.clear();

@@ -18,6 +18,9 @@ ServedLab::ServedLab(std::string binary) : binary_(std::move(binary)) {}
 ServedLab::~ServedLab() = default;
 
 LabRun ServedLab::render(const LabRunner& runner, const LabCases& lab, const RenderRequest& request, const ProcessLimits& limits) {
+    // The CPU-time limit is the process's (sandbox.h: the timeout times the cores, a backstop to it): a process that has
+    // been busy half a timeout makes way for a fresh one rather than run into it in a later case.
+    if (process_ && process_->busy_seconds() > 0.5 * std::chrono::duration<double>(limits.timeout).count()) process_.reset();
     const bool fresh = !process_ || !process_->running() || process_->answered() == 0;
     LabRun run = render_once(runner, lab, request, limits);
     if (run.status == CaseStatus::Passed) return run;

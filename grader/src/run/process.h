@@ -32,6 +32,8 @@ public:
     // A whole message, arrived at `t` (seconds since the start). Throw gsv::Error to refuse what the lab sent:
     // the process is killed, and the text is ProcessResult::refused.
     virtual void received(HandinMessage message, double t, const Reply& reply) = 0;
+    // A message's header, before its payload is read: throw gsv::Error to refuse a message not wanted at all now.
+    virtual void announced(const HandinTag&) {}
     // A served process (served_process.h): whether the lab has said all this request asks for, so that the process
     // waits for the next one. run_process asks nothing of it: its process runs to its end.
     virtual bool answered() const { return false; }

@@ -88,6 +88,10 @@ void RenderConversation::received(HandinMessage message, double t, const Reply& 
         frame.rgba = std::move(f.image.rgba);
         frames.push_back(std::move(frame));
         ask(reply);
+    } else if (tag == kTagDone) {
+        if (!ready_ || !answered_all() || done_)
+            throw Error(done_ ? "said twice that its case was done" : "said its case was done before it had answered it");
+        done_ = true;
     } else {
         throw Error("sent a " + tag_name(tag) + " message, which a lab does not send");
     }

@@ -44,8 +44,8 @@ public:
 
     std::uint64_t max_image_pixels() const override { return std::uint64_t(width_) * std::uint64_t(height_); }
     void received(HandinMessage message, double t, const Reply& reply) override;
-    // Served: the hand-in, the ready that follows it and every frame asked for, after which the grader said END.
-    bool answered() const override { return ready_ && answered_all(); }
+    // Served: the hand-in, the ready that follows it, every frame asked for, the grader's END, then the lab's DONE.
+    bool answered() const override { return done_; }
 
     bool handed_in() const { return report_.has_value(); }
     // The frame time the lab reports for its own frame: for the benchmark's breakdown only, never for a grade.
@@ -67,7 +67,7 @@ private:
     const std::vector<std::vector<std::string>>* challenges_;
     std::optional<Json> report_;
     std::set<std::string> names_;
-    bool ready_ = false, asked_ = false;
+    bool ready_ = false, asked_ = false, done_ = false;
     double asked_at_ = 0;
 };
 

@@ -4,6 +4,23 @@
 #include "grader/src/run/child_process.h"
 
 namespace gsv {
+namespace {
+
+// A served process's first words: DONE, waiting for its first request. Anything before it was handed in unasked.
+class FirstWords : public HandinConversation {
+public:
+    std::uint64_t max_image_pixels() const override { return 0; }
+    void announced(const HandinTag& tag) override {
+        if (tag != kTagDone || said_) throw Error("handed in a " + tag_name(tag) + " message before the grader asked for a case");
+    }
+    void received(HandinMessage, double, const Reply&) override { said_ = true; }
+    bool answered() const override { return said_; }
+
+private:
+    bool said_ = false;
+};
+
+}  // namespace
 
 ServedProcess::ServedProcess(const std::vector<std::string>& argv, const ProcessLimits& limits, const std::vector<std::string>& environment)
     : timeout_(limits.timeout) {
@@ -49,7 +66,11 @@ ProcessResult ServedProcess::request(HandinConversation& conversation, const Han
     // process of its own would show it. Its hand-in and flood limit are this request's alone.
     child.result.handin_bytes = 0;
     child.result.output_bytes = child.result.output.size();
-    const bool ready = answered_ == 0 ? pause(deadline) : child.running();
+    bool ready = child.running();
+    if (answered_ == 0) {
+        FirstWords first;
+        ready = child.pump(&first, deadline, [&] { return first.answered(); }) == ChildProcess::Pumped::Done && pause(deadline);
+    }
     if (ready) {
         try {
             child.send(tag, payload);
@@ -67,6 +88,7 @@ ProcessResult ServedProcess::request(HandinConversation& conversation, const Han
             ProcessResult result = child.result;
             result.exit_code = 0;
             result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - from).count();
+            busy_seconds_ += result.seconds;
             child.result.output.clear();
             child.result.output_bytes = 0;
             return result;

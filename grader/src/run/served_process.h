@@ -1,6 +1,7 @@
 #pragma once
 // A process that answers one request after another on its hand-in socket (a lab in `render --serve` mode:
-// common/io/handin.h), behind exactly run_process's walls (process.h, sandbox.h). Each request has a deadline of its
+// common/io/handin.h), behind exactly run_process's walls (process.h, sandbox.h). It says DONE when it waits for its
+// first request, which is sent only then: what it hands in before is refused, not taken for an answer. Each request has a deadline of its
 // own, timed from the request (the first from the start, which it includes), and its own output, flood limit and
 // hand-in. Between requests nothing of a sandboxed one runs: its namespace's first process stops every process in it
 // and measures its working folder (SandboxPlan::answers_commands), and anything handed in while no request is open
@@ -34,6 +35,7 @@ public:
 
     bool running() const;
     int answered() const { return answered_; }  // requests answered so far
+    double busy_seconds() const { return busy_seconds_; }  // the requests' time so far, its start included
 
 private:
     // Stops it between requests (a sandboxed one: every process of its namespace) and learns its folder's use.
@@ -43,6 +45,7 @@ private:
     const std::chrono::milliseconds timeout_;
     bool stoppable_ = false;  // its sandbox answers commands: pause and resume
     int answered_ = 0;
+    double busy_seconds_ = 0;
 };
 
 }  // namespace gsv
