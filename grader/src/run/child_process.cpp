@@ -136,6 +136,12 @@ private:
 
 }  // namespace
 
+void note_cut_output(ProcessResult& result) {
+    if (result.output_bytes > result.output.size())
+        result.output += "\n[output cut: " + std::to_string(result.output_bytes) + " bytes printed, " +
+                         std::to_string(result.output.size()) + " kept]\n";
+}
+
 Fd::Fd(int fd) {
     if (fd < 0) return;
     fd_ = fcntl(fd, F_DUPFD_CLOEXEC, 10);
@@ -454,9 +460,7 @@ void ChildProcess::finish() {
         host_folder_.reset();
     }
     result.seconds = seconds();
-    if (result.output_bytes > result.output.size())
-        result.output += "\n[output cut: " + std::to_string(result.output_bytes) + " bytes printed, " +
-                         std::to_string(result.output.size()) + " kept]\n";
+    note_cut_output(result);
     if (result.timed_out || result.flooded) return;
     if (WIFSIGNALED(status_)) result.signal = WTERMSIG(status_);
     else if (WIFEXITED(status_)) result.exit_code = WEXITSTATUS(status_);

@@ -35,6 +35,9 @@ private:
     int fd_ = -1;
 };
 
+// What it printed past the output cap, said at the end of its output.
+void note_cut_output(ProcessResult& result);
+
 class ChildProcess {
 public:
     using Clock = std::chrono::steady_clock;

@@ -89,6 +89,7 @@ ProcessResult ServedProcess::request(HandinConversation& conversation, const Han
             result.exit_code = 0;
             result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - from).count();
             busy_seconds_ += result.seconds;
+            note_cut_output(result);
             child.result.output.clear();
             child.result.output_bytes = 0;
             return result;
