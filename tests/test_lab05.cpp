@@ -275,15 +275,31 @@ TEST_CASE("lab05: through the velocity texture, a particle on a texel centre mov
     const GpuState still = gpu.run(c, placed({corner}, ParticleScene::Abc), 1);
     CHECK(glm::length(glm::vec3(still.velocities[0]) - grid.texel(7, 0, 7)) < 1e-6);
     CHECK(still.positions[0] == glm::vec4(corner, 1.0f));
-    // And many steps through the grid agree with the CPU's emulation of the filter.
-    ParticleSet set = make_particles(ParticleScene::Abc, 3000, 3);
+    // And many steps through the grid agree with the CPU's emulation of the filter: with exact weights (llvmpipe's
+    // float filter) or with 8-bit ones (a GPU's texture unit: on an NVIDIA H200, 1569 of these 3000 particles ended
+    // more than 1e-4 from the exact emulation).
+    const ParticleSet start = make_particles(ParticleScene::Abc, 3000, 3);
     c.h = 0.05f;
-    const GpuState many = gpu.run(c, set, 20);
-    advance_cpu(set, set.count(), StepSpec{ParticleScene::Abc, Integrator::Euler, c.h, 2.0, &grid}, 20);
-    int apart = 0;
-    for (std::size_t i = 0; i < set.count(); ++i)
-        apart += glm::length(glm::vec3(many.positions[i]) - glm::vec3(set.positions[i])) > 1e-4;
-    CHECK(apart <= 3);
+    const GpuState many = gpu.run(c, start, 20);
+    const auto emulated = [&](int weight_steps) {
+        ParticleSet set = start;
+        StepSpec spec{ParticleScene::Abc, Integrator::Euler, c.h, 2.0, &grid};
+        spec.grid_weight_steps = weight_steps;
+        advance_cpu(set, set.count(), spec, 20);
+        return set.positions;
+    };
+    const auto apart = [&](const auto& a, const auto& b) {
+        int count = 0;
+        for (std::size_t i = 0; i < start.count(); ++i) count += glm::length(glm::vec3(a[i]) - glm::vec3(b[i])) > 1e-4;
+        return count;
+    };
+    const auto exact = emulated(0), eight_bit = emulated(256);
+    const int from_exact = apart(many.positions, exact), from_eight_bit = apart(many.positions, eight_bit);
+    INFO("particles more than 1e-4 from the emulation: " << from_exact << " with exact weights, " << from_eight_bit
+                                                         << " with 8-bit weights");
+    CHECK(std::min(from_exact, from_eight_bit) <= 3);
+    // The two emulations are two filters, not one twice: agreeing with one of them says something.
+    CHECK(apart(exact, eight_bit) > 300);
 }
 
 TEST_CASE("lab05: a count that is no multiple of the group size leaves every slot past it untouched", "[lab][lab05][gl43]") {
