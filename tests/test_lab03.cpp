@@ -250,10 +250,21 @@ TEST_CASE("lab03: more slices than a storage can hold stop with one line naming 
     struct Limit {
         std::vector<std::string> settings;
         std::string names;
+        GLenum limit;
+        int slices;
     };
-    for (const Limit& limit : {Limit{{"slices=4096", "grid=16"}, "GL_MAX_ARRAY_TEXTURE_LAYERS"},
-                               Limit{{"slices=4096", "grid=16", "storage=volume"}, "GL_MAX_3D_TEXTURE_SIZE"},
-                               Limit{{"slices=40", "storage=separate"}, "GL_MAX_TEXTURE_IMAGE_UNITS"}}) {
+    // The lab's most slices, 4096, are over llvmpipe's layers and 3D size (2048), not over every GPU's (an NVIDIA
+    // H200 holds 16384 in a 3D texture): a limit this GL does not reach is left out, and said.
+    const auto context = test::headless_context();
+    for (const Limit& limit : {Limit{{"slices=4096", "grid=16"}, "GL_MAX_ARRAY_TEXTURE_LAYERS", GL_MAX_ARRAY_TEXTURE_LAYERS, 4096},
+                               Limit{{"slices=4096", "grid=16", "storage=volume"}, "GL_MAX_3D_TEXTURE_SIZE", GL_MAX_3D_TEXTURE_SIZE, 4096},
+                               Limit{{"slices=40", "storage=separate"}, "GL_MAX_TEXTURE_IMAGE_UNITS", GL_MAX_TEXTURE_IMAGE_UNITS, 40 + 1}}) {
+        GLint most = 0;
+        glGetIntegerv(limit.limit, &most);
+        if (most >= limit.slices) {
+            WARN("this GL's " << limit.names << " is " << most << ": " << limit.slices << " slices fit, so that limit is not checked here");
+            continue;
+        }
         const auto run = test::render("lab03_solution", limit.settings, dir.path(), "limit");
         INFO(run.process.output);
         CHECK(run.exit_code() == 3);

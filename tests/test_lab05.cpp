@@ -275,31 +275,47 @@ TEST_CASE("lab05: through the velocity texture, a particle on a texel centre mov
     const GpuState still = gpu.run(c, placed({corner}, ParticleScene::Abc), 1);
     CHECK(glm::length(glm::vec3(still.velocities[0]) - grid.texel(7, 0, 7)) < 1e-6);
     CHECK(still.positions[0] == glm::vec4(corner, 1.0f));
-    // And many steps through the grid agree with the CPU's emulation of the filter: with exact weights (llvmpipe's
-    // float filter) or with 8-bit ones (a GPU's texture unit: on an NVIDIA H200, 1569 of these 3000 particles ended
-    // more than 1e-4 from the exact emulation).
+    // Steps through the grid against the CPU's emulation of the filter, which weighs in float as llvmpipe does. A
+    // GPU's texture unit rounds its weights to a few bits (8 on an NVIDIA H200), which GL allows: one step then differs
+    // by up to what that rounding moves a lookup (a weight off by 1/512 along each axis, 1/256 here for any rounding
+    // rule), and twenty steps through this flow carry it on (on the H200 1569 of 3000 particles ended more than 1e-4
+    // from the emulation). So one step is held to that bound everywhere, and twenty to the emulation where the filter
+    // is seen to weigh in float.
     const ParticleSet start = make_particles(ParticleScene::Abc, 3000, 3);
     c.h = 0.05f;
-    const GpuState many = gpu.run(c, start, 20);
-    const auto emulated = [&](int weight_steps) {
+    const StepSpec euler{ParticleScene::Abc, Integrator::Euler, c.h, 2.0, &grid};
+    const auto worst_and_apart = [&](const GpuState& gpu_state, int steps) {
         ParticleSet set = start;
-        StepSpec spec{ParticleScene::Abc, Integrator::Euler, c.h, 2.0, &grid};
-        spec.grid_weight_steps = weight_steps;
-        advance_cpu(set, set.count(), spec, 20);
-        return set.positions;
+        advance_cpu(set, set.count(), euler, steps);
+        std::pair<double, int> result{0.0, 0};
+        for (std::size_t i = 0; i < set.count(); ++i) {
+            const double gap = glm::length(glm::vec3(gpu_state.positions[i]) - glm::vec3(set.positions[i]));
+            result.first = std::max(result.first, gap);
+            result.second += gap > 1e-4;
+        }
+        return result;
     };
-    const auto apart = [&](const auto& a, const auto& b) {
-        int count = 0;
-        for (std::size_t i = 0; i < start.count(); ++i) count += glm::length(glm::vec3(a[i]) - glm::vec3(b[i])) > 1e-4;
-        return count;
-    };
-    const auto exact = emulated(0), eight_bit = emulated(256);
-    const int from_exact = apart(many.positions, exact), from_eight_bit = apart(many.positions, eight_bit);
-    INFO("particles more than 1e-4 from the emulation: " << from_exact << " with exact weights, " << from_eight_bit
-                                                         << " with 8-bit weights");
-    CHECK(std::min(from_exact, from_eight_bit) <= 3);
-    // The two emulations are two filters, not one twice: agreeing with one of them says something.
-    CHECK(apart(exact, eight_bit) > 300);
+    float largest_step = 0;  // between neighbouring texels, along any axis, in any component
+    for (int k = 0; k < grid.n; ++k)
+        for (int j = 0; j < grid.n; ++j)
+            for (int i = 0; i < grid.n; ++i)
+                for (const glm::ivec3& d : {glm::ivec3(1, 0, 0), glm::ivec3(0, 1, 0), glm::ivec3(0, 0, 1)})
+                    if (i + d.x < grid.n && j + d.y < grid.n && k + d.z < grid.n) {
+                        const glm::vec3 step = glm::abs(grid.texel(i + d.x, j + d.y, k + d.z) - grid.texel(i, j, k));
+                        largest_step = std::max({largest_step, step.x, step.y, step.z});
+                    }
+    const auto [one_step_worst, one_step_apart] = worst_and_apart(gpu.run(c, start, 1), 1);
+    const double weight_bound = c.h * std::sqrt(3.0) * 3 * largest_step / 256;
+    INFO("one step: at most " << one_step_worst << " from the emulation (a filter's 8-bit weights allow " << weight_bound << ")");
+    CHECK(one_step_worst <= weight_bound);
+    if (one_step_worst <= 1e-6) {
+        const auto [worst, apart] = worst_and_apart(gpu.run(c, start, 20), 20);
+        INFO("twenty steps: " << apart << " of 3000 particles more than 1e-4 from the emulation");
+        CHECK(apart <= 3);
+    } else {
+        WARN("this GPU's texture filter rounds its weights (one step up to " << one_step_worst
+                                                                             << " from the float emulation): twenty steps are not compared");
+    }
 }
 
 TEST_CASE("lab05: a count that is no multiple of the group size leaves every slot past it untouched", "[lab][lab05][gl43]") {

@@ -158,7 +158,9 @@ TEST_CASE("margins: the 8-bit filter stand-in snaps texture lookups in every pro
             REQUIRE(plain.exit_code() == 0);
             REQUIRE(snapped.exit_code() == 0);
             const ImageDiff d = compare_images(read_png(snapped.png), read_png(plain.png), {});
-            CHECK(d.max_channel_diff > 0);   // the lookups changed...
+            // The lookups changed, where the filter weighs in float (Mesa's rasterizers): a GPU that rounds its weights
+            // to 1/256 already gives what the stand-in asks for (an NVIDIA H200: lab 03's images equal, snapped or not).
+            if (contains(plain.process.output, "llvmpipe") || contains(plain.process.output, "softpipe")) CHECK(d.max_channel_diff > 0);
             CHECK(d.max_channel_diff < 64);  // ...by what a filter weight's last bits do
         }
     const test::LabRun bad = test::render("lab03_solution", {}, dir, "bad", {}, {"GSV_TEXEL_SNAP=1.5"});

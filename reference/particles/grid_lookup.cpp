@@ -22,10 +22,9 @@ glm::tvec3<T> mix_exact(const glm::tvec3<T>& a, const glm::tvec3<T>& b, T f) {
 }
 
 template <class T>
-glm::tvec3<T> trilinear(const VelocityGrid& grid, const glm::tvec3<T>& p, int weight_steps) {
+glm::tvec3<T> trilinear(const VelocityGrid& grid, const glm::tvec3<T>& p) {
     const int n = grid.n;
-    glm::tvec3<T> x = (p + T(1)) / T(2) * T(n) - T(0.5);
-    if (weight_steps > 0) x = glm::floor(x * T(weight_steps) + T(0.5)) / T(weight_steps);
+    const glm::tvec3<T> x = (p + T(1)) / T(2) * T(n) - T(0.5);
     const glm::tvec3<T> lower = glm::floor(x);
     const glm::tvec3<T> f = x - lower;
     int i[2], j[2], k[2];
@@ -45,8 +44,8 @@ glm::tvec3<T> trilinear(const VelocityGrid& grid, const glm::tvec3<T>& p, int we
 
 }  // namespace
 
-glm::dvec3 grid_lookup(const VelocityGrid& grid, glm::dvec3 p, int weight_steps) { return trilinear(grid, p, weight_steps); }
+glm::dvec3 grid_lookup(const VelocityGrid& grid, glm::dvec3 p) { return trilinear(grid, p); }
 
-glm::vec3 grid_lookup(const VelocityGrid& grid, glm::vec3 p, int weight_steps) { return trilinear(grid, p, weight_steps); }
+glm::vec3 grid_lookup(const VelocityGrid& grid, glm::vec3 p) { return trilinear(grid, p); }
 
 }  // namespace gsv

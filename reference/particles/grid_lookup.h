@@ -4,10 +4,9 @@
 // through the formula. The instructor's yardstick: students write the lookup in velocity.glsl.
 //
 // The emulation is the filter as the GL specification states it (section 8.14.2 of GL 4.6) with exact
-// weights, or with the weights a GPU's texture unit uses: real hardware rounds them to a few fractional bits
-// (8 on NVIDIA, per the CUDA programming guide's texture fetching appendix; measured on an H200, issue 28's
-// stand-in), so its lookup can differ from the exact one by up to about 1/512 of the difference between
-// neighbouring texels, and many steps through a grid carry that difference on.
+// weights. Real hardware rounds the weights to a few fractional bits (8 on NVIDIA, per the CUDA
+// programming guide's texture fetching appendix), so a GPU lookup can differ from this one by up to about
+// 1/512 of the difference between neighbouring texels; compare GPU results against it with that in mind.
 #include "support/particles/particle_grid.h"
 
 #include <glm/glm.hpp>
@@ -19,9 +18,7 @@ namespace gsv {
 // trilinear mix. So a texel centre gives that texel, and the outer half texel (and anything beyond
 // D) gives the edge value. The double version computes in double from the float texels; the float one
 // computes each step in float, as the float CPU run does. A NaN coordinate gives NaN.
-// `weight_steps` N > 0: x rounded to the nearest 1/N of a texel first, so each weight takes only N + 1 values, as on
-// a GPU with log2(N) fractional bits (GSV_TEXEL_SNAP's rounding, shaders/gsv/texel_snap.glsl); 0: exact weights.
-glm::dvec3 grid_lookup(const VelocityGrid& grid, glm::dvec3 p, int weight_steps = 0);
-glm::vec3 grid_lookup(const VelocityGrid& grid, glm::vec3 p, int weight_steps = 0);
+glm::dvec3 grid_lookup(const VelocityGrid& grid, glm::dvec3 p);
+glm::vec3 grid_lookup(const VelocityGrid& grid, glm::vec3 p);
 
 }  // namespace gsv

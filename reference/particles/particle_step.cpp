@@ -15,7 +15,7 @@ namespace {
 // texture() returns), else the formula.
 template <class T>
 glm::tvec3<T> velocity_at(const StepSpec& spec, const glm::tvec3<T>& p) {
-    if (spec.grid) return grid_lookup(*spec.grid, p, spec.grid_weight_steps);
+    if (spec.grid) return grid_lookup(*spec.grid, p);
     return field_velocity<T>(spec.scene, p);
 }
 
@@ -46,9 +46,6 @@ void check_step_spec(const StepSpec& spec) {
             throw Error("particle step: the velocity grid holds " + std::to_string(grid.texels.size()) +
                         " floats for side " + std::to_string(grid.n) + " (not one made by VelocityGrid::sample)");
     }
-    if (spec.grid_weight_steps < 0 || spec.grid_weight_steps > (1 << 16))
-        throw Error("particle step: grid weights in 1/" + std::to_string(spec.grid_weight_steps) +
-                    " of a texel (0 for exact weights, or 1..65536)");
 }
 
 template <class T>

@@ -28,8 +28,6 @@ struct StepSpec {
     double h = 0.01;     // the time step
     double gravity = 2;  // G of g = (0, -G, 0), Gravity only
     const VelocityGrid* grid = nullptr;
-    // The grid lookup's weights in 1/N of a texel, as a GPU's texture unit rounds them (grid_lookup.h); 0: exact.
-    int grid_weight_steps = 0;
 };
 
 // Throws gsv::Error for a step h or gravity that is not finite, a scene or integrator outside the enums, a

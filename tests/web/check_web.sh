@@ -1,16 +1,25 @@
 #!/usr/bin/env bash
-# The `web` kind of test: the browser edition built once (the web preset's toolchain, in BUILD/web-build/), served on
-# 127.0.0.1 and checked in headless Chromium, on Mesa's llvmpipe through ANGLE (under Xvfb) and on SwiftShader
-# (check_pages.js says what is checked). Screenshots of every page land in BUILD/web-test/<rasterizer>/.
+# The `web` kind of test, in two steps that ctest runs as two tests (tests/CMakeLists.txt):
+#   check_web.sh build KIT_ROOT BUILD   the browser edition built (the web preset's toolchain, in BUILD/web-build/),
+#                                       beside the other tests: it compiles and times nothing
+#   check_web.sh pages KIT_ROOT BUILD   that build served on 127.0.0.1 and checked in headless Chromium, on Mesa's
+#                                       llvmpipe through ANGLE (under Xvfb) and on SwiftShader (check_pages.js says
+#                                       what is checked), alone: it times first frames. Screenshots of every page land
+#                                       in BUILD/web-test/<rasterizer>/.
 # The test's build is the shipped one (scripts/kit web, build-web/) at -O1 instead of -O3, compiled and linked: the
 # same sources, flags and WebGL calls, without Binaryen's -O3 passes, which took 60-130 s a page to link here (-O1: 8 s);
 # they change no arithmetic (no fast-math), and the pictures come from the same GLSL.
 # Skipped (exit 77), naming what is missing, without Emscripten, Chromium, Xvfb, Debian's CodeMirror or
 # web/node_modules; with GSV_REQUIRE_WEB=1 (.ci/run, which installs them all) that is a failure instead.
-# Usage: check_web.sh KIT_ROOT BUILD   (BUILD: the native build, whose gsv-grade and gsv-make-starters it uses)
+# BUILD: the native build, whose gsv-grade and gsv-make-starters the pages' checks use.
 set -euo pipefail
-root=$(cd "$1" && pwd)
-build=$(cd "$2" && pwd)
+step=${1:-}
+case "$step" in
+  build|pages) ;;
+  *) echo "usage: check_web.sh build|pages KIT_ROOT BUILD" >&2; exit 2 ;;
+esac
+root=$(cd "$2" && pwd)
+build=$(cd "$3" && pwd)
 missing=""
 command -v em++ >/dev/null || missing+=" emscripten"
 command -v chromium >/dev/null || missing+=" chromium"
@@ -23,18 +32,29 @@ if [ -n "$missing" ]; then
   [ "${GSV_REQUIRE_WEB:-0}" = 1 ] && { echo "check_web: GSV_REQUIRE_WEB=1: the web test must run here"; exit 1; }
   exit 77
 fi
+web="$build/web-build"
+export NODE_PATH=/usr/share/nodejs
+cd "$root"
+
+if [ "$step" = build ]; then
+  logs="$build/web-build-logs"
+  rm -rf "$logs" "$web/.built"
+  mkdir -p "$logs"
+  start=$(date +%s)
+  cmake --preset web -B "$web" -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DCMAKE_C_FLAGS_RELEASE="-O1 -DNDEBUG" \
+    >"$logs/configure.log" 2>&1 || { cat "$logs/configure.log"; exit 1; }
+  cmake --build "$web" -j2 >"$logs/build.log" 2>&1 || { tail -40 "$logs/build.log"; exit 1; }
+  # What the pages step checks for: this build finished (a build that failed halfway leaves no stamp).
+  touch "$web/.built"
+  echo "check_web: the web build took $(( $(date +%s) - start )) s"
+  exit 0
+fi
+
+[ -f "$web/.built" ] || { echo "check_web: no finished web build in $web (the web_edition_builds test makes it)"; exit 1; }
 out="$build/web-test"
 rm -rf "$out"
 mkdir -p "$out"
 
-start=$(date +%s)
-cd "$root"
-web="$build/web-build"
-export NODE_PATH=/usr/share/nodejs
-cmake --preset web -B "$web" -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DCMAKE_C_FLAGS_RELEASE="-O1 -DNDEBUG" \
-  >"$out/configure.log" 2>&1 || { cat "$out/configure.log"; exit 1; }
-cmake --build "$web" -j2 >"$out/build.log" 2>&1 || { tail -40 "$out/build.log"; exit 1; }
-echo "check_web: the web build took $(( $(date +%s) - start )) s"
 # The decks beside the pages, where the slides test (or scripts/kit slides) built them: one gets a screenshot with its
 # live lab.
 if ls "$build"/slides/*.html >/dev/null 2>&1; then
