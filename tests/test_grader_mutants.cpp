@@ -1,6 +1,7 @@
 // Proof that the grader works on shader edits: known-wrong variants of the reference (mutants) each fail
 // the case that names their bug, and planted faults each get their own status while the rest is graded.
 #include "grader_fixture.h"
+#include "serve_compare.h"
 
 #include "tools/starter.h"
 
@@ -30,15 +31,23 @@ struct Outcome {
     std::string log;      // the output of the first case that lost points
 };
 
-// Grades the cases of `todo` (public ones, untimed), against the live reference or the goldens.
-Outcome grade_todo(GradeOptions options, const std::string& todo, bool self_check, const std::shared_ptr<ReferenceCache>& cache) {
+// Grades the cases of `todo` (public ones, untimed), against the live reference or the goldens, by one process per lab
+// (the default); against the goldens also by one process per case, every check held alike (issue 30: serving grades as
+// restarting does; `racy`: serve_compare.h).
+Outcome grade_todo(GradeOptions options, const std::string& todo, bool self_check, const std::shared_ptr<ReferenceCache>& cache,
+                   const std::string& what, bool racy = false) {
     options.todo = todo;
     options.self_check = self_check;
     options.hidden = false;
     options.timing = false;
     options.reference_cache = cache;
+    const GradeReport report = grade(options);
+    if (self_check) {
+        options.lab_processes = LabProcesses::PerCase;
+        test::check_graded_alike(grade(options), report, what, racy);
+    }
     Outcome o;
-    for (const auto& r : grade(options).results) {
+    for (const auto& r : report.results) {
         if (r.points < r.max_points && !o.lost) o.log = r.output.substr(0, 3000);
         o.lost = o.lost || r.points < r.max_points;
         o.details += r.name + ": " + status_name(r.status) + " " + r.detail + "\n";
@@ -60,21 +69,25 @@ void mutation_test(const std::string& lab) {
         struct Mutant {
             std::string todo, name;
             std::function<void(const std::filesystem::path&)> edit;
+            bool racy = false;
         };
         std::vector<Mutant> mutants;
         for (const auto& [todo, files] : todos) {
             if (std::any_of(files.begin(), files.end(), is_cpp_file)) continue;  // C++ TODOs: the test below builds them
+            const Json* racy_undone = spec.find("racy_undone");
             mutants.push_back({todo, todo + " left undone", [todo = todo, files = files](const std::filesystem::path& folder) {
                                    // Read before the stream truncates the file: `a << b` runs a first.
                                    for (const auto& file : files) {
                                        const std::string undone = make_starter(test::read_text(folder / file), file, todo).text;
                                        std::ofstream(folder / file, std::ios::binary) << undone;
                                    }
-                               }});
+                               },
+                               racy_undone && racy_undone->contains(todo)});
         }
         std::map<std::string, int> classic;
         for (const Json& m : spec.array_at("mutants").as_array()) {
-            mutants.push_back({m.string_at("todo"), m.string_at("name"), [m](const std::filesystem::path& folder) { test::apply_edits(folder, m); }});
+            mutants.push_back({m.string_at("todo"), m.string_at("name"), [m](const std::filesystem::path& folder) { test::apply_edits(folder, m); },
+                               m.contains("racy")});
             ++classic[m.string_at("todo")];
         }
         for (const auto& [todo, files] : todos) {
@@ -85,7 +98,7 @@ void mutation_test(const std::string& lab) {
             int killed = 0;
             for (const auto& m : mutants) {
                 test::EditedKit kit(lab, lab_dir, m.edit);
-                const Outcome o = grade_todo(kit.options(), m.todo, self_check, cache);
+                const Outcome o = grade_todo(kit.options(), m.todo, self_check, cache, lab + " mutant '" + m.name + "'", m.racy);
                 INFO(lab << " (" << (self_check ? "self-check" : "live") << ") mutant '" << m.name << "' of " << m.todo << ":\n" << o.details);
                 CHECK(o.lost);
                 killed += o.lost;
@@ -94,7 +107,8 @@ void mutation_test(const std::string& lab) {
             if (const Json* list = spec.find("variants"))
                 for (const Json& v : list->as_array()) {
                     test::EditedKit kit(lab, lab_dir, v);
-                    const Outcome o = grade_todo(kit.options(), v.string_at("todo"), self_check, cache);
+                    const Outcome o = grade_todo(kit.options(), v.string_at("todo"), self_check, cache,
+                                                 lab + " correct variant '" + v.string_at("name") + "'");
                     INFO(lab << " (" << (self_check ? "self-check" : "live") << ") correct variant '" << v.string_at("name") << "':\n" << o.details);
                     CHECK_FALSE(o.lost);
                     kept += !o.lost;
@@ -193,7 +207,7 @@ TEST_CASE("every C++ TODO: left undone or with a classic bug it loses points, li
         built.submission = dir.path("submission");
         for (const auto& todo : cpp_todos) {
             // The build, graded as it is: the solution, full marks.
-            const Outcome unchanged = grade_todo(built, todo, false, cache);
+            const Outcome unchanged = grade_todo(built, todo, false, cache, lab + ": the switched build");
             INFO(lab << ": the switched build as the solution:\n" << unchanged.details << unchanged.log);
             REQUIRE_FALSE(unchanged.lost);
         }
@@ -211,7 +225,7 @@ TEST_CASE("every C++ TODO: left undone or with a classic bug it loses points, li
         for (const bool self_check : {true, false})
             for (const auto& [todo, name] : mutants) {
                 setenv("GSV_TEST_MUTANT", name.c_str(), 1);
-                const Outcome o = grade_todo(options, todo, self_check, cache);
+                const Outcome o = grade_todo(options, todo, self_check, cache, lab + " C++ mutant '" + name + "'");
                 unsetenv("GSV_TEST_MUTANT");
                 INFO(lab << " (" << (self_check ? "self-check" : "live") << ") C++ mutant '" << name << "' of " << todo << ":\n" << o.details);
                 CHECK(o.lost);

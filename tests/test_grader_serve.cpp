@@ -1,14 +1,14 @@
 // Rendering without restarting (grader/src/run/lab_serve.h): one process per lab serving its cases one after another
 // grades exactly as one process per case does, case for case (results.json's status, score and status line), for the
-// kit's starters, the solutions and every mutant, correct variant and fault of tests/mutants/; and a served lab cannot
-// carry a case's crash, loop, parameters or a hand-in made before it was asked into another case.
+// kit's starters, the solutions and lab 01's faults (every mutant, correct variant and C++ mutant of tests/mutants/ is
+// graded both ways by the mutation tests, tests/test_grader_mutants.cpp); and a served lab cannot carry a case's crash,
+// loop, parameters or a hand-in made before it was asked into another case.
 #include "grader_fixture.h"
+#include "serve_compare.h"
 
 #include "grader/src/report/report.h"
 #include "grader/src/run/sandbox.h"
 
-#include <algorithm>
-#include <cctype>
 #include <cstdlib>
 #include <memory>
 
@@ -16,31 +16,6 @@ using namespace gsv;
 namespace fs = std::filesystem;
 
 namespace {
-
-// Each check's status and score, then its status line (its detail), as results.json gives them to the student.
-std::map<std::string, std::string> graded(const GradeReport& report) {
-    std::map<std::string, std::string> checks;
-    const Json results = parse_json(gradescope_json(report), "results.json");
-    for (const Json& t : results.array_at("tests").as_array()) {
-        const std::string output = t.string_at("output");
-        checks[t.string_at("name")] = t.string_at("status") + " | " + std::to_string(t.number_at("score")) + " | " +
-                                      output.substr(0, output.find('\n'));
-    }
-    return checks;
-}
-
-std::string status_and_score(const std::string& row) { return row.substr(0, row.rfind(" | ")); }
-
-// What differs between two gradings, a line per check.
-std::string differences(const std::map<std::string, std::string>& per_case, const std::map<std::string, std::string>& per_lab) {
-    std::string text;
-    for (const auto& [name, row] : per_case)
-        if (const auto it = per_lab.find(name); it == per_lab.end() || it->second != row)
-            text += name + ":\n  per case: " + row + "\n  per lab:  " + (it == per_lab.end() ? "(missing)" : it->second) + "\n";
-    for (const auto& [name, row] : per_lab)
-        if (!per_case.count(name)) text += name + ": per lab only: " + row + "\n";
-    return text;
-}
 
 GradeReport grade_with(GradeOptions options, LabProcesses processes) {
     options.lab_processes = processes;
@@ -53,29 +28,13 @@ struct ReferencesEachWay {
     std::shared_ptr<ReferenceCache> per_case = std::make_shared<ReferenceCache>(), per_lab = std::make_shared<ReferenceCache>();
 };
 
-// The row with its digits left out: what a racy lab's detail keeps from run to run.
-std::string without_digits(std::string row) {
-    row.erase(std::remove_if(row.begin(), row.end(), [](unsigned char c) { return std::isdigit(c); }), row.end());
-    return row;
-}
-
-// Grades `options` both ways and checks every check alike; returns the per-lab grading. `racy`: a lab whose
-// invocations race (tests/mutants/'s "racy": lab 05's work-group mutants, two of whose invocations move one particle)
-// draws a pixel or two otherwise from run to run, whatever runs it (seen with one process per case: 115,541 and
-// 115,543 particles off): for it the status and score are held alike, and the detail with its numbers left out.
-GradeReport same_both_ways(GradeOptions options, const std::string& what, const ReferencesEachWay* references = nullptr,
-                           bool racy = false) {
+// Grades `options` both ways and checks every check alike; returns the per-lab grading.
+GradeReport same_both_ways(GradeOptions options, const std::string& what, const ReferencesEachWay* references = nullptr) {
     if (references) options.reference_cache = references->per_case;
     const GradeReport per_case = grade_with(options, LabProcesses::PerCase);
     if (references) options.reference_cache = references->per_lab;
     const GradeReport per_lab = grade_with(options, LabProcesses::PerLab);
-    auto a = graded(per_case), b = graded(per_lab);
-    if (racy)
-        for (auto* checks : {&a, &b})
-            for (auto& [name, row] : *checks) row = status_and_score(row) + " | " + without_digits(row.substr(row.rfind(" | ") + 3));
-    INFO(what << ":\n" << differences(a, b));
-    CHECK(!a.empty());
-    CHECK(a == b);
+    test::check_graded_alike(per_case, per_lab, what);
     return per_lab;
 }
 
@@ -92,52 +51,25 @@ GradeOptions quick(GradeOptions options) {
     return options;
 }
 
-// Every mutant, correct variant and untimed fault of tests/mutants/<lab>.json, each on its TODO's public cases (a fault
-// on all of them), and the C++ mutants of the lab's C++ TODOs in one build, graded both ways. One reference cache for
-// the lab: the references are the same binary either way (their serving is compared on the starters and solutions).
-void both_ways_on_mutants(const std::string& lab) {
+// Lab 01's untimed faults (tests/mutants/lab01.json), each on every public case, graded both ways (the mutants, correct
+// variants and C++ mutants of every lab: their mutation tests). One reference cache: the references are the same binary
+// either way (their serving is compared on the starters and solutions).
+void both_ways_on_faults(const std::string& lab) {
     if (!walls_up()) WARN("no allow-list walls here: student code is not served, and both ways are one process per case");
     const auto cache = std::make_shared<ReferenceCache>();
     const Json spec = test::mutant_spec(lab);
     const std::string lab_dir = spec.string_at("lab_dir");
     int compared = 0;
-    for (const char* list : {"mutants", "variants", "faults"}) {
-        const Json* edits = spec.find(list);
-        if (!edits) continue;
-        for (const Json& edit : edits->as_array()) {
-            if (edit.bool_or("timed_only", false)) continue;  // timing: tests/test_grader_mutants.cpp
-            test::EditedKit kit(lab, lab_dir, edit);
-            GradeOptions options = quick(kit.options());
-            options.todo = edit.contains("todo") ? edit.string_at("todo") : "";
-            options.timeout_s = edit.number_or("timeout_s", 0);
-            options.reference_cache = cache;
-            same_both_ways(options, lab + " " + list + " '" + edit.string_at("name") + "'", nullptr, edit.contains("racy"));
-            ++compared;
-        }
-    }
-    const Json none = Json::array();
-    const Json& cpp_mutants = spec.contains("cpp_mutants") ? spec.array_at("cpp_mutants") : none;
-    if (!cpp_mutants.as_array().empty()) {
-        test::TempDir dir;
-        test::write_switched_cpp_submission(dir.path("submission"), lab_dir, cpp_mutants);
-        GradeOptions build = quick(test::instructor_options(lab, dir.path("built")));
-        build.submission = dir.path("submission");
-        build.cases = {spec.array_at("mutants").at(0).array_at("must_fail").at(0).as_string()};
-        build.reference_cache = cache;
-        REQUIRE(grade(build).builds.at(0).ok);
-        GradeOptions options = quick(test::instructor_options(lab, dir.path("out")));
-        options.student_bin_dir = dir.path("built/submission-build/build/bin");
-        options.student_root = dir.path("built/submission-build/kit");
+    for (const Json& fault : spec.array_at("faults").as_array()) {
+        if (fault.bool_or("timed_only", false)) continue;  // timing: tests/test_grader_mutants.cpp
+        test::EditedKit kit(lab, lab_dir, fault);
+        GradeOptions options = quick(kit.options());
+        options.timeout_s = fault.number_or("timeout_s", 0);
         options.reference_cache = cache;
-        for (const Json& m : cpp_mutants.as_array()) {
-            setenv("GSV_TEST_MUTANT", m.string_at("name").c_str(), 1);
-            options.todo = m.string_at("todo");
-            same_both_ways(options, lab + " C++ mutant '" + m.string_at("name") + "'");
-            unsetenv("GSV_TEST_MUTANT");
-            ++compared;
-        }
+        same_both_ways(options, lab + " fault '" + fault.string_at("name") + "'");
+        ++compared;
     }
-    WARN(lab << ": " << compared << " mutants, variants and faults graded alike both ways");
+    CHECK(compared >= 3);
 }
 
 }  // namespace
@@ -172,28 +104,8 @@ TEST_CASE("serving: the starters and the solutions grade alike with one process 
     CHECK(graded_solutions.score() == graded_solutions.max_score());
 }
 
-TEST_CASE("serving: lab01's mutants, variants and faults grade alike with one process per lab and one per case", "[grader][serve][mutants]") {
-    both_ways_on_mutants("lab01");
-}
-TEST_CASE("serving: lab02's mutants and variants grade alike with one process per lab and one per case", "[grader][serve][mutants]") {
-    both_ways_on_mutants("lab02");
-}
-TEST_CASE("serving: lab03's mutants, variants and C++ mutants grade alike with one process per lab and one per case",
-          "[grader][serve][mutants]") {
-    both_ways_on_mutants("lab03");
-}
-TEST_CASE("serving: lab04's mutants and variants grade alike with one process per lab and one per case", "[grader][serve][mutants]") {
-    both_ways_on_mutants("lab04");
-}
-TEST_CASE("serving: lab05's mutants, variants and C++ mutants grade alike with one process per lab and one per case",
-          "[grader][serve][mutants][gl43]") {
-    both_ways_on_mutants("lab05");
-}
-TEST_CASE("serving: lab06's mutants and variants grade alike with one process per lab and one per case", "[grader][serve][mutants]") {
-    both_ways_on_mutants("lab06");
-}
-TEST_CASE("serving: lab07's mutants and variants grade alike with one process per lab and one per case", "[grader][serve][mutants]") {
-    both_ways_on_mutants("lab07");
+TEST_CASE("serving: lab01's faults grade alike with one process per lab and one per case", "[grader][serve]") {
+    both_ways_on_faults("lab01");
 }
 
 namespace {
