@@ -44,7 +44,7 @@ void grade_case(GradingSession& s, CopySearch& copies, const LabCases& lab, cons
     if (geteuid() == 0) fs::permissions(s.out / lab.lab, fs::perms::owner_all);
 
     if (build && !build->ok) {
-        r.status = CaseStatus::BuildError;
+        r.status = build->kit_fault ? CaseStatus::KitFault : CaseStatus::BuildError;
         r.detail = as_student_sees(first_error_line(build->log), s.student_kit());
         r.output = as_student_sees(build->log, s.student_kit());
         s.record(r);

@@ -4,6 +4,7 @@
 #include "common/core/error.h"
 #include "grader/src/cases/draw.h"
 #include "grader/src/golden/golden_renderers.h"
+#include "grader/src/grade/kit_fault.h"
 #include "grader/src/run/submission.h"
 
 #include <algorithm>
@@ -46,6 +47,8 @@ void GradingSession::set_up() {
 
     fs::path student_bin = bin, student_root = kit;
     if (!options.submission.empty()) {
+        // The kit's own faults before any student's build: every submission would fail them alike.
+        check_kit_for_submissions(kit, bin.parent_path());
         const fs::path work = out / "submission-build";
         student_root = work / "kit";
         student_bin = work / "build" / "bin";
@@ -125,7 +128,8 @@ ProcessLimits GradingSession::limits(const LabCases& lab, bool student) const {
     const double timeout_s = student && options.timeout_s > 0 ? options.timeout_s : lab.timeout_s;
     l.timeout = std::chrono::milliseconds(static_cast<long>(timeout_s * 1000));
     if (student && options.sandbox) {
-        l.sandbox = &policy_;
+        const auto own = lab_policies_.find(lab.lab);
+        l.sandbox = own == lab_policies_.end() ? &policy_ : &own->second;
         l.support = &support_;
     }
     return l;

@@ -69,7 +69,8 @@ private:
     const std::function<void(const GradeProgress&)>& progress_;
     const RunPurpose purpose_;
     const std::chrono::steady_clock::time_point start_;
-    SandboxPolicy policy_;        // running a student's lab
+    SandboxPolicy policy_;        // running a student's lab: what every lab may read
+    std::map<std::string, SandboxPolicy> lab_policies_;  // and each lab's own: policy_ with its binary and folder
     SandboxPolicy build_policy_;  // building a submission's labs
     SandboxSupport support_;
     std::optional<UidLease> uid_lease_;  // a root grader's uid for student code, held until the run ends

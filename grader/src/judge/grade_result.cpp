@@ -28,6 +28,7 @@ const char* status_name(CaseStatus status) {
     case CaseStatus::Refused: return "refused";
     case CaseStatus::WroteTooMuch: return "wrote too much";
     case CaseStatus::GpuMargin: return "GPU margin";
+    case CaseStatus::KitFault: return "kit fault";
     }
     // Only reachable with a value cast from an out-of-range integer.
     return "unknown";
@@ -45,7 +46,7 @@ CaseResult case_row(const LabCases& lab, const GradeCase& c) {
     return r;
 }
 
-bool is_kit_fault(CaseStatus status) { return status == CaseStatus::ReferenceFailed; }
+bool is_kit_fault(CaseStatus status) { return status == CaseStatus::ReferenceFailed || status == CaseStatus::KitFault; }
 
 bool DataCheck::passed() const {
     for (const auto& a : arrays)

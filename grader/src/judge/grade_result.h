@@ -41,9 +41,14 @@ enum class CaseStatus {
     WroteTooMuch,        // filled its working folder (size or number of files) to the limit
     GpuMargin,           // against a golden made on another renderer: off by more than the case's budget, but within the
                          // margin renderers differ by (cross_implementation_tolerance, grader/cases.h); no points
+    KitFault,            // the kit or the grader's set-up failed where the student's files play no part (a submission
+                         // project that does not configure even without them): scored 0 and flagged, like ReferenceFailed
 };
+// The last status, for code that reads them back by name.
+inline constexpr CaseStatus kLastCaseStatus = CaseStatus::KitFault;
 const char* status_name(CaseStatus status);
-// The reference or the kit failed, not the student: reported apart from the student's failures.
+// The reference or the kit failed, not the student (ReferenceFailed, KitFault): reported apart from the student's
+// failures, and a run with one gives no grade (gsv-grade exits kGradeKitFault).
 bool is_kit_fault(CaseStatus status);
 
 struct ImageCheck {
@@ -53,6 +58,8 @@ struct ImageCheck {
     long differing_pixels = 0, total_pixels = 0;
     double psnr = 0, ssim = 0;
     int diff_x0 = 0, diff_y0 = 0, diff_x1 = -1, diff_y1 = -1;  // inclusive box of differing pixels
+    // The whole picture's offset against the reference (common/image/image_offset.h), pixels, x right and y down.
+    double offset_x = 0, offset_y = 0;
 };
 
 // The arrays a case checks (grader/src/judge/data_check.h); a case passes only if its image and these both pass.
@@ -102,6 +109,9 @@ struct LabBuild {
     // How the binary came to be: "built", or, where the lab's C++ is byte for byte one already built, "unchanged C++:
     // the kit's binary" or "unchanged C++: an earlier build" (grader/submission.h says when).
     std::string origin = "built";
+    // The build failed for the kit's reason: the submission project does not configure even without the student's
+    // files. Its checks are KitFault, not BuildError.
+    bool kit_fault = false;
 };
 
 // A case's row before anything ran: its lab, name, TODO, description, visibility, settings and points. The grader

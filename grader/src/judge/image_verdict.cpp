@@ -1,6 +1,7 @@
 #include "grader/src/judge/image_verdict.h"
 
 #include "common/core/not_done.h"
+#include "common/image/image_offset.h"
 
 #include <cstdio>
 
@@ -20,6 +21,16 @@ ImageDiff judge_image(const Image& actual, const Image& expected, const ImageTol
     r.image.diff_y0 = diff.diff_y0;
     r.image.diff_x1 = diff.diff_x1;
     r.image.diff_y1 = diff.diff_y1;
+    // Where the whole picture sits: a neighbourhood forgives a point a rasterizer put a pixel off, never a picture
+    // moved as a whole, and a wrong image that is only moved says so.
+    const ImageOffset offset = diff.size_mismatch || diff.max_channel_diff == 0 ? ImageOffset{} : global_offset(actual, expected);
+    r.image.offset_x = offset.dx;
+    r.image.offset_y = offset.dy;
+    if (offset.shifted()) {
+        r.status = CaseStatus::WrongImage;
+        r.detail = offset.text() + " (" + diff.summary() + ")";
+        return diff;
+    }
     if (diff.within(tolerance)) {
         r.status = CaseStatus::Passed;
         r.points = c.points;

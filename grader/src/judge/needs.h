@@ -8,9 +8,18 @@
 
 namespace gsv {
 
-// Among `results` from `first` on (one lab's rows): a failing case while a TODO it needs fails its own cases becomes
-// NeedsFirst, "needs L02-T1 first (its case 'rotation' fails); here: ...". Passes, build errors and the kit's own
-// faults stay as they are.
+// Whether a status says only how the picture or numbers came out (wrong image, blank image, not done, wrong data, GPU
+// margin), which a needed TODO's failure can explain; every other status (an integrity or process status: copied
+// image, refused, crash, timeout, memory, wrote too much, NaN, ...) says what the lab did, and stands.
+bool is_quality_status(CaseStatus status);
+
+// Among `results` from `first` on (one lab's rows). A TODO fails on its own where one of its cases fails while no TODO
+// that case needs fails: such a TODO is a root. A failing case whose needed TODOs fail is blamed on the roots they
+// come down to (through needed TODOs that only fail for their own needs; never the case's own TODO, never in a
+// circle): a quality status becomes NeedsFirst, "needs L02-T1 first (its case 'rotation' fails); here: ...", and any
+// other status stands with the need added to its detail. Where the need leads to no root (TODOs that need each other
+// and fail only for each other), the case keeps its own status. Passes, build errors and the kit's faults stay as they
+// are.
 void blame_needed_todos(const LabCases& lab, std::vector<CaseResult>& results, std::size_t first);
 
 }  // namespace gsv

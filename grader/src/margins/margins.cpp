@@ -3,6 +3,7 @@
 #include "common/app/kit_layout.h"
 #include "common/core/error.h"
 #include "common/core/number_text.h"
+#include "common/image/image_offset.h"
 #include "grader/src/cases/cases.h"
 #include "grader/src/grade/grade.h"
 #include "grader/src/margins/mutant_kit.h"
@@ -248,7 +249,7 @@ private:
         for (const auto& r : report.results) {
             if (r.kind != "image") continue;
             result_.renders.push_back({implementation.name, r.lab, r.name, kind, source, budget_share(r), status_name(r.status),
-                                       one_line(r.detail, 300)});
+                                       one_line(r.detail, 300), std::max(std::abs(r.image.offset_x), std::abs(r.image.offset_y))});
         }
     }
 
@@ -326,7 +327,7 @@ Json margins_json(const MarginMeasurement& m) {
     for (const auto& r : m.renders)
         renders.push_back(object({{"implementation", r.implementation}, {"lab", r.lab}, {"case", r.case_name}, {"kind", r.kind},
                                   {"source", r.source}, {"share", number_or_null(r.share)}, {"status", r.status},
-                                  {"detail", valid_utf8(r.detail)}}));
+                                  {"detail", valid_utf8(r.detail)}, {"offset", number_or_null(r.offset)}}));
     for (const auto& n : m.notes) notes.push_back(n);
     return object({{"implementations", implementations}, {"cases", cases}, {"renders", renders}, {"notes", notes}});
 }
@@ -348,7 +349,7 @@ MarginMeasurement margins_from_json(const Json& root) {
     for (const Json& j : root.array_at("renders").as_array())
         m.renders.push_back({j.string_at("implementation"), j.string_at("lab"), j.string_at("case"), j.string_at("kind"),
                              j.string_at("source"), j.number_or("share", kInf), j.string_at("status"),
-                             j.string_at("detail")});
+                             j.string_at("detail"), j.number_or("offset", 0)});
     for (const Json& n : root.array_at("notes").as_array()) m.notes.push_back(n.as_string());
     return m;
 }
@@ -376,6 +377,7 @@ struct CaseVerdict {
     double nearest_wrong = kInf;
     std::string nearest_wrong_what;
     int wrong_renders = 0;
+    double worst_offset = 0;  // of a correct render, pixels
     std::vector<std::string> misses;
 };
 
@@ -410,6 +412,11 @@ CaseVerdict verdict_of(const MarginMeasurement& m, const MarginCase& c) {
         worst = std::max(worst, r.share);
         v.worst_correct = std::max(v.worst_correct, r.share);
         if (r.share >= kCorrectBar) v.misses.push_back(why_correct(r));
+        v.worst_offset = std::max(v.worst_offset, r.offset);
+        if (r.offset >= kCorrectOffsetBar * kMaxGlobalOffset)
+            v.misses.push_back(std::string(r.kind == "variant" ? "correct variant '" + r.source + "'" : "the solution") + " is " +
+                               fixed(r.offset, 2) + " px off the golden as a whole on " + r.implementation + " (the grader refuses over " +
+                               fixed(kMaxGlobalOffset, 2) + " px)");
     }
     std::sort(v.misses.begin(), v.misses.end());
     for (auto [line, where] : wrong_where) {
@@ -529,6 +536,17 @@ std::string margins_table(const MarginMeasurement& m) {
             if (other.lab == c.lab && other.budget != c.budget) one_budget = false;
         if (!one_budget) out << "    budget: " << c.budget << "\n";
     }
+    // The whole picture's place: correct renders within half of what the grader refuses as a shifted picture.
+    double worst_offset = 0;
+    std::string worst_offset_what = "none measured";
+    for (const auto& r : m.renders)
+        if (r.kind != "mutant" && r.offset >= worst_offset) {
+            worst_offset = r.offset;
+            worst_offset_what = r.lab + "/" + r.case_name + " on " + r.implementation;
+        }
+    out << "\nthe whole picture's offset: the largest of a correct render " << fixed(worst_offset, 2) << " px (" << worst_offset_what
+        << "); the bar: under " << fixed(kCorrectOffsetBar * kMaxGlobalOffset, 2) << " px, the grader refuses over "
+        << fixed(kMaxGlobalOffset, 2) << " px\n";
     out << "\n" << cases - missing << " of " << cases << " cases meet the bar";
     if (without_mutants) out << " (" << without_mutants << " with no mutant that must fail them: correct renders only)";
     out << "\n";

@@ -49,6 +49,11 @@ Json image_json(const ImageCheck& image) {
     box["y1"] = image.diff_y1;
     // x1 < x0 means no pixel differs; null says so without a tool having to know the convention.
     j["diff_box"] = image.diff_x1 < image.diff_x0 ? Json(nullptr) : box;
+    // How far the whole picture is moved against the reference (pixels; x right, y down).
+    Json offset = Json::array();
+    offset.push_back(number_or_null(image.offset_x));
+    offset.push_back(number_or_null(image.offset_y));
+    j["offset"] = offset;
     return j;
 }
 

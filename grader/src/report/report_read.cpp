@@ -27,7 +27,7 @@ std::vector<float> floats(const Json& values) {
 }
 
 CaseStatus status_named(const std::string& name, const std::string& where) {
-    for (int s = 0; s <= static_cast<int>(CaseStatus::GpuMargin); ++s)
+    for (int s = 0; s <= static_cast<int>(kLastCaseStatus); ++s)
         if (name == status_name(static_cast<CaseStatus>(s))) return static_cast<CaseStatus>(s);
     throw Error(where + ": unknown status '" + name + "'");
 }
@@ -49,6 +49,10 @@ ImageCheck image_check(const Json& j) {
         image.diff_y0 = box.int_at("y0");
         image.diff_x1 = box.int_at("x1");
         image.diff_y1 = box.int_at("y1");
+    }
+    if (const Json* offset = j.find("offset"); offset && offset->is_array() && offset->size() == 2) {
+        image.offset_x = offset->at(0).is_number() ? offset->at(0).as_number() : 0;
+        image.offset_y = offset->at(1).is_number() ? offset->at(1).as_number() : 0;
     }
     return image;
 }

@@ -125,7 +125,7 @@ void write_line(int fd, const char* text) { (void)!write(fd, text, std::strlen(t
 class UnaskedConversation : public HandinConversation {
 public:
     std::uint64_t max_image_pixels() const override { return 0; }
-    void announced(const HandinTag& tag) override { refuse(tag); }
+    void announced(const HandinTag& tag, std::uint32_t) override { refuse(tag); }
     void received(HandinMessage message, double, const Reply&) override { refuse(message.tag); }
 
 private:
@@ -198,7 +198,7 @@ private:
                 n -= k;
                 if (header_got_ < kHandinHeaderBytes) return;
                 std::memcpy(message_.tag.data(), header_, 4);
-                conversation.announced(message_.tag);
+                conversation.announced(message_.tag, u32_from_le_bytes(header_ + 4));
                 payload_left_ = checked_payload_size(message_.tag, u32_from_le_bytes(header_ + 4),
                                                      conversation.max_image_pixels(), kMaxArrayFloats);
                 message_.payload.clear();

@@ -32,8 +32,9 @@ public:
     // A whole message, arrived at `t` (seconds since the start). Throw gsv::Error to refuse what the lab sent:
     // the process is killed, and the text is ProcessResult::refused.
     virtual void received(HandinMessage message, double t, const Reply& reply) = 0;
-    // A message's header, before its payload is read: throw gsv::Error to refuse a message not wanted at all now.
-    virtual void announced(const HandinTag&) {}
+    // A message's header, with the payload size it declares, before the payload is read (or memory is set aside for
+    // it): throw gsv::Error to refuse a message not wanted now or over what this render may take in all.
+    virtual void announced(const HandinTag&, std::uint32_t /*declared_bytes*/) {}
     // A served process (served_process.h): whether the lab has said all this request asks for, so that the process
     // waits for the next one. run_process asks nothing of it: its process runs to its end.
     virtual bool answered() const { return false; }

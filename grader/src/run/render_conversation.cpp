@@ -48,13 +48,45 @@ RenderRequest render_request(const LabCases& lab, const GradeCase& c, Profile pr
     return r;
 }
 
+// The most bytes the arrays of one render may take on the socket: kMaxArrays headers and names, kMaxArrayFloats floats.
+constexpr std::uint64_t kMaxArrayBytesInAll = kMaxArrays * (12 + kMaxArrayNameBytes) + 4 * kMaxArrayFloats;
+
+void RenderConversation::announced(const HandinTag& tag, std::uint32_t declared_bytes) {
+    if (tag == kTagArray) {
+        if (!arrays_asked_) throw Error("handed in an array, which this case does not ask for (it checks no arrays)");
+        if (report_) throw Error("handed in an array after its report");
+        if (++arrays_announced_ > kMaxArrays) throw Error("handed in more than " + std::to_string(kMaxArrays) + " arrays");
+        array_bytes_announced_ += declared_bytes;
+        if (array_bytes_announced_ > kMaxArrayBytesInAll)
+            throw Error("announced arrays of " + std::to_string(array_bytes_announced_) + " bytes in all, over the " +
+                        std::to_string(kMaxArrayFloats) + " floats (" + std::to_string(kMaxArrayBytesInAll) +
+                        " bytes with their names) a render may hand in");
+    } else if (tag == kTagImage) {
+        if (image || report_) throw Error("handed in a second image");
+    } else if (tag == kTagReport) {
+        if (report_) throw Error("handed in a second report");
+        if (!image) throw Error("handed in its report before its image");
+    } else if (tag == kTagFrame) {
+        if (!asked_)
+            throw Error("handed in a timed frame before the grader asked for it (the grader " +
+                        (challenges_ && frames.size() < challenges_->size() ? "waits for frame " + std::to_string(frames.size())
+                                                                             : std::string("asked for none")) +
+                        "): frames are timed from the grader's request to their answer");
+    }
+}
+
 void RenderConversation::received(HandinMessage message, double t, const Reply& reply) {
     const HandinTag& tag = message.tag;
     if (tag == kTagArray) {
         if (report_) throw Error("handed in an array after its report");
         HandinArray a = read_array_payload(message.payload);
+        message.payload = {};  // the floats are in `a` now: one copy held, not two
         if (!names_.insert(a.name).second) throw Error("handed in array '" + a.name + "' twice");
         if (arrays.size() >= kMaxArrays) throw Error("handed in more than " + std::to_string(kMaxArrays) + " arrays");
+        array_floats_ += a.values.size();
+        if (array_floats_ > kMaxArrayFloats)
+            throw Error("handed in more than the " + std::to_string(kMaxArrayFloats) + " floats in all a render may hand in (array '" +
+                        a.name + "')");
         arrays.push_back({a.name, static_cast<int>(a.components), std::move(a.values)});
     } else if (tag == kTagImage) {
         if (image || report_) throw Error("handed in a second image");

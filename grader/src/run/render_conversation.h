@@ -40,9 +40,14 @@ RenderRequest render_request(const LabCases& lab, const GradeCase& c, Profile pr
 class RenderConversation : public HandinConversation {
 public:
     explicit RenderConversation(const RenderRequest& request)
-        : width_(request.width), height_(request.height), challenges_(request.challenges) {}
+        : width_(request.width), height_(request.height), arrays_asked_(request.arrays), challenges_(request.challenges) {}
 
     std::uint64_t max_image_pixels() const override { return std::uint64_t(width_) * std::uint64_t(height_); }
+    // Every cap of the hand-in, from the header, before the payload is read: arrays only where the case asks for them,
+    // at most kMaxArrays of them and kMaxArrayFloats floats in all (the bytes they may take, names and counts
+    // included); one image, before one report; a timed frame only once asked for. So what the grader holds of one
+    // render is bounded whatever the lab sends (grader/README.md, "Arrays").
+    void announced(const HandinTag& tag, std::uint32_t declared_bytes) override;
     void received(HandinMessage message, double t, const Reply& reply) override;
     // Served: the hand-in, the ready that follows it, every frame asked for, the grader's END, then the lab's DONE.
     bool answered() const override { return done_; }
@@ -64,7 +69,10 @@ private:
     void ask(const Reply& reply);
 
     int width_, height_;
+    bool arrays_asked_;
     const std::vector<std::vector<std::string>>* challenges_;
+    std::size_t arrays_announced_ = 0;
+    std::uint64_t array_bytes_announced_ = 0, array_floats_ = 0;
     std::optional<Json> report_;
     std::set<std::string> names_;
     bool ready_ = false, asked_ = false, done_ = false;

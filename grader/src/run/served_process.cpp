@@ -10,7 +10,7 @@ namespace {
 class FirstWords : public HandinConversation {
 public:
     std::uint64_t max_image_pixels() const override { return 0; }
-    void announced(const HandinTag& tag) override {
+    void announced(const HandinTag& tag, std::uint32_t) override {
         if (tag != kTagDone || said_) throw Error("handed in a " + tag_name(tag) + " message before the grader asked for a case");
     }
     void received(HandinMessage, double, const Reply&) override { said_ = true; }

@@ -4,6 +4,7 @@
 // and named in the build log. The framework, shared shaders and data are the kit's. Each
 // lab is built as its own target, so one lab's compile error leaves the others gradable.
 #include "grader/src/judge/grade_result.h"
+#include "grader/src/run/build_reuse.h"
 #include "grader/src/run/process.h"
 
 #include <cstdint>
@@ -33,8 +34,6 @@ struct SubmissionBuild {
 // libraries and the inputs, holding a copy of the inputs that is compared byte for byte, never trusted by key),
 // that build's binary. A cache that cannot be read or written is one line in the build log; the lab is built.
 // Throws gsv::Error when the submission has no labs/ folder or the kit build is not configured.
-// A value of the kit build's CMakeCache.txt ("GSV_LAB_DIR_lab01" -> "lab01_gooch"); "" when it has none.
-std::string cmake_cache_value(const std::filesystem::path& kit_build, const std::string& name);
 
 SubmissionBuild build_submission(const std::filesystem::path& submission, const std::filesystem::path& kit_root,
                                  const std::filesystem::path& kit_build, const std::vector<std::string>& labs,
