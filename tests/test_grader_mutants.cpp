@@ -200,9 +200,12 @@ TEST_CASE("every C++ TODO: left undone or with a classic bug it loses points, li
         if (cpp_todos.empty()) continue;
         const Json none = Json::array();
         const Json& cpp_mutants = spec.contains("cpp_mutants") ? spec.array_at("cpp_mutants") : none;
-        // One submission: the reference with every C++ TODO block switched at run time.
+        const Json& cpp_stateful = spec.contains("cpp_stateful") ? spec.array_at("cpp_stateful") : none;
+        // One submission: the reference with every C++ TODO block switched at run time (the stateful variants too).
+        Json switched = cpp_mutants;
+        for (const Json& v : cpp_stateful.as_array()) switched.push_back(v);
         test::TempDir dir;
-        test::write_switched_cpp_submission(dir.path("submission"), lab_dir, cpp_mutants);
+        test::write_switched_cpp_submission(dir.path("submission"), lab_dir, switched);
         GradeOptions built = test::instructor_options(lab, dir.path("built"));
         built.submission = dir.path("submission");
         for (const auto& todo : cpp_todos) {
@@ -230,5 +233,30 @@ TEST_CASE("every C++ TODO: left undone or with a classic bug it loses points, li
                 INFO(lab << " (" << (self_check ? "self-check" : "live") << ") C++ mutant '" << name << "' of " << todo << ":\n" << o.details);
                 CHECK(o.lost);
             }
+        // Served equals alone (issue 39): a lab that keeps state in a `static` from one case to the next is graded on
+        // every case as one process per case grades it, each of its public cases in the lab's order, live and in the
+        // self-check; the served rows that passed only alone say so, and there must be some (else the variant proves
+        // nothing).
+        for (const Json& v : cpp_stateful.as_array()) {
+            setenv("GSV_TEST_MUTANT", v.string_at("name").c_str(), 1);
+            for (const bool self_check : {true, false}) {
+                GradeOptions served = options;
+                served.self_check = self_check;
+                served.hidden = false;
+                served.timing = false;
+                served.reference_cache = cache;
+                GradeOptions alone = served;
+                alone.lab_processes = LabProcesses::PerCase;
+                const GradeReport per_lab = grade(served), per_case = grade(alone);
+                // Status and score: a picture that passes after other cases may differ within the tolerance from the one alone.
+                const int noted = test::check_graded_alike(per_case, per_lab, lab + " stateful variant '" + v.string_at("name") + "'",
+                                                           false, false);
+                INFO(lab << " (" << (self_check ? "self-check" : "live") << ") stateful variant '" << v.string_at("name") << "'");
+                CHECK(noted >= 1);
+                CHECK(per_lab.score() == per_lab.max_score());
+                CHECK(per_case.score() == per_case.max_score());
+            }
+            unsetenv("GSV_TEST_MUTANT");
+        }
     }
 }

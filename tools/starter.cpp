@@ -1,10 +1,14 @@
 #include "tools/starter.h"
 
 #include "common/app/kit_layout.h"
+#include "common/app/lab_sources.h"
 #include "common/core/error.h"
+#include "common/core/fnv1a.h"
+#include "common/io/json.h"
 
 #include <algorithm>
 #include <fstream>
+#include <iterator>
 #include <regex>
 #include <sstream>
 
@@ -82,11 +86,25 @@ std::vector<StarterFileResult> sync_starters(const fs::path& root, bool write) {
     for (const auto& entry : fs::recursive_directory_iterator(solutions))
         if (entry.is_regular_file()) files.push_back(entry.path());
     std::sort(files.begin(), files.end());
+    // grader/starters.json: each starter's C++ by the fingerprint of its bytes (common/app/lab_sources.h).
+    Json manifest = Json::object();
+    manifest["about"] = "Written by gsv-make-starters --write with labs/: each starter's C++ (the files a lab's build reads) by the "
+                        "FNV-1a of its bytes. Where a lab's C++ is its starter's, the grader knows its cases come out alike whatever "
+                        "ran before them in the same process.";
+    Json labs = Json::object();
     for (const auto& file : files) {
         StarterFileResult r;
         r.solution = file;
         r.starter = KitLayout{root}.labs() / fs::relative(file, solutions);
         const std::string generated = make_starter(read_text(file), fs::relative(file, root).generic_string()).text;
+        const fs::path in_labs = fs::relative(file, solutions);
+        if (is_build_input(file) && in_labs.begin() != in_labs.end()) {
+            Fnv1a hash;
+            hash.add(generated.data(), generated.size());
+            fs::path inside;
+            for (auto part = std::next(in_labs.begin()); part != in_labs.end(); ++part) inside /= *part;
+            labs[in_labs.begin()->string()][inside.generic_string()] = hash.hex();
+        }
         std::string existing;
         if (fs::exists(r.starter)) existing = read_text(r.starter);
         r.up_to_date = fs::exists(r.starter) && existing == generated;
@@ -97,6 +115,17 @@ std::vector<StarterFileResult> sync_starters(const fs::path& root, bool write) {
         }
         results.push_back(r);
     }
+    manifest["labs"] = labs;
+    StarterFileResult m;
+    m.solution = solutions;
+    m.starter = starter_manifest(root);
+    const std::string text = manifest.dump(2) + "\n";
+    m.up_to_date = fs::exists(m.starter) && read_text(m.starter) == text;
+    if (write && !m.up_to_date) {
+        std::ofstream out(m.starter, std::ios::binary);
+        if (!out || !(out << text)) throw Error("cannot write '" + m.starter.string() + "'");
+    }
+    results.push_back(m);
     return results;
 }
 

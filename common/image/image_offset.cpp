@@ -41,7 +41,8 @@ bool ImageOffset::shifted() const {
 }
 
 std::string ImageOffset::text() const {
-    const auto px = [](double v) { return format_number(v, 2); };
+    // Hundredths of a pixel: a float's residue (3.8e-06) is 0 here.
+    const auto px = [](double v) { return format_number(std::abs(v) < 0.005 ? 0.0 : std::round(v * 100) / 100, 3); };
     std::string words;
     const auto side = [&](double v, const char* positive, const char* negative) {
         if (std::abs(v) < 0.05) return;

@@ -15,6 +15,7 @@
 #include "grader/src/golden/golden_update.h"
 #include "grader/src/grade/grade.h"
 #include "grader/src/grade/grade_exit.h"
+#include "grader/src/grade/kit_fault.h"
 #include "grader/src/grade/regrade.h"
 #include "grader/src/report/report.h"
 #include "grader/src/report/report_format.h"
@@ -124,6 +125,14 @@ int grade_class(const gsv::GradeCommand& command, const char* argv0) {
     gsv::write_class_tables(record.entries, options.out_dir);
     gsv::write_batch_record(record, options.out_dir);
     std::printf("per-submission reports in %s/<name>/, the class in %s/class.csv\n", options.out_dir.c_str(), options.out_dir.c_str());
+    // The kit's fault is no student's 0: the run says what is wrong and fails, so the grades are not taken as given.
+    const auto kit_faults = std::count_if(record.entries.begin(), record.entries.end(), [](const gsv::BatchEntry& e) { return e.kit_fault; });
+    if (kit_faults > 0) {
+        const auto first = std::find_if(record.entries.begin(), record.entries.end(), [](const gsv::BatchEntry& e) { return e.kit_fault; });
+        std::fprintf(stderr, "gsv-grade: %ld of %zu submissions were not graded for the kit's reason, not theirs (%s); fix it and grade "
+                             "them again\n", static_cast<long>(kit_faults), record.entries.size(), first->problem.c_str());
+        return gsv::kGradeKitFault;
+    }
     return gsv::kGradeOk;
 }
 
@@ -191,9 +200,12 @@ int grade_one(const gsv::GradeCommand& command, const char* argv0) {
     const auto kit_faults = std::count_if(report.results.begin(), report.results.end(),
                                           [](const gsv::CaseResult& r) { return gsv::is_kit_fault(r.status); });
     if (kit_faults > 0) {
-        std::fprintf(stderr, "gsv-grade: the reference failed on %ld checks (marked 'reference failed'): fix the kit before "
-                             "grading; no grade was given\n", static_cast<long>(kit_faults));
-        return gsv::kGradeNotGraded;
+        const auto first = std::find_if(report.results.begin(), report.results.end(),
+                                        [](const gsv::CaseResult& r) { return gsv::is_kit_fault(r.status); });
+        std::fprintf(stderr, "gsv-grade: the kit's fault, not the student's, on %ld checks (marked '%s', first %s/%s: %s): fix the kit "
+                             "before grading; no grade was given\n", static_cast<long>(kit_faults), gsv::status_name(first->status),
+                     first->lab.c_str(), first->name.c_str(), gsv::one_line(first->detail, 200).c_str());
+        return gsv::kGradeKitFault;
     }
     if (command.fail_under >= 0 && report.max_score() > 0 && report.score() < command.fail_under * report.max_score()) {
         std::fprintf(stderr, "gsv-grade: score %.1f / %.1f is under --fail-under %.2f\n", report.score(), report.max_score(),
@@ -223,6 +235,12 @@ int main(int argc, char** argv) {
         // command line is known good, so that a refused one leaves no folder behind).
         gsv::prepare_output_folder(command.options.out_dir, "--out");
         return command.update_goldens ? rewrite_goldens(command) : grade_one(command, argv[0]);
+    } catch (const gsv::KitFault& e) {
+        // The kit's own fault: one line saying what to fix; the student's results.json says it is not theirs.
+        std::fprintf(stderr, "gsv-grade: the kit's fault, not the submission's: %s\n", e.what());
+        if (!command.options.submission.empty() && command.batch.empty())
+            write_failure_results(command.options.out_dir, std::string("the kit's fault, not yours (tell your instructor): ") + e.what());
+        return gsv::kGradeKitFault;
     } catch (const gsv::Error& e) {
         std::fprintf(stderr, "gsv-grade: %s\n", e.what());
         // A submission that could not be graded at all still gets a results.json saying why (Gradescope

@@ -79,10 +79,23 @@ std::vector<BatchEntry> grade_batch(const BatchOptions& options, void (*progress
     std::atomic<std::size_t> next{0};
     std::mutex report_mutex;
     int done = 0;
+    // The kit's fault seen again and again: the submissions not started yet are left, saying why.
+    std::string stopped_for, last_fault;
+    int faults_in_a_row = 0, faults = 0, clean = 0;
     auto worker = [&] {
         for (std::size_t i = next++; i < names.size(); i = next++) {
             BatchEntry& entry = entries[i];
             entry.name = names[i];
+            {
+                std::lock_guard<std::mutex> lock(report_mutex);
+                if (!stopped_for.empty()) {
+                    entry.kit_fault = true;
+                    entry.problem = "not graded: the batch stopped: " + stopped_for;
+                    ++done;
+                    if (progress) progress(entry, done, static_cast<int>(names.size()));
+                    continue;
+                }
+            }
             const fs::path folder = options.submissions / entry.name;
             const fs::path out = fs::absolute(options.out_dir) / entry.name;
             if (!fs::is_directory(folder)) {
@@ -105,6 +118,13 @@ std::vector<BatchEntry> grade_batch(const BatchOptions& options, void (*progress
                 run_process(argv, fs::current_path(), limits, {std::string(kSeedVariable) + "=" + std::to_string(options.seed)});
             entry.seconds = run.seconds;
             try {
+                if (run.exit_code == kGradeKitFault) {
+                    entry.kit_fault = true;
+                    // gsv-grade's own line says what is wrong with the kit and how to fix it.
+                    std::string line = run.output.substr(0, run.output.find('\n'));
+                    if (line.rfind("gsv-grade: ", 0) == 0) line.erase(0, 11);
+                    throw Error(line.empty() ? "the kit's fault (gsv-grade said nothing more)" : line);
+                }
                 if (run.exit_code == kGradeNotGraded || run.signal != 0 || run.timed_out)
                     throw Error(run.timed_out ? "timed out" : "gsv-grade failed: " + run.output.substr(0, 300));
                 const Json results = read_json_file(out / "results.json");
@@ -123,6 +143,17 @@ std::vector<BatchEntry> grade_batch(const BatchOptions& options, void (*progress
                 entry.problem = e.what();
             }
             std::lock_guard<std::mutex> lock(report_mutex);
+            if (entry.kit_fault) {
+                faults_in_a_row = entry.problem == last_fault ? faults_in_a_row + 1 : 1;
+                last_fault = entry.problem;
+                ++faults;
+                if (faults_in_a_row >= kKitFaultsToStop || (clean == 0 && faults >= kKitFaultsToStop))
+                    stopped_for = std::to_string(clean == 0 ? faults : faults_in_a_row) +
+                                  " submissions in a row failed for the kit's reason: " + entry.problem;
+            } else {
+                faults_in_a_row = 0;
+                ++clean;
+            }
             ++done;
             if (progress) progress(entry, done, static_cast<int>(names.size()));
         }

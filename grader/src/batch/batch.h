@@ -43,7 +43,14 @@ struct BatchEntry {
     // Which labs this run graded: "all", or with --regrade-only changed the labs whose inputs changed ("lab03, lab05"),
     // or "none" (every lab's rows kept from the last run).
     std::string regraded = "all";
+    // Not graded for the kit's reason, not the submission's (gsv-grade exited kGradeKitFault, or the batch stopped
+    // for it): no grade, and the batch fails.
+    bool kit_fault = false;
 };
+
+// A batch stops starting submissions once this many in a row ended in the kit's fault for the same reason (or all of
+// its first ones did): a fault every submission would meet is seen after a few, not after the class.
+inline constexpr int kKitFaultsToStop = 3;
 
 // The entries of this shard, in class order; `class_names`, when given, gets the whole class, sorted.
 std::vector<BatchEntry> grade_batch(const BatchOptions& options, void (*progress)(const BatchEntry&, int done, int total),

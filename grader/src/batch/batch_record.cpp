@@ -82,6 +82,7 @@ void write_batch_record(const BatchRecord& record, const fs::path& out_dir) {
         row["seconds"] = e.seconds;
         row["problem"] = e.problem;
         row["regraded"] = e.regraded;
+        row["kit_fault"] = e.kit_fault;
         rows.push_back(row);
     }
     root["entries"] = rows;
@@ -118,6 +119,7 @@ BatchRecord read_batch_record(const fs::path& out_dir) {
         e.seconds = row.number_at("seconds");
         e.problem = row.string_at("problem");
         if (const Json* regraded = row.find("regraded")) e.regraded = regraded->as_string();
+        e.kit_fault = row.bool_or("kit_fault", false);
         record.entries.push_back(e);
     }
     return record;

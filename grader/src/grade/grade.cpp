@@ -19,8 +19,39 @@ namespace fs = std::filesystem;
 namespace gsv {
 namespace {
 
+// The image, then the arrays, of one render of the student's lab against the expected image: the row as it stands
+// before the frame time. `student` draws other cases for the copy check.
+CaseResult judge_render(GradingSession& s, CopySearch& copies, const LabCases& lab, const GradeCase& c, bool live,
+                        const CaseResult& row, const LabRun& run, const LabRunner& student, const Image& expected,
+                        const std::optional<LabRun>& reference) {
+    CaseResult r = row;
+    r.seconds = run.process.seconds;
+    r.frame_ms = run.reported_ms;
+    r.output = as_student_sees(run.process.output, s.student_kit());
+    r.status = run.status;
+    r.detail = as_student_sees(run.detail, s.student_kit());
+    if (run.status == CaseStatus::Passed) {
+        const auto draw = [&](const GradeCase& other) { return student.render(lab.lab, lab, other, s.limits(lab, true)); };
+        // Only where the student's renderer is not the goldens' own: on that one a difference is the student's.
+        std::optional<OtherRenderer> other;
+        if (const auto golden = s.report.golden_renderers.find(lab.lab);
+            !live && golden != s.report.golden_renderers.end() && !run.renderer.empty() && run.renderer != golden->second) {
+            other = OtherRenderer{golden->second, run.renderer, "build/bin/" + lab.lab + " compare --case " + c.name};
+            if (s.options.profile != Profile::Core) other->compare += std::string(" --profile ") + profile_name(s.options.profile);
+        }
+        check_image(lab, c, *run.image, expected, live, s.out, copies, draw, other ? &*other : nullptr, r);
+    }
+    // The numbers after the image, whatever it showed (grader/src/judge/data_check.h has the order).
+    if (reference)
+        check_case_data(lab, c, run, *reference, r);
+    else
+        check_case_data(lab, c, run, s.kit, r);
+    return r;
+}
+
 // One case: the student's lab runs, then the reference (live, or its committed golden); the image is judged, then the
-// arrays, then, where the case is timed and its image passed, the frame time. Each check is a row.
+// arrays, then, where the case is timed and its image passed, the frame time. Each check is a row. A check that fails
+// on what a served process drew after other cases is judged again on a render of the case alone (below).
 void grade_case(GradingSession& s, CopySearch& copies, const LabCases& lab, const GradeCase& c, bool live,
                 const LabBuild* build) {
     CaseResult r = s.result_for(lab, c);
@@ -54,11 +85,6 @@ void grade_case(GradingSession& s, CopySearch& copies, const LabCases& lab, cons
     // The student first: this case's expected image does not exist yet while student code runs.
     const LabRun student = s.student.render(lab.lab, lab, c, s.limits(lab, true));
     if (s.report.renderer.empty()) s.report.renderer = student.renderer;
-    r.seconds = student.process.seconds;
-    r.frame_ms = student.reported_ms;
-    r.output = as_student_sees(student.process.output, s.student_kit());
-    r.status = student.status;
-    r.detail = as_student_sees(student.detail, s.student_kit());
 
     Image expected;
     std::optional<LabRun> reference;
@@ -66,6 +92,7 @@ void grade_case(GradingSession& s, CopySearch& copies, const LabCases& lab, cons
         reference = s.reference_render(lab, c);
         r.reference_seconds = reference->process.seconds;
         if (reference->status != CaseStatus::Passed) {
+            r.seconds = student.process.seconds;
             r.status = CaseStatus::ReferenceFailed;
             r.detail = "the reference solution failed (" + std::string(status_name(reference->status)) + "): " + reference->detail;
             r.output = reference->process.output;
@@ -93,27 +120,30 @@ void grade_case(GradingSession& s, CopySearch& copies, const LabCases& lab, cons
     }
     write_png(dir / "expected.png", expected);
     r.expected_png = fs::relative(dir / "expected.png", s.out).generic_string();
-    if (student.status == CaseStatus::Passed) {
-        const auto draw = [&](const GradeCase& other) { return s.student.render(lab.lab, lab, other, s.limits(lab, true)); };
-        // Only where the student's renderer is not the goldens' own: on that one a difference is the student's.
-        std::optional<OtherRenderer> other;
-        if (const auto golden = s.report.golden_renderers.find(lab.lab);
-            !live && golden != s.report.golden_renderers.end() && !student.renderer.empty() && student.renderer != golden->second) {
-            other = OtherRenderer{golden->second, student.renderer, "build/bin/" + lab.lab + " compare --case " + c.name};
-            if (s.options.profile != Profile::Core) other->compare += std::string(" --profile ") + profile_name(s.options.profile);
-        }
-        check_image(lab, c, *student.image, expected, live, s.out, copies, draw, other ? &*other : nullptr, r);
+    CaseResult judged = judge_render(s, copies, lab, c, live, r, student, s.student, expected, reference);
+    // Served equals alone: a check that fails on a render made after other cases in the same process is judged on the
+    // case rendered again in a process of its own, as --one-process-per-case renders it; where that passes, the row
+    // says the lab kept something between cases. Not for a lab whose C++ is the kit's own (its starter's, or the
+    // solution's), which the kit's tests prove keeps nothing: only its GLSL is the student's, and a GL context is new
+    // for every case.
+    const bool alone_needed = judged.status != CaseStatus::Passed && student.after_other_cases && !s.cpp_is_the_kits(lab.lab);
+    if (alone_needed) {
+        const LabRunner alone = s.student.alone();
+        const LabRun again = alone.render(lab.lab, lab, c, s.limits(lab, true));
+        judged = judge_render(s, copies, lab, c, live, r, again, alone, expected, reference);
+        if (judged.status == CaseStatus::Passed) judged.detail += kPassedOnlyAlone;
     }
-    // The numbers after the image, whatever it showed (grader/src/judge/data_check.h has the order).
-    if (reference)
-        check_case_data(lab, c, student, *reference, r);
-    else
-        check_case_data(lab, c, student, s.kit, r);
-    s.record(r);
+    s.record(judged);
     const CaseResult image_row = s.report.results.back();
     if (!timed) return;
     if (image_row.status != CaseStatus::Passed) return timing_row_like(image_row);
-    s.record(check_timing(lab, c, image_row, s.student, s.limits(lab, true), s.reference, s.limits(lab, false)));
+    CaseResult timing = check_timing(lab, c, image_row, s.student, s.limits(lab, true), s.reference, s.limits(lab, false));
+    // The timed frames likewise: timed again with a process of its own for each round where served ones failed.
+    if (timing.status != CaseStatus::Passed && s.student.served && !s.cpp_is_the_kits(lab.lab)) {
+        timing = check_timing(lab, c, image_row, s.student.alone(), s.limits(lab, true), s.reference, s.limits(lab, false));
+        if (timing.status == CaseStatus::Passed) timing.detail += kPassedOnlyAlone;
+    }
+    s.record(timing);
 }
 
 // A lab's served processes (GradingSession::serve) for the length of its cases, ended however grading it ends.

@@ -73,6 +73,14 @@ struct GradeOptions {
     LabProcesses lab_processes = LabProcesses::Default;
 };
 
+// What a row's detail gains where a check failed on a render made after other cases in the same process and passed on
+// the case rendered again alone (one process per case, what the `reproduce:` line runs): the student's lab keeps
+// something from one case to the next.
+inline constexpr const char* kPassedOnlyAlone =
+    "; rendered again alone, as a process of its own, where it passes: after other cases in the same process it came out "
+    "differently, so the lab keeps something between cases (a `static`, a global, a file it wrote); step through the cases "
+    "in the window (C) to see it";
+
 struct GradeProgress {
     int done = 0, total = 0;
     const CaseResult* result = nullptr;  // the check just finished; null while building

@@ -11,7 +11,9 @@
 
 #include <algorithm>
 #include <fstream>
+#include <iterator>
 #include <random>
+#include <regex>
 #include <system_error>
 
 namespace fs = std::filesystem;
@@ -23,6 +25,11 @@ constexpr const char* kInputsFormat = "gsv-inputs 1";
 
 // A file by its bytes ("" where it cannot be read, which differs from any file's fingerprint).
 void add_file(Fnv1a& hash, const fs::path& file) { hash.add(file_fingerprint(file)); }
+
+std::string file_text(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
 
 // A tree by the names, kinds and bytes of what is in it, never following a link. Student trees are hostile: one over
 // the submission's limits (run/submission.h) gets a fingerprint of its own each time, so it is always graded (where
@@ -76,7 +83,12 @@ std::string run_options(const GradeOptions& o, std::uint64_t seed) {
                        std::to_string(o.timing) + " hidden " + std::to_string(o.hidden) + " sandbox " + std::to_string(o.sandbox) +
                        " namespaces " + std::to_string(o.namespaces) + " readable-kit " + std::to_string(o.allow_readable_kit) +
                        " profile " + profile_name(o.profile) + " todo " + o.todo + " timeout " + std::to_string(o.timeout_s) +
-                       " student-bin " + o.student_bin_dir.string() + " student-root " + o.student_root.string() + " cases";
+                       " student-bin " + o.student_bin_dir.string() + " student-root " + o.student_root.string() +
+                       // How a grade is made changes nothing a student did, but a grade made another way is not the one
+                       // recorded: every lab built (--build-all), a process per case, the ES version.
+                       " build-all " + std::to_string(!o.reuse_builds) + " processes " +
+                       std::to_string(static_cast<int>(o.lab_processes)) + " es-at-least " + (o.es_at_least ? o.es_at_least->str() : "-") +
+                       " cases";
     for (const auto& c : o.cases) text += " " + c;
     return text;
 }
@@ -101,9 +113,22 @@ LabInputs lab_inputs(const GradeOptions& options, const std::vector<std::string>
     shared.add(run_options(options, seed));
     shared.add("grader");
     add_file(shared, grader);
-    for (const char* part : {"shaders", "common", "support", "data", "reference", "cmake", "grader/submission"}) {
+    for (const char* part : {"shaders", "common", "support", "third_party", "data", "reference", "cmake", "grader/submission",
+                             "grader/starters.json"}) {
         shared.add(part);
         add_tree(shared, options.kit_root / part);
+    }
+    // What a submission's build links and configures with: the kit build's exported targets and settings, and each
+    // library they name, by its bytes.
+    for (const char* settings : {"gsv-targets.cmake", "gsv-build-settings.cmake"}) {
+        shared.add(settings);
+        add_file(shared, kit_build / settings);
+    }
+    static const std::regex location("IMPORTED_LOCATION[A-Z_]*\\s+\"([^\"]+)\"");
+    const std::string targets = file_text(kit_build / "gsv-targets.cmake");
+    for (auto it = std::sregex_iterator(targets.begin(), targets.end(), location); it != std::sregex_iterator(); ++it) {
+        shared.add((*it)[1].str());
+        add_file(shared, (*it)[1].str());
     }
     const fs::path student_labs = options.submission.empty() ? kit.labs() : KitLayout{options.submission}.labs();
     LabInputs inputs;
@@ -116,7 +141,8 @@ LabInputs lab_inputs(const GradeOptions& options, const std::vector<std::string>
             hash.add(part.lexically_relative(options.kit_root).generic_string());
             add_tree(hash, part);
         }
-        // The student's work: the lab's folder, or all of labs/ where the build does not name the folder.
+        // The student's work: the lab's folder, or all of labs/ where the build does not name the folder. Nothing else of
+        // the submission reaches the lab: its build and its runs see that folder alone (grade/walls.cpp, run/submission.h).
         hash.add("student");
         add_tree(hash, folder.empty() ? student_labs : student_labs / folder);
         inputs[lab] = hash.hex();

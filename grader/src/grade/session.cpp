@@ -1,6 +1,7 @@
 #include "grader/src/grade/session.h"
 
 #include "common/app/kit_layout.h"
+#include "common/app/lab_sources.h"
 #include "common/core/error.h"
 #include "grader/src/cases/draw.h"
 #include "grader/src/golden/golden_renderers.h"
@@ -8,6 +9,8 @@
 #include "grader/src/run/submission.h"
 
 #include <algorithm>
+#include <fstream>
+#include <iterator>
 
 namespace fs = std::filesystem;
 
@@ -17,6 +20,13 @@ namespace {
 // Where a folder really is. The sandbox binds each allowed path where it really is; a lab started by a path through
 // a symbolic link (a kit under ~/kit -> /mnt/data/kit, or macOS's /tmp) would not be found inside it, and would end
 // in "the lab binary could not be started" for every case. So the grader names every folder by its real path.
+bool file_bytes_equal(const fs::path& a, const fs::path& b) {
+    std::ifstream x(a, std::ios::binary), y(b, std::ios::binary);
+    if (!x || !y) return false;
+    return std::equal(std::istreambuf_iterator<char>(x), std::istreambuf_iterator<char>(), std::istreambuf_iterator<char>(y),
+                      std::istreambuf_iterator<char>());
+}
+
 fs::path real_path(const fs::path& p) {
     std::error_code ec;
     const fs::path absolute = fs::absolute(p);
@@ -72,6 +82,17 @@ void GradingSession::set_up() {
     }
     // The kit's own labs find their files as they would when a student runs them (GSV_ROOT included).
     const bool own_labs = options.submission.empty() && options.student_bin_dir.empty();
+    for (const auto& lab : labs) {
+        const std::string folder = cmake_cache_value(bin.parent_path(), "GSV_LAB_DIR_" + lab.lab);
+        const fs::path binary = student_bin / lab.lab, solution = bin / (lab.lab + "_solution");
+        bool kits = !folder.empty() && is_starter_cpp(kit, folder, KitLayout{student_root}.labs() / folder);
+        // A test kit's binary (options.student_bin_dir) may be the solution's own: its C++ is the kit's, whatever the
+        // folder beside it holds.
+        std::error_code ec;
+        if (!kits && !own_labs && options.submission.empty() && fs::file_size(binary, ec) == fs::file_size(solution, ec) && !ec)
+            kits = file_bytes_equal(binary, solution);
+        kit_cpp_[lab.lab] = kits;
+    }
     student = LabRunner{student_bin, own_labs ? fs::path() : student_root, true, options.profile};
     reference = LabRunner{bin, "", false, options.profile};
     // Live references kept across runs, but only where student code cannot write them: behind the allow-list.
@@ -194,6 +215,11 @@ void GradingSession::end_serving() {
     student.served = reference.served = nullptr;
     served_student_.reset();
     served_reference_.reset();
+}
+
+bool GradingSession::cpp_is_the_kits(const std::string& lab) const {
+    const auto it = kit_cpp_.find(lab);
+    return it != kit_cpp_.end() && it->second;
 }
 
 fs::path GradingSession::student_kit() const { return student.root.empty() ? kit : student.root; }

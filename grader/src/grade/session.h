@@ -44,6 +44,10 @@ public:
     std::filesystem::path student_kit() const;
     // The build of a lab of the submission; none when the kit's own labs are graded.
     const LabBuild* build_of(const std::string& lab) const;
+    // Whether the student's binary of the lab is built from C++ that is the kit's own: its starter's, by the fingerprints
+    // grader/starters.json records (common/app/lab_sources.h), or the solution's binary byte for byte. The kit's tests
+    // prove such a lab's cases come out alike whatever ran before them in its process.
+    bool cpp_is_the_kits(const std::string& lab) const;
     // From serve(lab) to end_serving(), the runners render the lab's cases through one process each (lab_serve.h),
     // where the options choose it and, for the student, the allow-list walls are up; ended by end_serving.
     void serve(const LabCases& lab);
@@ -82,6 +86,7 @@ private:
     int references_rendered_ = 0;
     std::string reference_key(const LabCases& lab, const GradeCase& c);
     int total_ = 0;
+    std::map<std::string, bool> kit_cpp_;  // cpp_is_the_kits, worked out once per lab at set-up
     // Last: their processes end before the walls (policy_, support_) and the uid lease they run under go.
     std::unique_ptr<ServedLab> served_student_, served_reference_;
 };

@@ -40,10 +40,9 @@ inline constexpr double kCorrectBar = 0.5;  // a correct render uses under half 
 // ...and a must-fail mutant is over one and a half budgets away: beyond the bar where a failing self-check is called
 // a difference between GPUs (cross_implementation_tolerance, grader/cases.h).
 inline constexpr double kWrongBar = kCrossImplementationBudget;
-// A correct render's whole picture sits within half of the offset the grader refuses (kMaxGlobalOffset).
-inline constexpr double kCorrectOffsetBar = 0.5;
 
-// A render's distance from the golden as a share of the case's budget (1 = exactly the budget); infinity when it
+// A render's distance from the golden as a share of the case's budget (1 = exactly the budget), or of the whole picture's
+// offset the grader refuses (kMaxGlobalOffset, common/image/image_offset.h), whichever is larger; infinity when it
 // could not be compared (a crash, a compile error, a missing array) or the budget is 0 and something differs.
 double budget_share(const CaseResult& result);
 

@@ -6,7 +6,6 @@
 #include "grader/src/run/reference_store.h"
 
 #include <algorithm>
-#include <array>
 #include <fstream>
 #include <iterator>
 #include <random>
@@ -146,16 +145,6 @@ std::string cmake_cache_value(const fs::path& build_dir, const std::string& name
     for (std::string line; std::getline(cache, line);)
         if (line.rfind(key, 0) == 0 && line.find('=') != std::string::npos) return line.substr(line.find('=') + 1);
     return "";
-}
-
-bool is_build_input(const fs::path& file) {
-    static const std::array<const char*, 16> kReadAtRunTime = {
-        ".glsl", ".vert", ".frag", ".comp", ".geom", ".tesc", ".tese", ".network",
-        ".json", ".md", ".txt", ".png", ".jpg", ".obj", ".csv", ".pdf"};
-    std::string extension = file.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
-    return std::find_if(kReadAtRunTime.begin(), kReadAtRunTime.end(),
-                        [&](const char* e) { return extension == e; }) == kReadAtRunTime.end();
 }
 
 BuildInputs read_build_inputs(const fs::path& lab_folder) {

@@ -4,6 +4,8 @@
 // from beside each binary, so a hit is proved by comparing them, never by a hash alone. Either way the reuse is proved
 // on every file the compiler read, as its dependency records say (ninja's deps log, or the .o.d files CMake keeps with
 // a Makefile generator): a `.txt` or `.json` a C++ file includes is as much the build's input as a header.
+#include "common/app/lab_sources.h"
+
 #include <filesystem>
 #include <functional>
 #include <map>
@@ -19,11 +21,8 @@ std::string cmake_cache_value(const std::filesystem::path& build_dir, const std:
 // A lab folder's build inputs: each file's path relative to the folder, and its bytes.
 using BuildInputs = std::map<std::string, std::string>;
 
-// Whether the compiler may read this file without anyone saying so: anything but what labs read at run time
-// (shaders, network and case files, pictures, text). An unknown kind of file counts as an input, so that it can only
-// cause a build, never skip one. A file of the other kinds that the compiler does read (an #include of a .txt) is
-// found in the build's dependency records (BuildReads) and proved like the inputs.
-bool is_build_input(const std::filesystem::path& file);
+// Which files are build inputs: common/app/lab_sources.h (is_build_input). A file of the other kinds that the compiler
+// does read (an #include of a .txt) is found in the build's dependency records (BuildReads) and proved like the inputs.
 // Throws gsv::Error naming a file it cannot read. Plain files only (the submission's copy holds nothing else).
 BuildInputs read_build_inputs(const std::filesystem::path& lab_folder);
 // The names of every file in the folder, whatever its kind: what `__has_include` can ask about.

@@ -31,6 +31,9 @@ struct LabRun {
     double median_ms = 0;
     double reported_ms = 0;  // the lab's own claim of its frame time: shown in benchmarks, never graded
     std::string renderer;    // GL_RENDERER as the lab's report gives it (what it ran on, in words): shown, never graded
+    // Rendered by a served process that had answered earlier cases (lab_serve.h): what those left (a `static`, a file)
+    // could have changed it, so a check that fails on it is rendered again alone (grader/src/grade/grade.cpp).
+    bool after_other_cases = false;
 };
 
 class ServedLab;
@@ -52,6 +55,12 @@ struct LabRunner {
                   const std::vector<std::vector<std::string>>* challenges = nullptr) const;
     // What the lab's process gets in its environment: GSV_ROOT where root is set.
     std::vector<std::string> environment() const;
+    // This runner with a process of its own for every render, as --one-process-per-case renders.
+    LabRunner alone() const {
+        LabRunner copy = *this;
+        copy.served = nullptr;
+        return copy;
+    }
 };
 
 double median(std::vector<double> values);  // 0 for none

@@ -23,6 +23,7 @@ LabRun ServedLab::render(const LabRunner& runner, const LabCases& lab, const Ren
     if (process_ && process_->busy_seconds() > 0.5 * std::chrono::duration<double>(limits.timeout).count()) process_.reset();
     const bool fresh = !process_ || !process_->running() || process_->answered() == 0;
     LabRun run = render_once(runner, lab, request, limits);
+    run.after_other_cases = !fresh;
     if (run.status == CaseStatus::Passed) return run;
     process_.reset();
     if (fresh || !could_be_earlier_cases(run)) return run;
