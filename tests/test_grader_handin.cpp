@@ -7,6 +7,7 @@
 #include "grader/src/run/lab_run.h"
 
 #include <chrono>
+#include <fstream>
 
 using namespace gsv;
 namespace fs = std::filesystem;
@@ -54,9 +55,11 @@ struct Fixture {
     test::TempDir dir;
     LabCases lab;
     GradeCase c;
-    Fixture() {
+    // `arrays`: the lab hands in arrays its cases check (lab 05's particles), as a case file with tolerance.arrays says.
+    explicit Fixture(bool arrays = false) {
         lab.lab = "lab99";
         lab.width = lab.height = lab.timing_width = lab.timing_height = 4;
+        if (arrays) lab.live_array_tolerance = ArrayTolerance{1e-4, 0};
         c.name = "case";
     }
     LabRun run(const std::string& body, const std::vector<std::vector<std::string>>* challenges = nullptr, double timeout_s = 20) {
@@ -105,7 +108,7 @@ TEST_CASE("hand-in: every way of breaking the rules is refused in one line, or i
     };
     const std::vector<Broken> broken{
         {"frames before the hand-in", "send(b'FRM1', struct.pack('<I', 0) + image); hand_in(); answer()", true, CaseStatus::Refused,
-         "handed in timed frame 0 before the grader asked for it"},
+         "handed in a timed frame before the grader asked for it"},
         {"frames before their challenge", "send(b'IMG1', image); send(b'RPT1', b'{}'); send(b'FRM1', struct.pack('<I', 0) + image); "
                                           "send(b'RDY1'); answer()", true, CaseStatus::Refused, "before the grader asked for it"},
         {"a frame for another challenge", "hand_in(); answer(1)", true, CaseStatus::Refused, "handed in timed frame 1 before"},
@@ -113,15 +116,15 @@ TEST_CASE("hand-in: every way of breaking the rules is refused in one line, or i
         {"an image larger than the case's", "os.write(fd, b'IMG1' + struct.pack('<I', 67108872)); time.sleep(30)", false, CaseStatus::Refused,
          "a IMG1 message of 67108872 bytes, over the 72 it may have"},
         {"an image of another size", "send(b'IMG1', struct.pack('<II', 2, 8) + bytes(64)); send(b'RPT1', b'{}')", false, CaseStatus::Passed, ""},
-        {"a size no message may have", "os.write(fd, b'ARR1' + struct.pack('<I', 0xfffffff0)); time.sleep(30)", false,
+        {"a size no message may have", "send(b'IMG1', image); os.write(fd, b'RPT1' + struct.pack('<I', 0xfffffff0)); time.sleep(30)", false,
          CaseStatus::Refused, "over the"},
         {"a message no lab sends", "send(b'CHL1', struct.pack('<I', 0))", false, CaseStatus::Refused, "a CHL1 message, which a lab does not send"},
         {"a tag that is no message", "send(b'/etc', b'passwd')", false, CaseStatus::Refused, "which is no message of the hand-in"},
         {"a report before its image", "send(b'RPT1', b'{}'); send(b'IMG1', image)", false, CaseStatus::Refused, "before its image"},
         {"a report that is not JSON", "send(b'IMG1', image); send(b'RPT1', b'{not json')", false, CaseStatus::Refused, "the lab's report:1:"},
         {"two images", "send(b'IMG1', image); send(b'IMG1', image)", false, CaseStatus::Refused, "a second image"},
-        {"an array twice", "a = struct.pack('<I', 1) + b'p' + struct.pack('<II', 1, 1) + bytes(4)\nsend(b'ARR1', a); send(b'ARR1', a)", false,
-         CaseStatus::Refused, "array 'p' twice"},
+        {"an array where the case checks none", "a = struct.pack('<I', 1) + b'p' + struct.pack('<II', 1, 1) + bytes(4)\nsend(b'ARR1', a)",
+         false, CaseStatus::Refused, "handed in an array, which this case does not ask for"},
         {"half a message, then exit 0", "os.write(fd, b'IMG1' + struct.pack('<I', 72) + bytes(10)); sys.exit(0)", false, CaseStatus::Refused,
          "ended in the middle of a message"},
         {"no hand-in at all", "sys.exit(0)", false, CaseStatus::MissingOutput, "handed in no image and report"},
@@ -138,4 +141,69 @@ TEST_CASE("hand-in: every way of breaking the rules is refused in one line, or i
         CHECK(run.detail.find('\n') == std::string::npos);
         CHECK(seconds < 5);  // killed on the spot, or at the 3 s limit, never waited on
     }
+}
+
+TEST_CASE("hand-in: arrays are taken strictly, and their total is refused as announced", "[grader][process]") {
+    Fixture f(true);
+    const std::string array_p = "struct.pack('<I', 1) + b'p' + struct.pack('<II', 1, 1) + bytes(4)";
+    const LabRun twice = f.run("a = " + array_p + "\nsend(b'ARR1', a); send(b'ARR1', a)", nullptr, 3);
+    CHECK(twice.status == CaseStatus::Refused);
+    CHECK(twice.detail.find("array 'p' twice") != std::string::npos);
+    const LabRun after = f.run("send(b'IMG1', image); send(b'RPT1', b'{}'); send(b'ARR1', " + array_p + ")", nullptr, 3);
+    CHECK(after.status == CaseStatus::Refused);
+    // Seventeen arrays: the seventeenth is refused from its header.
+    std::string many;
+    for (int i = 0; i < 17; ++i)
+        many += "send(b'ARR1', struct.pack('<I', 2) + b'a" + std::string(1, char('a' + i)) + "' + struct.pack('<II', 1, 1) + bytes(4))\n";
+    const LabRun seventeen = f.run(many + "hand_in()", nullptr, 3);
+    CHECK(seventeen.status == CaseStatus::Refused);
+    CHECK(seventeen.detail.find("more than 16 arrays") != std::string::npos);
+}
+
+namespace {
+
+// The grader's resident memory at its peak since `reset_peak_memory` (Linux: VmHWM, reset through clear_refs).
+long peak_memory_kib() {
+    std::ifstream status("/proc/self/status");
+    for (std::string line; std::getline(status, line);)
+        if (line.rfind("VmHWM:", 0) == 0) return std::stol(line.substr(6));
+    return -1;
+}
+void reset_peak_memory() { std::ofstream("/proc/self/clear_refs") << "5"; }
+long memory_now_kib() {
+    std::ifstream status("/proc/self/status");
+    for (std::string line; std::getline(status, line);)
+        if (line.rfind("VmRSS:", 0) == 0) return std::stol(line.substr(6));
+    return -1;
+}
+
+}  // namespace
+
+// Issue 39: ten arrays of 25 Mi floats (1000 MiB) were taken and the case passed, the grader at 1.18 GB for one case.
+TEST_CASE("hand-in: arrays over the 64 Mi floats a render may hand in are refused from the header; the grader's memory stays bounded",
+          "[grader][process]") {
+    Fixture f(true);
+    const std::string floats_25mi = "struct.pack('<I', 1) + bytes([97 + i]) + struct.pack('<II', 1, 25 << 20) + bytes(100 << 20)";
+    reset_peak_memory();
+    const long before = memory_now_kib();
+    const LabRun ten = f.run("for i in range(10): send(b'ARR1', " + floats_25mi + ")\nhand_in()", nullptr, 60);
+    const long grown_ten = peak_memory_kib() - before;
+    INFO(status_name(ten.status) << ": " << ten.detail << "; the grader's peak grew by " << grown_ten / 1024 << " MiB");
+    CHECK(ten.status == CaseStatus::Refused);
+    CHECK(ten.detail.find("announced arrays of") != std::string::npos);
+    CHECK(ten.detail.find("67108864 floats") != std::string::npos);
+    // The most a render may hand in, in one array: 64 Mi floats, taken; what the grader holds then is the bound.
+    reset_peak_memory();
+    const long before_one = memory_now_kib();
+    const LabRun most = f.run("i = 0\nsend(b'ARR1', struct.pack('<I', 1) + b'a' + struct.pack('<II', 1, 64 << 20) + bytes(256 << 20))\n"
+                              "hand_in()", nullptr, 60);
+    const long grown_most = peak_memory_kib() - before_one;
+    INFO(status_name(most.status) << ": " << most.detail << "; the grader's peak grew by " << grown_most / 1024 << " MiB");
+    CHECK(most.status == CaseStatus::Passed);
+    CHECK(most.arrays.size() == 1);
+    // grader/README.md states the bound: the floats taken (256 MiB) and the one message being read (at most as much).
+    CHECK(grown_ten < 600 * 1024);
+    CHECK(grown_most < 600 * 1024);
+    WARN("the grader's peak memory for one render: " << grown_ten / 1024 << " MiB refusing ten arrays of 25 Mi floats, "
+         << grown_most / 1024 << " MiB taking one of 64 Mi floats (the most a render may hand in)");
 }

@@ -249,7 +249,8 @@ std::string reads_record(const ReadFiles& reads) {
     return text;
 }
 
-// "" when each file the entry's build read is as it was; else which one changed.
+// "" when each file the entry's build read is as it was; else which one changed (a file of the lab's folder as the
+// student names it: labs/<folder>/<path>).
 std::string changed_since(const fs::path& at, const fs::path& lab_folder) {
     std::istringstream record(read_bytes(at / "reads"));
     for (std::string line; std::getline(record, line);) {
@@ -258,7 +259,7 @@ std::string changed_since(const fs::path& at, const fs::path& lab_folder) {
             std::error_code ec;
             const fs::path now = lab_folder / path;
             if (!fs::is_regular_file(fs::symlink_status(now, ec)) || read_bytes(now) != read_bytes(at / "read" / path))
-                return "labs/<lab>/" + path;
+                return "labs/" + lab_folder.filename().string() + "/" + path;
         } else if (line.rfind("elsewhere ", 0) == 0) {
             const auto space = line.find(' ', 10);
             if (space == std::string::npos) throw Error("the entry " + at.string() + "'s record of what its build read is damaged");
