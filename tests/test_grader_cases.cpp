@@ -69,6 +69,27 @@ TEST_CASE("draw: hidden cases expand, take their seed, and stay in range", "[gra
     CHECK(draw_settings(spec, draw)[3] == "v=0,1,-1");
 }
 
+TEST_CASE("draw: a whole number drawn in steps keeps off the values between them", "[grader][cases]") {
+    const Json spec = parse_json(R"({"odd": {"int": [1, 99], "step": 2}, "tens": {"int": [10, 55], "step": 10}})", "spec");
+    std::set<std::string> seen;
+    for (std::uint64_t seed = 1; seed <= 200; ++seed) {
+        SeededDraw draw(seed, "s");
+        const auto settings = draw_settings(spec, draw);
+        const long odd = std::stol(settings[0].substr(4)), tens = std::stol(settings[1].substr(5));
+        CHECK(odd % 2 == 1);
+        CHECK(odd >= 1);
+        CHECK(odd <= 99);
+        CHECK(tens % 10 == 0);
+        CHECK(tens >= 10);
+        CHECK(tens <= 50);
+        seen.insert(settings[1]);
+    }
+    CHECK(seen.size() == 5);  // 10, 20, 30, 40, 50: every step is drawn
+    const Json bad = parse_json(R"({"n": {"int": [1, 9], "step": 0.5}})", "spec");
+    SeededDraw draw(1, "s");
+    CHECK(test::gsv_error_message([&] { draw_settings(bad, draw); }).find("n.step needs a whole number >= 1") != std::string::npos);
+}
+
 TEST_CASE("cases: a draw that holds only where another setting has a value is kept only there", "[grader][cases]") {
     const Json spec = parse_json(R"({"field": {"choice": ["rotation", "double_gyre"]},
                                      "time": {"range": [0, 10], "when": "field=double_gyre|file"}, "n": {"int": [1, 1000]}})",

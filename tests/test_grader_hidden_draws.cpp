@@ -1,5 +1,5 @@
 // Every draw tests its TODO (issue 39): whatever the seed, a hidden case's drawn settings tell each classic mistake
-// it must fail (tests/mutants/<lab>.json, a mutant's "must_fail_hidden") from the reference. Over 51 seeds (1..50 and
+// it must fail (tests/mutants/<lab>.json, a mutant's "must_fail_hidden") from the reference. Over 50 seeds (1..49 and
 // 4711), each hidden case is drawn as grading draws it, the reference renders it and every mistake listed for it renders
 // it, each by one process that serves all the seeds' cases; each mistake must fail under the case's live tolerance
 // (its image, its arrays, the whole picture's place), as instructor grading judges a hidden case.
@@ -10,7 +10,6 @@
 #include "grader/src/judge/image_verdict.h"
 #include "grader/src/run/lab_serve.h"
 
-#include <fstream>
 #include <map>
 #include <set>
 
@@ -20,8 +19,7 @@ namespace {
 
 std::vector<std::uint64_t> seeds() {
     std::vector<std::uint64_t> list;
-    for (std::uint64_t s = 1; s <= 50; ++s) list.push_back(s);
-    if (const char* few = std::getenv("GSV_EXPLORE_SEEDS")) list.resize(std::stoul(few));
+    for (std::uint64_t s = 1; s <= 49; ++s) list.push_back(s);
     list.push_back(4711);  // the seed whose hidden L05-T4 cases drew no RK4 (issue 39)
     return list;
 }
@@ -137,7 +135,6 @@ void every_draw_tests_its_todo(const std::string& lab_id) {
     }
     INFO(lab_id << ": " << judged << " renders of " << mistakes.size() << " mistakes over " << seeds().size()
                 << " seeds; draws that let a mistake pass a hidden case it must fail:\n" << passed);
-    if (const char* out = std::getenv("GSV_EXPLORE_OUT")) std::ofstream(out, std::ios::app) << passed;
     CHECK(passed.empty());
 }
 

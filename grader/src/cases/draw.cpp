@@ -57,7 +57,12 @@ std::vector<std::string> draw_settings(const Json& spec, SeededDraw& draw, const
             value = format_number(draw.uniform(lo, hi), 4);
         } else if (how.contains("int")) {
             const auto [lo, hi] = bounds(how.array_at("int"), name + ".int");
-            value = std::to_string(draw.integer(static_cast<long>(lo), static_cast<long>(hi)));
+            // "step": every step-th whole number from the low end (2 from an odd one: the odd numbers).
+            const long step = how.contains("step") ? static_cast<long>(how.number_at("step")) : 1;
+            if (step < 1 || step != how.number_or("step", 1))
+                throw Error(how.source_name() + ": " + name + ".step needs a whole number >= 1");
+            const long first = static_cast<long>(lo), steps = (static_cast<long>(hi) - first) / step;
+            value = std::to_string(first + step * draw.integer(0, steps));
         } else if (how.contains("choice")) {
             const auto& choices = how.array_at("choice").as_array();
             if (choices.empty()) throw Error(how.source_name() + ": " + name + ".choice is empty");

@@ -24,7 +24,9 @@ private:
 
 // One "name=value" setting per member of `spec`, e.g.
 //   {"light_x": {"range": [-4, 4]}, "steps": {"int": [1, 8]}, "model": {"choice": ["sphere", "torus"]},
-//    "light_position": {"vec3": [[-4, 4], [-1, 4], [0.5, 4]]}}
+//    "light_position": {"vec3": [[-4, 4], [-1, 4], [0.5, 4]]}, "odd": {"int": [1, 99], "step": 2}}
+// ("step": every step-th whole number from the low end: a draw can keep off values where a mistake hides, such as a
+// count that is a multiple of a work-group size).
 // Throws gsv::Error naming the member when a spec is malformed.
 // A draw may hold only where another setting has one of some values ("when": "field=double_gyre|file"): it is
 // drawn all the same, so the rest of the stream does not depend on it, and kept only then. The other setting must be
