@@ -293,7 +293,7 @@ TEST_CASE("cases: an instructor's mistake stops grading in one line before any s
     CHECK(message.find('\n') == std::string::npos);
 }
 
-TEST_CASE("cases: a reference that fails to render ends grading with status 2, never a zero for the student", "[grader]") {
+TEST_CASE("cases: a reference that fails to render ends grading with status 3 (the kit's fault), never a zero for the student", "[grader]") {
     test::TempDir dir;
     dir.write("kit/grader/cases/lab99.json", R"({"lab": "lab99", "size": "4x4", "timeout_s": 20,
         "tolerance": {"live": {"max_channel_diff": 0, "max_differing_fraction": 0},
@@ -316,8 +316,8 @@ TEST_CASE("cases: a reference that fails to render ends grading with status 2, n
                                               "--allow-readable-kit", "--no-sandbox"},
                                              dir.path(), limits);
     INFO(graded.output);
-    CHECK(graded.exit_code == 2);
-    CHECK(graded.output.find("the reference failed on 1 checks") != std::string::npos);
+    CHECK(graded.exit_code == 3);
+    CHECK(graded.output.find("the kit's fault, not the student's, on 1 checks (marked 'reference failed'") != std::string::npos);
     CHECK(graded.output.find("reference failed") != std::string::npos);
 }
 

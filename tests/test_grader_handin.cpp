@@ -180,7 +180,7 @@ long memory_now_kib() {
 }  // namespace
 
 // Issue 39: ten arrays of 25 Mi floats (1000 MiB) were taken and the case passed, the grader at 1.18 GB for one case.
-TEST_CASE("hand-in: arrays over the 64 Mi floats a render may hand in are refused from the header; the grader's memory stays bounded",
+TEST_CASE("hand-in: arrays over the 64 Mi floats a render may hand in are refused from the header, the grader's memory bounded",
           "[grader][process]") {
     Fixture f(true);
     const std::string floats_25mi = "struct.pack('<I', 1) + bytes([97 + i]) + struct.pack('<II', 1, 25 << 20) + bytes(100 << 20)";

@@ -102,6 +102,8 @@ void every_draw_tests_its_todo(const std::string& lab_id) {
         ServedLab served(lab_id + "_solution");
         runner.served = &served;
         for (const GradeCase& c : drawn.cases) {
+            // Only the draws some mistake is held to (a C++ TODO's hidden case is the C++ mutation test's).
+            if (!caught_by.count(base_of[c.name])) continue;
             LabRun run = runner.render(lab_id + "_solution", drawn, c, limits);
             INFO(lab_id << ": the reference on " << c.name << ": " << run.detail);
             REQUIRE(run.status == CaseStatus::Passed);

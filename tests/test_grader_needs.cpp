@@ -107,7 +107,7 @@ TEST_CASE("needs: integrity and process statuses stand under a failing needed TO
     }
 }
 
-TEST_CASE("needs: a copied image in a needed TODO's case makes it a root; the copy is not hidden by it", "[unit]") {
+TEST_CASE("needs: a copied image in a needed TODO's case makes it a root, and the copy is not hidden by it", "[unit]") {
     const gsv::LabCases lab = lab02_like();
     // The copy is in T2's own case; T1 fails too. Before, the copy became "needs L02-T1 first".
     auto results = rows(lab, {{"rotation", CaseStatus::WrongImage}, {"both-ways", CaseStatus::Passed},

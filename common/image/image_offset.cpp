@@ -58,13 +58,16 @@ ImageOffset global_offset(const Image& actual, const Image& expected, int radius
     ImageOffset offset;
     if (actual.width != expected.width || actual.height != expected.height || radius < 1) return offset;
     if (expected.width < 2 * radius + 8 || expected.height < 2 * radius + 8) return offset;
-    // One ring more than reported: the parabola at the search's edge needs its neighbour.
+    // One ring more than searched, measured only where the parabola at the search's edge needs it; every shift over
+    // the same interior, so that they compare.
     const int search = radius + 1;
     const int side = 2 * search + 1;
-    std::vector<double> d(std::size_t(side) * side);
-    const auto at = [&](int sx, int sy) -> double& { return d[std::size_t(sy + search) * side + std::size_t(sx + search)]; };
-    for (int sy = -search; sy <= search; ++sy)
-        for (int sx = -search; sx <= search; ++sx) at(sx, sy) = mean_difference(actual, expected, sx, sy, search);
+    std::vector<double> d(std::size_t(side) * side, -1.0);
+    const auto at = [&](int sx, int sy) {
+        double& value = d[std::size_t(sy + search) * side + std::size_t(sx + search)];
+        if (value < 0) value = mean_difference(actual, expected, sx, sy, search);
+        return value;
+    };
     offset.unshifted = at(0, 0);
     int bx = 0, by = 0;
     for (int sy = -radius; sy <= radius; ++sy)

@@ -15,7 +15,7 @@
 #include "grader/src/golden/golden_update.h"
 #include "grader/src/grade/grade.h"
 #include "grader/src/grade/grade_exit.h"
-#include "grader/src/grade/kit_fault.h"
+#include "grader/src/run/kit_fault.h"
 #include "grader/src/grade/regrade.h"
 #include "grader/src/report/report.h"
 #include "grader/src/report/report_format.h"

@@ -5,7 +5,6 @@
 #include "common/core/error.h"
 #include "grader/src/cases/draw.h"
 #include "grader/src/golden/golden_renderers.h"
-#include "grader/src/grade/kit_fault.h"
 #include "grader/src/run/submission.h"
 
 #include <algorithm>
@@ -57,8 +56,6 @@ void GradingSession::set_up() {
 
     fs::path student_bin = bin, student_root = kit;
     if (!options.submission.empty()) {
-        // The kit's own faults before any student's build: every submission would fail them alike.
-        check_kit_for_submissions(kit, bin.parent_path());
         const fs::path work = out / "submission-build";
         student_root = work / "kit";
         student_bin = work / "build" / "bin";

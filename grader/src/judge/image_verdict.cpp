@@ -23,7 +23,8 @@ ImageDiff judge_image(const Image& actual, const Image& expected, const ImageTol
     r.image.diff_y1 = diff.diff_y1;
     // Where the whole picture sits: a neighbourhood forgives a point a rasterizer put a pixel off, never a picture
     // moved as a whole, and a wrong image that is only moved says so.
-    const ImageOffset offset = diff.size_mismatch || diff.max_channel_diff == 0 ? ImageOffset{} : global_offset(actual, expected);
+    // Not skipped where every pixel matched: within a neighbourhood a picture moved whole matches everywhere.
+    const ImageOffset offset = diff.size_mismatch || actual.rgba == expected.rgba ? ImageOffset{} : global_offset(actual, expected);
     r.image.offset_x = offset.dx;
     r.image.offset_y = offset.dy;
     if (offset.shifted()) {

@@ -533,13 +533,16 @@ std::string margins_table(const MarginMeasurement& m) {
         if (!one_budget) out << "    budget: " << c.budget << "\n";
     }
     // The whole picture's place: correct renders within half of what the grader refuses as a shifted picture.
+    // The same words whatever order the renders were measured or joined in: the largest, and of equals the first by name.
     double worst_offset = 0;
-    std::string worst_offset_what = "none measured";
-    for (const auto& r : m.renders)
-        if (r.kind != "mutant" && r.offset >= worst_offset) {
+    std::string worst_offset_what = "no correct render moved";
+    for (const auto& r : m.renders) {
+        const std::string what = r.lab + "/" + r.case_name + " on " + r.implementation;
+        if (r.kind != "mutant" && r.offset > 0 && (r.offset > worst_offset || (r.offset == worst_offset && what < worst_offset_what))) {
             worst_offset = r.offset;
-            worst_offset_what = r.lab + "/" + r.case_name + " on " + r.implementation;
+            worst_offset_what = what;
         }
+    }
     out << "\nthe whole picture's offset: the largest of a correct render " << fixed(worst_offset, 2) << " px (" << worst_offset_what
         << "); a share of the budget above is also the offset over the " << fixed(kMaxGlobalOffset, 2)
         << " px the grader refuses, so correct renders stay under " << fixed(kCorrectBar * kMaxGlobalOffset, 2) << " px\n";

@@ -1,6 +1,7 @@
 #include "grader/src/run/submission.h"
 
 #include "grader/src/run/build_reuse.h"
+#include "grader/src/run/kit_fault.h"
 #include "common/app/kit_layout.h"
 #include "common/core/error.h"
 #include "common/io/folder_tree.h"
@@ -220,8 +221,8 @@ SubmissionBuild build_submission(const fs::path& submission, const fs::path& kit
     const fs::path labs_dir = fs::is_directory(submission / "labs") ? submission / "labs" : submission;
     if (!fs::is_directory(labs_dir) || labs_dir.filename() != "labs")
         throw Error("submission '" + submission.string() + "' has no labs/ folder");
-    if (!fs::exists(kit_build / "gsv-targets.cmake"))
-        throw Error("'" + kit_build.string() + "' is not a configured kit build (no gsv-targets.cmake): build the kit first");
+    // The kit's own faults before any build: every submission would fail them alike (kit_fault.h).
+    check_kit_for_submissions(kit_root, kit_build);
     SubmissionBuild result;
     result.root = work_dir / "kit";
     result.bin_dir = work_dir / "build" / "bin";

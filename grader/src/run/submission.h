@@ -33,7 +33,8 @@ struct SubmissionBuild {
 // those of an earlier build kept in the build cache (`cache_dir`, by default <kit build>/grader-cache/builds; keyed by the kit build's
 // libraries and the inputs, holding a copy of the inputs that is compared byte for byte, never trusted by key),
 // that build's binary. A cache that cannot be read or written is one line in the build log; the lab is built.
-// Throws gsv::Error when the submission has no labs/ folder or the kit build is not configured.
+// Throws gsv::Error when the submission has no labs/ folder (the student's), then KitFault (run/kit_fault.h) when the
+// kit build is not configured, was made from another checkout than `kit_root`, or lacks a file every build reads.
 
 SubmissionBuild build_submission(const std::filesystem::path& submission, const std::filesystem::path& kit_root,
                                  const std::filesystem::path& kit_build, const std::vector<std::string>& labs,

@@ -1,7 +1,7 @@
-#include "grader/src/grade/kit_fault.h"
+#include "grader/src/run/kit_fault.h"
 
 #include "common/app/kit_layout.h"
-#include "grader/src/run/submission.h"
+#include "grader/src/run/build_reuse.h"
 
 namespace fs = std::filesystem;
 
