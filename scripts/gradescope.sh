@@ -6,7 +6,7 @@
 # and run_autograder for each submission, which grades /autograder/submission into /autograder/results/results.json.
 #
 #   scripts/kit gradescope DEST.zip [--seed N] [--labs lab01,lab02] [--no-timing] [--allow-readable-kit]
-#                                   [--include-untracked]
+#                                   [--diagnose off|public|all] [--include-untracked]
 #
 # --seed N     the seed of the hidden cases, baked into the zip (one seed for the whole class); default: a fresh one,
 #              printed. The zip then holds it: share it as you would the hidden cases.
@@ -15,19 +15,23 @@
 # --allow-readable-kit  where Gradescope's container refuses unshare, grade the hidden cases anyway with the kit
 #              readable by student code (see "Where the walls cannot go up" in grader/README.md); without it such
 #              a container gives every submission a results.json saying it could not be graded, and why.
+# --diagnose   which failing cases are compared with the kit's known mistakes (tests/mutants/, packed into the zip)
+#              to tell the student the mistake they made: public (default: never a hidden case), off (exams) or all.
 # --include-untracked   in a git checkout, also the untracked files git does not ignore (default: tracked only).
 set -euo pipefail
 die() { echo "gradescope: $*" >&2; exit 2; }
-usage() { die "usage: scripts/kit gradescope DEST.zip [--seed N] [--labs lab01,lab02] [--no-timing] [--allow-readable-kit] [--include-untracked]"; }
+usage() { die "usage: scripts/kit gradescope DEST.zip [--seed N] [--labs lab01,lab02] [--no-timing] [--allow-readable-kit] [--diagnose off|public|all] [--include-untracked]"; }
 root=$(cd "$(dirname "$0")/.." && pwd)
 
-dest="" seed="" labs="" readable=0 include_untracked=0 timing=1
+dest="" seed="" labs="" readable=0 include_untracked=0 timing=1 diagnose=public
 while [ $# -gt 0 ]; do
   case "$1" in
     --seed) [ $# -ge 2 ] || usage; seed=$2; shift 2 ;;
     --labs) [ $# -ge 2 ] || usage; labs=$2; shift 2 ;;
     --allow-readable-kit) readable=1; shift ;;
     --no-timing) timing=0; shift ;;
+    --diagnose) [ $# -ge 2 ] || usage; diagnose=$2; shift 2
+      case "$diagnose" in off|public|all) ;; *) die "--diagnose takes off, public or all, got '$diagnose'" ;; esac ;;
     --include-untracked) include_untracked=1; shift ;;
     -h|--help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;;
     -*) die "unknown option '$1' (see --help)" ;;
@@ -53,9 +57,11 @@ if [ -z "$seed" ]; then
   echo "gradescope: drew the seed $seed (baked into the zip)"
 fi
 
-# The file list: what git tracks (or every file outside git), less what the autograder has no use for.
+# The file list: what git tracks (or every file outside git), less what the autograder has no use for. Of tests/ it
+# keeps the known mistakes (tests/mutants/), which the diagnosis renders; the zip is the instructor's, never a student's.
 excluded() {
   case "$1" in
+    tests/mutants/*.json) return 1 ;;
     slides/*|tests/*|.github/*|build*/*|grade-results/*|sweep-*/*|.git/*|*/.git/*) return 0 ;;
   esac
   return 1
@@ -90,6 +96,7 @@ options="--seed $seed"
 [ -z "$labs" ] || options="$options --labs $labs"
 [ $readable -eq 0 ] || options="$options --allow-readable-kit"
 [ $timing -eq 1 ] || options="$options --no-timing"
+options="$options --diagnose $diagnose"
 cat >"$stage/kit/run_autograder" <<EOF2
 #!/usr/bin/env bash
 # Gradescope runs this for each submission: /autograder/submission holds the student's files (their repository,

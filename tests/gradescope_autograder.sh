@@ -34,9 +34,11 @@ for needed in ("scripts/kit", "grader/cases/lab01.json", "grader/hidden/lab01.js
     assert needed in names, f"no {needed}"
 assert any(n.startswith("solutions/") for n in names), "no solutions/"
 for left_out in ("slides/", "tests/", ".github/", "build/", ".git/"):
-    assert not any(n.startswith(left_out) for n in names), f"{left_out} is in the zip"
+    # Of tests/, only the known mistakes the diagnosis renders (tests/mutants/<lab>.json).
+    assert not any(n.startswith(left_out) and not (n.startswith("tests/mutants/") and n.endswith(".json")) for n in names), f"{left_out} is in the zip"
+assert "tests/mutants/lab01.json" in names, "no known mistakes (tests/mutants/) in the zip"
 PY
-for bad in "--seed x" "--labs lab99" "--frobnicate"; do
+for bad in "--seed x" "--labs lab99" "--frobnicate" "--diagnose some"; do
   # shellcheck disable=SC2086
   if "$root/scripts/kit" gradescope "$tmp/bad.zip" $bad >"$tmp/log" 2>&1; then fail "gradescope $bad was accepted"; fi
   [ "$(wc -l <"$tmp/log")" = 1 ] || fail "gradescope $bad: not one line"
@@ -94,6 +96,9 @@ solution, s_total, s_top = check("solution")
 starter, t_total, t_top = check("starter")
 assert s_top > 0 and s_total == s_top, f"the solution got {s_total} / {s_top}"
 assert t_top == s_top and t_total < t_top / 4, f"the starter got {t_total} / {t_top}"
+# The diagnosis (--diagnose public): the starter's TODOs not started, and never a hidden case's name.
+assert "not started: " in starter["output"] and "L01-T1" in starter["output"], starter["output"]
+assert "hidden-" not in starter["output"] and "hidden-" not in solution["output"], starter["output"]
 hidden = [t for t in solution["tests"] if t.get("visibility") == "after_due_date"]
 assert len(hidden) >= 3, f"{len(hidden)} hidden cases"
 # GitHub Classroom points from the same results: per lab, the grader's points.

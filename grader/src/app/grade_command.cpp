@@ -17,7 +17,7 @@ const char* const kGradeUsage =
     "                 [--public-only] [--profile core|es]"
     " [--timeout S] [--fail-under F] [--update-goldens] [--allow-readable-kit] [--no-namespaces]\n"
     "                 [--no-sandbox] [--build-all] [--fresh-references] [--grader-cache DIR] [--regrade-only changed]\n"
-    "                 [--one-process-per-case] [--quiet] [--help] [--version]\n"
+    "                 [--one-process-per-case] [--diagnose off|public|all] [--quiet] [--help] [--version]\n"
     "  --kit DIR         the kit (cases, goldens, hidden cases, solutions); default: the one this was built from\n"
     "  --bin DIR         the kit's built labs and <lab>_solution; default: this build's bin/\n"
     "  --submission DIR  a copy of the kit whose labs/ hold a student's work: built against this kit, then graded\n"
@@ -55,11 +55,15 @@ const char* const kGradeUsage =
     "  --one-process-per-case  start a lab process for each case, rather than one per lab that renders the lab's cases\n"
     "                    one after another, each from a fresh lab and GL context (the default, but for --cases); the\n"
     "                    grades are the same\n"
+    "  --diagnose WHICH  compare failing cases with the kit's known mistakes' pictures and name the mistake that explains\n"
+    "                    them: off (exams), public (what a student may be told) or all (hidden cases too: the\n"
+    "                    instructor's own reports); default public with --self-check, all otherwise\n"
     "       gsv-grade merge OUT SHARD_OUT...  the --out folders of a batch's shards joined into OUT (new or empty):\n"
     "                    the per-submission folders, class.csv, class.txt, batch.json; refused when the shards were\n"
     "                    graded with other seeds, kits, labs or options, overlap, or one is missing\n"
     "       gsv-grade shard K/N ROSTER       the names of shard K of N of a roster file, one a line (what to fetch)\n"
-    "exit status: 0 graded (whatever the score), 1 under --fail-under, 2 usage or internal error\n";
+    "exit status: 0 graded (whatever the score), 1 under --fail-under, 2 usage or internal error, 3 the kit's fault\n"
+    "                    (its set-up, not a student's files: nothing graded; one line says what to fix)\n";
 
 std::uint64_t parse_seed(const std::string& text) {
     std::size_t used = 0;
@@ -149,6 +153,14 @@ GradeAction read_grade_command(int argc, char** argv, GradeCommand& command) {
         else if (a == "--profile") {
             options.profile = parse_profile(value());
             pass_through.insert(pass_through.end(), {a, profile_name(options.profile)});
+        }
+        else if (a == "--diagnose") {
+            const std::string what = value();
+            if (what == "off") options.diagnose = DiagnoseCases::Off;
+            else if (what == "public") options.diagnose = DiagnoseCases::Public;
+            else if (what == "all") options.diagnose = DiagnoseCases::All;
+            else throw Error("--diagnose takes off, public or all, got '" + what + "'");
+            pass_through.insert(pass_through.end(), {a, what});
         }
         else if (a == "--fail-under") command.fail_under = number(0, 1);
         else if (a == "--quiet") command.quiet = true;

@@ -4,6 +4,8 @@
 #include "common/core/error.h"
 #include "common/image/image.h"
 #include "common/io/folder_tree.h"
+#include "grader/src/grade/diagnose_lab.h"
+#include "grader/src/grade/mistake_pictures.h"
 #include "grader/src/grade/session.h"
 #include "grader/src/judge/data_check.h"
 #include "grader/src/judge/image_check.h"
@@ -53,7 +55,7 @@ CaseResult judge_render(GradingSession& s, CopySearch& copies, const LabCases& l
 // arrays, then, where the case is timed and its image passed, the frame time. Each check is a row. A check that fails
 // on what a served process drew after other cases is judged again on a render of the case alone (below).
 void grade_case(GradingSession& s, CopySearch& copies, const LabCases& lab, const GradeCase& c, bool live,
-                const LabBuild* build) {
+                const LabBuild* build, std::vector<FailedRender>& failed) {
     CaseResult r = s.result_for(lab, c);
     r.reference = live ? "live" : "golden";
     const bool timed = live && s.options.timing && c.timing.points > 0;
@@ -121,18 +123,25 @@ void grade_case(GradingSession& s, CopySearch& copies, const LabCases& lab, cons
     write_png(dir / "expected.png", expected);
     r.expected_png = fs::relative(dir / "expected.png", s.out).generic_string();
     CaseResult judged = judge_render(s, copies, lab, c, live, r, student, s.student, expected, reference);
+    const LabRun* judged_on = &student;
     // Served equals alone: a check that fails on a render made after other cases in the same process is judged on the
     // case rendered again in a process of its own, as --one-process-per-case renders it; where that passes, the row
     // says the lab kept something between cases. Not for a lab whose C++ is the kit's own (its starter's, or the
     // solution's), which the kit's tests prove keeps nothing: only its GLSL is the student's, and a GL context is new
     // for every case.
+    std::optional<LabRun> failed_alone;
     const bool alone_needed = judged.status != CaseStatus::Passed && student.after_other_cases && !s.cpp_is_the_kits(lab.lab);
     if (alone_needed) {
         const LabRunner alone = s.student.alone();
         const LabRun again = alone.render(lab.lab, lab, c, s.limits(lab, true));
         judged = judge_render(s, copies, lab, c, live, r, again, alone, expected, reference);
         if (judged.status == CaseStatus::Passed) judged.detail += kPassedOnlyAlone;
+        failed_alone = again;
+        judged_on = &*failed_alone;
     }
+    // A wrong picture or wrong numbers, kept for the diagnosis after the lab's last case.
+    if (is_diagnosable(judged.status) && diagnoses(s, c))
+        failed.push_back({s.report.results.size(), &c, *judged_on, {expected, reference, live}});
     s.record(judged);
     const CaseResult image_row = s.report.results.back();
     if (!timed) return;
@@ -164,25 +173,40 @@ GradeReport grade(const GradeOptions& options, const std::function<void(const Gr
     GradingSession s(options, progress, RunPurpose::Grade);
     s.set_up();
     CopySearch copies(s.kit, s.student_kit());
+    MistakePictures mistake_pictures(s);
     for (std::size_t i = 0; i < s.labs.size(); ++i) {
         const LabCases& lab = s.labs[i];
         const LabBuild* build = s.build_of(lab.lab);
         const std::size_t first = s.report.results.size();
-        const ServedWhileGrading served(s, lab);
-        for (const auto& c : lab.cases) {
-            try {
-                grade_case(s, copies, lab, c, s.live[i], build);
-            } catch (const std::exception& e) {
-                // One case's trouble never stops the rest.
-                CaseResult r = s.result_for(lab, c);
-                r.status = CaseStatus::Error;
-                r.detail = std::string("grader: ") + e.what();
-                s.record(r);
+        std::vector<FailedRender> failed;
+        {
+            const ServedWhileGrading served(s, lab);
+            for (const auto& c : lab.cases) {
+                try {
+                    grade_case(s, copies, lab, c, s.live[i], build, failed);
+                } catch (const std::exception& e) {
+                    // One case's trouble never stops the rest.
+                    CaseResult r = s.result_for(lab, c);
+                    r.status = CaseStatus::Error;
+                    r.detail = std::string("grader: ") + e.what();
+                    s.record(r);
+                }
             }
+        }
+        // After the student's processes for the lab have ended: the mistakes' kits hold answers.
+        try {
+            diagnose_lab(s, mistake_pictures, lab, first, failed);
+        } catch (const std::exception& e) {
+            s.report.diagnosis_note += std::string(s.report.diagnosis_note.empty() ? "" : "; ") + lab.lab + ": " + e.what();
         }
         blame_needed_todos(lab, s.report.results, first);
     }
-    return s.finish();
+    GradeReport report = s.finish();
+    if (mistake_pictures.looked_up() > 0)
+        report.references += std::string(report.references.empty() ? "" : "; ") + "known mistakes' pictures: " +
+                             std::to_string(mistake_pictures.rendered()) + " rendered, " +
+                             std::to_string(mistake_pictures.looked_up() - mistake_pictures.rendered()) + " kept from earlier";
+    return report;
 }
 
 }  // namespace gsv

@@ -32,6 +32,8 @@ enum class LabProcesses {
     PerCase,  // --one-process-per-case
 };
 
+enum class DiagnoseCases { Default, Off, Public, All };
+
 struct GradeOptions {
     std::filesystem::path kit_root;     // grader/cases, golden, hidden; solutions/
     std::filesystem::path bin_dir;      // the kit's build: <lab>_solution, and <lab> when no submission is given
@@ -71,6 +73,10 @@ struct GradeOptions {
     // The grades are the same either way (tests/test_grader_serve.cpp); one process per lab is a fraction of the time.
     // A student's lab is served only behind the allow-list walls, whose sandbox can stop it between its cases.
     LabProcesses lab_processes = LabProcesses::Default;
+    // Which failing cases are compared with the kit's known mistakes (grader/src/diagnose/diagnosis.h) so the report can
+    // name the mistake: none (exams), the public ones (what a student may be told) or all (the instructor's own
+    // reports). Default: public in a self-check, all in instructor grading.
+    DiagnoseCases diagnose = DiagnoseCases::Default;
 };
 
 // What a row's detail gains where a check failed on a render made after other cases in the same process and passed on

@@ -87,7 +87,7 @@ std::string run_options(const GradeOptions& o, std::uint64_t seed) {
                        // How a grade is made changes nothing a student did, but a grade made another way is not the one
                        // recorded: every lab built (--build-all), a process per case, the ES version.
                        " build-all " + std::to_string(!o.reuse_builds) + " processes " +
-                       std::to_string(static_cast<int>(o.lab_processes)) + " es-at-least " + (o.es_at_least ? o.es_at_least->str() : "-") +
+                       std::to_string(static_cast<int>(o.lab_processes)) + " diagnose " + std::to_string(static_cast<int>(o.diagnose)) + " es-at-least " + (o.es_at_least ? o.es_at_least->str() : "-") +
                        " cases";
     for (const auto& c : o.cases) text += " " + c;
     return text;
@@ -136,7 +136,8 @@ LabInputs lab_inputs(const GradeOptions& options, const std::vector<std::string>
         Fnv1a hash = shared;
         const std::string folder = cmake_cache_value(kit_build, "GSV_LAB_DIR_" + lab);
         hash.add("lab " + lab + " in " + folder);
-        for (const fs::path& part : {kit.case_file(lab), kit.hidden_case_file(lab), kit.golden_dir(lab),
+        // The lab's known mistakes too: the diagnosis puts a failure a mistake explains on the mistake's TODO.
+        for (const fs::path& part : {kit.case_file(lab), kit.hidden_case_file(lab), kit.golden_dir(lab), kit.tests() / "mutants" / (lab + ".json"),
                                      folder.empty() ? kit.solutions() : kit.solutions() / folder, bin / lab, bin / (lab + "_solution")}) {
             hash.add(part.lexically_relative(options.kit_root).generic_string());
             add_tree(hash, part);
@@ -227,6 +228,11 @@ GradeReport merge_regraded(const GradeReport& earlier, const GradeReport& fresh,
         for (const LabBuild& b : from.builds)
             if (b.lab == lab) merged.builds.push_back(b);
     }
+    // A kept lab's diagnosis is the earlier run's, a regraded one's this run's.
+    merged.diagnoses.clear();
+    for (const std::string& lab : labs)
+        for (const LabDiagnosis& d : (kept(lab) ? earlier : fresh).diagnoses)
+            if (d.lab == lab) merged.diagnoses.push_back(d);
     // What only the earlier run saw of a kept lab: its goldens' renderer.
     for (const auto& [lab, renderer] : earlier.golden_renderers)
         if (kept(lab)) merged.golden_renderers[lab] = renderer;

@@ -46,6 +46,10 @@ void GradingSession::set_up() {
     load_labs();
     const bool any_live = std::find(live.begin(), live.end(), true) != live.end();
     report.mode = purpose_ == RunPurpose::UpdateGoldens ? "update goldens" : any_live ? "instructor" : "self-check";
+    diagnose = purpose_ == RunPurpose::UpdateGoldens ? DiagnoseCases::Off
+               : options.diagnose != DiagnoseCases::Default ? options.diagnose
+               : any_live ? DiagnoseCases::All : DiagnoseCases::Public;
+    report.diagnose = diagnose == DiagnoseCases::Off ? "off" : diagnose == DiagnoseCases::Public ? "public" : "all";
     report.profile = profile_name(options.profile);
     if (purpose_ == RunPurpose::Grade) {
         const auto renderers = read_golden_renderers(KitLayout{kit}.golden_renderers());
@@ -93,7 +97,8 @@ void GradingSession::set_up() {
     student = LabRunner{student_bin, own_labs ? fs::path() : student_root, true, options.profile};
     reference = LabRunner{bin, "", false, options.profile};
     // Live references kept across runs, but only where student code cannot write them: behind the allow-list.
-    if (purpose_ == RunPurpose::Grade && any_live) {
+    // The known mistakes' pictures (diagnose/) are kept there too.
+    if (purpose_ == RunPurpose::Grade && (any_live || diagnose != DiagnoseCases::Off)) {
         if (options.sandbox && support_.allow_list()) {
             try {
                 reference_context_ = reference_context(kit);
@@ -110,7 +115,7 @@ void GradingSession::set_up() {
 
 GradeReport GradingSession::finish() {
     if (reference_store_) {
-        report.references = std::to_string(references_rendered_) + " rendered, " + std::to_string(reference_store_->hits()) +
+        report.references = std::to_string(references_rendered_) + " rendered, " + std::to_string(reference_store_->hits() - mistake_store_hits) +
                             " from the store (" + reference_store_->folder().string() + ")" +
                             (options.stored_references ? "" : " (--fresh-references: none read)");
         if (!reference_store_->problem().empty()) report.references += "; " + reference_store_->problem();

@@ -52,6 +52,13 @@ public:
     // where the options choose it and, for the student, the allow-list walls are up; ended by end_serving.
     void serve(const LabCases& lab);
     void end_serving();
+    // Where the allow-list walls are up: student code cannot read what the grader keeps outside its own folder (the
+    // reference store, the known mistakes' edited solutions).
+    bool walls_up() const { return options.sandbox && support_.allow_list(); }
+    // The store of live references, where this run keeps one; null otherwise.
+    ReferenceStore* reference_store() { return reference_store_ ? &*reference_store_ : nullptr; }
+    // What a reference render of the case depends on: its key in the store.
+    std::string reference_key(const LabCases& lab, const GradeCase& c);
 
     const GradeOptions& options;
     const std::filesystem::path out, kit, bin;
@@ -59,6 +66,8 @@ public:
     std::vector<LabCases> labs;
     std::vector<bool> live;  // per lab: against its reference rendered in this run, else the committed goldens
     LabRunner student, reference;
+    DiagnoseCases diagnose = DiagnoseCases::Off;  // the options' choice, its default resolved for this run
+    int mistake_store_hits = 0;  // of the store's hits, the known mistakes' pictures (grade/mistake_pictures.h)
 
 private:
     // Which labs and cases the options choose, the hidden ones drawn (case_selection.cpp).
@@ -84,7 +93,6 @@ private:
     std::string reference_context_;
     std::map<std::string, std::string> solution_fingerprints_;
     int references_rendered_ = 0;
-    std::string reference_key(const LabCases& lab, const GradeCase& c);
     int total_ = 0;
     std::map<std::string, bool> kit_cpp_;  // cpp_is_the_kits, worked out once per lab at set-up
     // Last: their processes end before the walls (policy_, support_) and the uid lease they run under go.

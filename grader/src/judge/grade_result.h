@@ -99,6 +99,31 @@ struct CaseResult {
     TimingCheck timing;
     // Relative to the output folder; empty when there is none.
     std::string actual_png, expected_png, diff_png;
+    // A failure a known mistake of the kit explains (grader/src/diagnose/diagnosis.h): what it says to the student, its
+    // TODO (where the failure is put, whatever TODO the case carries), the part of the lab's sheet that teaches it, and
+    // its picture of this case (relative to the output folder). Empty where none explains it or none was looked for;
+    // only mistake_todo where the TODO is not started (its picture is the starter's, though the starter draws no magenta).
+    std::string mistake, mistake_todo, mistake_sheet, mistake_png;
+};
+
+// A known mistake that explains some of a lab's failing cases. `names` are the kit's own names of it, for the instructor
+// (the mistakes whose pictures are the same on every failing case: twins); the student sees `says`.
+struct MistakeFound {
+    std::string todo, says, sheet;
+    std::vector<std::string> names;
+    std::vector<std::string> cases;  // the failing cases it explains, none of them explained by a mistake named before it
+    bool with_earlier = false;       // it explains them made together with the mistakes named before it
+};
+
+// What the failing cases of one lab come down to: the fewest known mistakes that explain the most of them, in order,
+// and those none explains.
+struct LabDiagnosis {
+    std::string lab;
+    std::vector<std::string> failing;      // the failing cases looked at (a wrong picture or wrong numbers)
+    std::vector<MistakeFound> found;
+    std::vector<std::string> unexplained;  // failing cases no known mistake explains
+    std::vector<std::string> not_started;  // TODOs whose cases show the starter's not-done colour
+    std::string compare;                   // the command that compares an unexplained public case with the reference
 };
 
 struct LabBuild {
@@ -135,6 +160,12 @@ struct GradeReport {
     // --regrade-only changed (grader/src/grade/regrade.h): the labs graded in this run, and those whose rows were kept
     // from the last run in the same --out because nothing they depend on changed. Both empty in a plain run.
     std::vector<std::string> regraded, kept;
+    // --diagnose: which failing cases were compared with the known mistakes' pictures ("off", "public" or "all"), and
+    // what was found, by lab (only labs with a failing case looked at); `diagnosis_note` says why none could be looked
+    // at where the run could not (no known mistakes in this kit, no solutions built, walls down).
+    std::string diagnose = "off";
+    std::vector<LabDiagnosis> diagnoses;
+    std::string diagnosis_note;
 
     double score() const;
     double max_score() const;

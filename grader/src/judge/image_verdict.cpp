@@ -3,9 +3,33 @@
 #include "common/core/not_done.h"
 #include "common/image/image_offset.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 namespace gsv {
+
+bool image_passes(const Image& actual, const Image& expected, const ImageTolerance& tolerance) {
+    if (actual.width != expected.width || actual.height != expected.height) return false;
+    if (actual.rgba == expected.rgba) return true;
+    const long total = static_cast<long>(actual.width) * actual.height;
+    const double fraction = std::max(0.0, tolerance.max_differing_fraction);
+    const double allowed = std::floor(fraction * double(total) * (1.0 + 1e-12));  // as ImageDiff::within counts
+    long over = 0;
+    if (tolerance.neighbourhood <= 0) {
+        // Each pixel at its own place: stop at the first pixel over the budget.
+        for (std::size_t i = 0; i < actual.rgba.size(); i += 4) {
+            int d = 0;
+            for (int c = 0; c < 4; ++c) d = std::max(d, std::abs(int(actual.rgba[i + c]) - int(expected.rgba[i + c])));
+            if (d > tolerance.max_channel_diff && double(++over) > allowed) return false;
+        }
+    } else {
+        for (const std::uint8_t d : matched_differences(actual, expected, tolerance.neighbourhood))
+            if (d > tolerance.max_channel_diff && double(++over) > allowed) return false;
+    }
+    return !global_offset(actual, expected).shifted();
+}
 
 ImageDiff judge_image(const Image& actual, const Image& expected, const ImageTolerance& tolerance, const GradeCase& c,
                       CaseResult& r) {

@@ -12,6 +12,10 @@ namespace gsv {
 // Compares `actual` with `expected` under `tolerance` and fills r.status (Passed, NotDone, BlankImage or WrongImage),
 // r.detail, r.points (the case's on a pass) and r.image. Whether a wrong image is another case's golden image copied
 // is the grader's question (it can look in the submission), asked after this where it has the means.
+// Whether judge_image would pass `actual` against `expected`: within the tolerance and not moved as a whole. Cheaper
+// (no SSIM, no PSNR; the offset only of a picture within the tolerance), for the many comparisons of a diagnosis.
+bool image_passes(const Image& actual, const Image& expected, const ImageTolerance& tolerance);
+
 ImageDiff judge_image(const Image& actual, const Image& expected, const ImageTolerance& tolerance, const GradeCase& c,
                       CaseResult& r);
 

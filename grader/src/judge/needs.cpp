@@ -33,9 +33,15 @@ void blame_needed_todos(const LabCases& lab, std::vector<CaseResult>& results, s
     // Each TODO's failing cases (image rows), with the statuses they came out with, before any is relabelled.
     std::map<std::string, std::vector<const GradeCase*>> failing;
     std::map<std::string, std::string> first_failing;  // TODO -> the name of its first failing case
+    std::set<std::string> diagnosed;  // TODOs a known mistake's picture puts a failure on: failing for their own reason
     for (std::size_t i = first; i < results.size(); ++i) {
         const CaseResult& r = results[i];
         if (r.kind != "image" || r.status == CaseStatus::Passed || is_kit_fault(r.status)) continue;
+        if (!r.mistake_todo.empty()) {
+            diagnosed.insert(r.mistake_todo);
+            if (!first_failing.count(r.mistake_todo)) first_failing[r.mistake_todo] = r.name;
+            if (r.mistake_todo != r.todo) continue;
+        }
         if (!first_failing.count(r.todo)) first_failing[r.todo] = r.name;
         if (const GradeCase* c = case_named(lab, r.name)) failing[r.todo].push_back(c);
     }
@@ -49,7 +55,7 @@ void blame_needed_todos(const LabCases& lab, std::vector<CaseResult>& results, s
     };
     // Roots: TODOs with a failing case that no failing need explains (a failing TODO whose cases are not all in the
     // case file, such as a build error's rows, is a root too: nothing explains it).
-    std::set<std::string> roots;
+    std::set<std::string> roots = diagnosed;
     for (const auto& [todo, name] : first_failing) {
         const auto it = failing.find(todo);
         if (it == failing.end() || std::any_of(it->second.begin(), it->second.end(), [&](const GradeCase* c) { return failing_needs(*c).empty(); }))
@@ -70,6 +76,13 @@ void blame_needed_todos(const LabCases& lab, std::vector<CaseResult>& results, s
     for (std::size_t i = first; i < results.size(); ++i) {
         CaseResult& r = results[i];
         if (r.status == CaseStatus::Passed || r.status == CaseStatus::BuildError || is_kit_fault(r.status)) continue;
+        // A failure a known mistake explains is that mistake's TODO's, whatever TODO the case carries.
+        if (!r.mistake_todo.empty()) {
+            r.detail = (r.mistake.empty() ? r.mistake_todo + " is not started (its part is the starter's), which explains it"
+                                          : "a known mistake in " + r.mistake_todo + " explains it: " + r.mistake) +
+                       "; here: " + r.detail;
+            continue;
+        }
         const GradeCase* c = case_named(lab, r.name);
         if (!c) continue;
         for (const auto& needed : failing_needs(*c)) {

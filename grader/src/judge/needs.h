@@ -19,7 +19,8 @@ bool is_quality_status(CaseStatus status);
 // circle): a quality status becomes NeedsFirst, "needs L02-T1 first (its case 'rotation' fails); here: ...", and any
 // other status stands with the need added to its detail. Where the need leads to no root (TODOs that need each other
 // and fail only for each other), the case keeps its own status. Passes, build errors and the kit's faults stay as they
-// are.
+// are. A failure a known mistake explains (CaseResult::mistake_todo, grader/src/diagnose/) is put on the mistake's TODO,
+// which is then a root: its status stands and its detail names the mistake.
 void blame_needed_todos(const LabCases& lab, std::vector<CaseResult>& results, std::size_t first);
 
 }  // namespace gsv

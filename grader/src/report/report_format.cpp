@@ -232,4 +232,63 @@ const LabBuild* find_build(const GradeReport& report, const std::string& lab) {
     return nullptr;
 }
 
+std::vector<std::string> diagnosis_lines(const LabDiagnosis& d) {
+    std::vector<std::string> lines;
+    const auto quoted_list = [](const std::vector<std::string>& names) {
+        std::string text;
+        for (std::size_t i = 0; i < names.size(); ++i)
+            text += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + ("'" + names[i] + "'");
+        return text;
+    };
+    if (!d.found.empty()) {
+        std::size_t explained = 0;
+        for (const auto& f : d.found) explained += f.cases.size();
+        const std::string of = std::to_string(explained) + " of your " + std::to_string(d.failing.size()) + " failing case" +
+                               (d.failing.size() == 1 ? "" : "s");
+        lines.push_back(d.found.size() == 1 ? "one known mistake explains " + of + ":"
+                                            : std::to_string(d.found.size()) + " known mistakes explain " + of + ":");
+        for (const auto& f : d.found) {
+            std::string line = "  " + f.todo + ": " + f.says + " (sheet: " + f.sheet + ")";
+            if (d.found.size() > 1) line += std::string(f.with_earlier ? "; with the mistakes above, " : "; ") + "cases " + quoted_list(f.cases);
+            lines.push_back(line);
+        }
+    }
+    if (!d.unexplained.empty()) {
+        std::string line = "no known mistake matches " + quoted_list(d.unexplained);
+        if (!d.compare.empty()) line += "; compare yours with the reference: " + d.compare;
+        lines.push_back(line);
+    }
+    if (!d.not_started.empty()) {
+        std::string todos;
+        for (const auto& t : d.not_started) todos += (todos.empty() ? "" : ", ") + t;
+        lines.push_back("not started: " + todos);
+    }
+    return lines;
+}
+
+LabDiagnosis student_diagnosis(const LabDiagnosis& d, const GradeReport& report) {
+    const auto is_public = [&](const std::string& name) {
+        return std::any_of(report.results.begin(), report.results.end(),
+                           [&](const CaseResult& r) { return r.lab == d.lab && r.name == name && r.visibility == "public"; });
+    };
+    const auto public_only = [&](const std::vector<std::string>& names) {
+        std::vector<std::string> kept;
+        for (const auto& n : names)
+            if (is_public(n)) kept.push_back(n);
+        return kept;
+    };
+    LabDiagnosis out;
+    out.lab = d.lab;
+    out.failing = public_only(d.failing);
+    for (const auto& f : d.found) {
+        MistakeFound m = f;
+        m.cases = public_only(f.cases);
+        if (!m.cases.empty()) out.found.push_back(std::move(m));
+    }
+    out.unexplained = public_only(d.unexplained);
+    out.not_started = d.not_started;
+    out.compare = d.compare;
+    return out;
+}
+
 }  // namespace gsv

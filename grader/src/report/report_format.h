@@ -45,6 +45,14 @@ std::string one_line(std::string_view text, std::size_t max_bytes);
 // The first line that mentions an error, else the first non-blank line, else "".
 std::string first_error_line(std::string_view log);
 
+// A lab's diagnosis in words for the student, one line each: the known mistakes that explain its failing cases ("one
+// known mistake explains 10 of your 10 failing cases:", then "L01-T1: <what it says> (sheet: <section>)" per mistake),
+// the failing cases none explains with the command that compares them, and the TODOs not started.
+std::vector<std::string> diagnosis_lines(const LabDiagnosis& diagnosis);
+// The part of a diagnosis a student may see whatever the run diagnosed: the public cases' (by the report's rows), the
+// mistakes that explain one of them; a hidden case is never named.
+LabDiagnosis student_diagnosis(const LabDiagnosis& diagnosis, const GradeReport& report);
+
 // RFC 4648 base64 with padding.
 std::string base64(std::string_view bytes);
 

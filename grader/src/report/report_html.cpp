@@ -80,7 +80,12 @@ void figures(std::ostringstream& out, const fs::path& out_dir, const CaseResult&
     figure(out, out_dir, r.actual_png, "actual (yours)");
     figure(out, out_dir, r.expected_png, "expected");
     if (with_diff) figure(out, out_dir, r.diff_png, "difference");
+    // The known mistake that explains it, drawn by the reference with that mistake made (grader/src/diagnose/).
+    if (!r.mistake_png.empty()) figure(out, out_dir, r.mistake_png, "the known mistake's picture");
     out << "</div>\n";
+    if (!r.mistake.empty())
+        out << "<p class=\"mistake\">A known mistake in " << html(r.mistake_todo) << " explains this: " << html(r.mistake)
+            << " (sheet: " << html(r.mistake_sheet) << ")</p>\n";
 }
 
 std::string percent(long part, long whole) {
@@ -240,6 +245,17 @@ std::string html_report(const GradeReport& report, const fs::path& out_dir) {
     if (!report.references.empty()) out << "<tr><th>references</th><td>" << html(report.references) << "</td></tr>\n";
     out << "<tr><th>time</th><td>" << fixed(std::isfinite(report.seconds) ? report.seconds : 0.0, 1) << " s</td></tr>\n"
         << "</table>\n";
+
+    // What the failures come down to, before the checks (grader/src/diagnose/).
+    if (!report.diagnoses.empty()) {
+        out << "<h2>What went wrong</h2>\n<p>Your failing pictures compared with the kit's known mistakes' pictures.</p>\n";
+        for (const auto& d : report.diagnoses) {
+            out << "<h3>" << html(d.lab) << "</h3>\n<ul class=\"diagnosis\">\n";
+            for (const auto& line : diagnosis_lines(d)) out << "<li>" << html(line) << "</li>\n";
+            out << "</ul>\n";
+        }
+    }
+    if (!report.diagnosis_note.empty()) out << "<p class=\"note\">diagnosis: " << html(report.diagnosis_note) << "</p>\n";
 
     bool any_failed_build = false;
     for (const auto& b : report.builds) {

@@ -140,6 +140,40 @@ Json result_json(const CaseResult& r) {
     j["actual_png"] = text(r.actual_png);
     j["expected_png"] = text(r.expected_png);
     j["diff_png"] = text(r.diff_png);
+    // A known mistake that explains this failure (grader/src/diagnose/): what it says, its TODO, the sheet's section,
+    // its picture of this case. All "" where none does.
+    j["mistake"] = text(r.mistake);
+    j["mistake_todo"] = text(r.mistake_todo);
+    j["mistake_sheet"] = text(r.mistake_sheet);
+    j["mistake_png"] = text(r.mistake_png);
+    return j;
+}
+
+Json strings_json(const std::vector<std::string>& items) {
+    Json j = Json::array();
+    for (const auto& item : items) j.push_back(text(item));
+    return j;
+}
+
+Json diagnosis_json(const LabDiagnosis& d) {
+    Json j = Json::object();
+    j["lab"] = text(d.lab);
+    j["failing"] = strings_json(d.failing);
+    Json found = Json::array();
+    for (const auto& f : d.found) {
+        Json m = Json::object();
+        m["todo"] = text(f.todo);
+        m["says"] = text(f.says);
+        m["sheet"] = text(f.sheet);
+        m["names"] = strings_json(f.names);
+        m["cases"] = strings_json(f.cases);
+        m["with_earlier"] = f.with_earlier;
+        found.push_back(m);
+    }
+    j["found"] = found;
+    j["unexplained"] = strings_json(d.unexplained);
+    j["not_started"] = strings_json(d.not_started);
+    j["compare"] = text(d.compare);
     return j;
 }
 
@@ -171,7 +205,15 @@ std::string gradescope_json(const GradeReport& report) {
     Json root = Json::object();
     root["score"] = number_or_null(report.score());
     root["execution_time"] = static_cast<long>(std::lround(std::isfinite(report.seconds) ? report.seconds : 0.0));
-    root["output"] = text(summary_line(report));
+    // What the failures come down to, as the student may be told: public cases only, never a hidden one's name.
+    std::string output = summary_line(report);
+    for (const auto& d : report.diagnoses) {
+        const std::vector<std::string> lines = diagnosis_lines(student_diagnosis(d, report));
+        if (lines.empty()) continue;
+        output += "\n\n" + d.lab + ":";
+        for (const auto& line : lines) output += "\n" + line;
+    }
+    root["output"] = text(output);
     // Plain text: student output can contain anything, and must not be read as HTML or Markdown.
     root["output_format"] = "text";
     root["test_output_format"] = "text";
@@ -227,6 +269,11 @@ std::string report_json(const GradeReport& report) {
     Json results = Json::array();
     for (const auto& r : report.results) results.push_back(result_json(r));
     root["results"] = results;
+    root["diagnose"] = text(report.diagnose);
+    Json diagnoses = Json::array();
+    for (const auto& d : report.diagnoses) diagnoses.push_back(diagnosis_json(d));
+    root["diagnoses"] = diagnoses;
+    root["diagnosis_note"] = text(report.diagnosis_note);
     // --regrade-only changed: which labs this run graded, and which kept the last run's rows.
     if (!report.regraded.empty() || !report.kept.empty()) {
         Json regraded = Json::array(), kept = Json::array();

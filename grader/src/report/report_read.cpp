@@ -122,6 +122,10 @@ CaseResult case_result(const Json& j, const std::string& where) {
     r.actual_png = j.string_at("actual_png");
     r.expected_png = j.string_at("expected_png");
     r.diff_png = j.string_at("diff_png");
+    r.mistake = j.string_or("mistake", "");
+    r.mistake_todo = j.string_or("mistake_todo", "");
+    r.mistake_sheet = j.string_or("mistake_sheet", "");
+    r.mistake_png = j.string_or("mistake_png", "");
     return r;
 }
 
@@ -155,6 +159,26 @@ GradeReport read_report_json(const fs::path& file) {
             report.builds.push_back(std::move(build));
         }
         for (const Json& r : root.array_at("results").as_array()) report.results.push_back(case_result(r, where));
+        report.diagnose = root.string_or("diagnose", "off");
+        report.diagnosis_note = root.string_or("diagnosis_note", "");
+        if (const Json* diagnoses = root.find("diagnoses"))
+            for (const Json& j : diagnoses->as_array()) {
+                const auto strings = [&](const Json& from, const char* key) {
+                    std::vector<std::string> items;
+                    for (const Json& item : from.array_at(key).as_array()) items.push_back(item.as_string());
+                    return items;
+                };
+                LabDiagnosis d;
+                d.lab = j.string_at("lab");
+                d.failing = strings(j, "failing");
+                for (const Json& f : j.array_at("found").as_array())
+                    d.found.push_back({f.string_at("todo"), f.string_at("says"), f.string_at("sheet"), strings(f, "names"), strings(f, "cases"),
+                                       f.find("with_earlier") && f.bool_at("with_earlier")});
+                d.unexplained = strings(j, "unexplained");
+                d.not_started = strings(j, "not_started");
+                d.compare = j.string_or("compare", "");
+                report.diagnoses.push_back(std::move(d));
+            }
         for (const char* list : {"regraded", "kept"})
             if (const Json* labs = root.find(list))
                 for (const Json& lab : labs->as_array()) (std::string(list) == "regraded" ? report.regraded : report.kept).push_back(lab.as_string());

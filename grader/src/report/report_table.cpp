@@ -86,6 +86,20 @@ std::string score_table(const GradeReport& report) {
     }
 
     std::ostringstream out;
+    // The report opens with what the failures come down to (grader/src/diagnose/): the known mistakes that explain them.
+    if (!report.diagnoses.empty()) {
+        out << "what went wrong (the kit's known mistakes compared with your pictures)\n";
+        for (const auto& d : report.diagnoses) {
+            bool first_line = true;
+            for (const auto& line : diagnosis_lines(d)) {
+                const std::string head = first_line ? pad_right(one_line(d.lab, 24), 7) : std::string(7, ' ');
+                first_line = false;
+                const auto parts = folded(one_line(line, 1000), kDetailBytes + 30);
+                for (std::size_t i = 0; i < parts.size(); ++i) out << "  " << (i == 0 ? head : std::string(7, ' ')) << (i == 0 ? "" : "    ") << parts[i] << "\n";
+            }
+        }
+        out << "\n";
+    }
     for (const auto& row : rows) {
         std::string line = pad_right(row.lab, w_lab) + "  " + pad_right(row.check, w_check) + "  " +
                            pad_right(row.todo, w_todo) + "  " + pad_right(row.status, w_status) + "  " +
@@ -147,6 +161,7 @@ std::string score_table(const GradeReport& report) {
     }
     out << "sandbox  " << (report.sandbox.empty() ? "(not given)" : one_line(report.sandbox, 200)) << "\n";
     if (!report.references.empty()) out << "references  " << one_line(report.references, 300) << "\n";
+    if (!report.diagnosis_note.empty()) out << "diagnosis " << one_line(report.diagnosis_note, 300) << "\n";
     if (!report.regraded.empty() || !report.kept.empty())
         out << "regraded " << (report.regraded.empty() ? std::string("none") : joined(report.regraded))
             << (report.kept.empty() ? std::string() : "; kept from the last run (nothing they depend on changed): " + joined(report.kept))

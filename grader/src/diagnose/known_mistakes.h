@@ -1,0 +1,36 @@
+#pragma once
+// The kit's known mistakes of a lab, as a diagnosis uses them: the classic mistakes the mutation tests prove the cases
+// catch (tests/mutants/<lab>.json, "mutants"), each an edit of the reference solution with its TODO, what it says to
+// a student who made it ("says": the idea missed, never the code) and the part of the lab's sheet that teaches it
+// ("sheet": a heading of labs/<lab_dir>/README.md, or "TODO table"). The lists are the instructor's (their edits are
+// answers): a kit without tests/ (the student edition) has none. An instructor adds a mistake with one entry there.
+#include "common/io/json.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace gsv {
+
+struct KnownMistake {
+    std::string name;  // the kit's own name of it, for the instructor
+    std::string todo, says, sheet;
+    Json edit;         // the entry: {"file", "find", "replace"} or "edits"
+    // Not a mistake but a TODO left as the starter has it (its blocks in `files` the starter's): a TODO whose starter
+    // draws no magenta (a pass-through) is told apart from a mistake in it by its pictures, and called "not started".
+    bool not_started = false;
+    std::vector<std::string> files;
+};
+
+struct KnownMistakes {
+    std::string lab, lab_dir;
+    // The GLSL mistakes: their pictures need no build (the solution's binary runs the edited shaders). C++ mistakes
+    // ("cpp_mutants") would need a build of a submission each, and are left out. Then each GLSL TODO not started.
+    std::vector<KnownMistake> mistakes;
+};
+
+// The lab's known mistakes; none (an empty list) where the kit has no tests/mutants/<lab>.json. Throws gsv::Error
+// naming the file and the entry where one is malformed or has no "says".
+KnownMistakes known_mistakes(const std::filesystem::path& kit_root, const std::string& lab);
+
+}  // namespace gsv

@@ -1,0 +1,154 @@
+#include "grader/src/grade/diagnose_lab.h"
+
+#include "common/core/error.h"
+#include "common/image/image.h"
+
+#include <algorithm>
+
+namespace fs = std::filesystem;
+
+namespace gsv {
+namespace {
+
+// At most this many rounds: a mistake alone, then made together with one or two named before it.
+constexpr int kRounds = 3;
+
+std::size_t index_of(const KnownMistakes& known, const std::string& name) {
+    return static_cast<std::size_t>(
+        std::find_if(known.mistakes.begin(), known.mistakes.end(), [&](const KnownMistake& k) { return k.name == name; }) -
+        known.mistakes.begin());
+}
+
+void add_note(GradeReport& report, const std::string& line) {
+    if (report.diagnosis_note.find(line) != std::string::npos) return;
+    report.diagnosis_note += (report.diagnosis_note.empty() ? "" : "; ") + line;
+}
+
+}  // namespace
+
+bool diagnoses(const GradingSession& s, const GradeCase& c) {
+    if (s.diagnose == DiagnoseCases::Off) return false;
+    return s.diagnose == DiagnoseCases::All || c.visibility == "public";
+}
+
+void diagnose_lab(GradingSession& s, MistakePictures& pictures, const LabCases& lab, std::size_t first,
+                  const std::vector<FailedRender>& failed) {
+    if (s.diagnose == DiagnoseCases::Off) return;
+    LabDiagnosis d;
+    d.lab = lab.lab;
+    for (std::size_t i = first; i < s.report.results.size(); ++i) {
+        const CaseResult& r = s.report.results[i];
+        if (r.kind == "image" && r.status == CaseStatus::NotDone && (s.diagnose == DiagnoseCases::All || r.visibility == "public") &&
+            std::find(d.not_started.begin(), d.not_started.end(), r.todo) == d.not_started.end())
+            d.not_started.push_back(r.todo);
+    }
+    std::vector<std::string> failing;
+    std::vector<const GradeCase*> cases;
+    for (const FailedRender& f : failed) {
+        failing.push_back(f.c->name);
+        cases.push_back(f.c);
+    }
+    if (!failed.empty()) {
+        KnownMistakes known;
+        try {
+            known = known_mistakes(s.kit, lab.lab);
+        } catch (const Error& e) {
+            add_note(s.report, e.what());
+        }
+        if (known.mistakes.empty()) {
+            add_note(s.report, "no known mistakes of " + lab.lab + " in this kit (tests/mutants/" + lab.lab + ".json)");
+        } else if (!s.walls_up()) {
+            add_note(s.report, "the known mistakes' pictures are made only where the allow-list walls are up");
+            known.mistakes.clear();
+        } else if (!fs::exists(s.bin / (lab.lab + "_solution"))) {
+            add_note(s.report, "the known mistakes' pictures need " + lab.lab + "_solution, which this build lacks");
+            known.mistakes.clear();
+        }
+        // Rounds: first each mistake alone; then, for the failures left, each other mistake made together with those
+        // named so far (two mistakes in two TODOs draw a case both touch as neither draws it alone).
+        std::map<std::pair<std::size_t, std::string>, Image> pictures_of;  // (mistake, case) -> its picture, where it explains
+        std::vector<std::size_t> named;
+        std::vector<const FailedRender*> left;
+        for (const FailedRender& f : failed) left.push_back(&f);
+        d.failing = failing;
+        for (int round = 0; round < kRounds && !left.empty() && !known.mistakes.empty(); ++round) {
+            std::vector<const GradeCase*> left_cases;
+            std::vector<std::string> left_names;
+            for (const FailedRender* f : left) {
+                left_cases.push_back(f->c);
+                left_names.push_back(f->c->name);
+            }
+            std::vector<std::set<std::string>> explains(known.mistakes.size());
+            for (std::size_t m = 0; m < known.mistakes.size(); ++m) {
+                if (std::find(named.begin(), named.end(), m) != named.end()) continue;
+                std::vector<std::size_t> made = named;
+                made.push_back(m);
+                std::vector<LabRun> runs;
+                try {
+                    runs = pictures.render(lab, known, made, left_cases);
+                } catch (const std::exception& e) {
+                    if (round == 0) add_note(s.report, std::string("a known mistake's picture could not be made: ") + e.what());
+                    continue;  // later rounds: mistakes that cannot be made together with those named
+                }
+                for (std::size_t i = 0; i < left.size(); ++i) {
+                    if (!student_matches(lab, *left[i]->c, left[i]->student, runs[i]) ||
+                        !mistake_fails(lab, *left[i]->c, runs[i], left[i]->expected, s.kit))
+                        continue;
+                    explains[m].insert(left[i]->c->name);
+                    pictures_of.emplace(std::make_pair(m, left[i]->c->name), *runs[i].image);
+                }
+            }
+            const LabDiagnosis ranked = rank_mistakes(lab.lab, left_names, known.mistakes, explains);
+            if (ranked.found.empty()) break;
+            for (MistakeFound f : ranked.found) {
+                f.with_earlier = round > 0;
+                named.push_back(index_of(known, f.names.front()));
+                d.found.push_back(std::move(f));
+            }
+            std::vector<const FailedRender*> still;
+            for (const FailedRender* f : left)
+                if (std::find(ranked.unexplained.begin(), ranked.unexplained.end(), f->c->name) != ranked.unexplained.end()) still.push_back(f);
+            left = still;
+        }
+        for (const FailedRender* f : left) d.unexplained.push_back(f->c->name);
+        // A TODO not started (its pictures the starter's) is said so, not named as a mistake. Where a mistake draws the
+        // same on these cases (a pass-through starter that leaves out what the mistake leaves out), the mistake is named:
+        // the student's other cases, which the starter would fail too, passed.
+        std::vector<MistakeFound> mistakes_found;
+        for (MistakeFound& found : d.found) {
+            const auto is_starter = [&](const std::string& n) { return known.mistakes[index_of(known, n)].not_started; };
+            if (!std::all_of(found.names.begin(), found.names.end(), is_starter)) {
+                found.names.erase(std::remove_if(found.names.begin(), found.names.end(), is_starter), found.names.end());
+                const KnownMistake& first = known.mistakes[index_of(known, found.names.front())];
+                found.todo = first.todo;
+                found.says = first.says;
+                found.sheet = first.sheet;
+                mistakes_found.push_back(std::move(found));
+                continue;
+            }
+            if (std::find(d.not_started.begin(), d.not_started.end(), found.todo) == d.not_started.end()) d.not_started.push_back(found.todo);
+            for (const std::string& name : found.cases) {
+                const auto f = std::find_if(failed.begin(), failed.end(), [&](const FailedRender& x) { return x.c->name == name; });
+                s.report.results[f->row].mistake_todo = found.todo;  // "mistake" stays empty: not started
+            }
+        }
+        d.found = std::move(mistakes_found);
+        // Each explained row: its mistake, and that mistake's picture beside the student's.
+        for (const MistakeFound& found : d.found) {
+            const std::size_t m = index_of(known, found.names.front());
+            for (const std::string& name : found.cases) {
+                const auto f = std::find_if(failed.begin(), failed.end(), [&](const FailedRender& x) { return x.c->name == name; });
+                CaseResult& r = s.report.results[f->row];
+                r.mistake = found.says;
+                r.mistake_todo = found.todo;
+                r.mistake_sheet = found.sheet;
+                const fs::path png = s.out / lab.lab / name / "mistake.png";
+                write_png(png, pictures_of.at({m, name}));
+                r.mistake_png = fs::relative(png, s.out).generic_string();
+            }
+        }
+    }
+    if (!d.failing.empty() || !d.not_started.empty()) s.report.diagnoses.push_back(std::move(d));
+}
+
+}  // namespace gsv

@@ -1,0 +1,44 @@
+#pragma once
+// The known mistakes' renders of a grading run's cases (grader/src/diagnose/): the reference solution with one mistake
+// made to its shaders (the mutant kit of grader/src/margins/mutant_kit.h), rendering the cases on this machine as the
+// student's lab did. Each is made once per kit, case and mistake: kept in the run's reference cache and in the
+// reference store under the reference's key with the mistake's edit added, so a batch or a rerun renders none again.
+// The edited solutions hold answers: they live in a folder of the grader's own (0700) for the run, made only where the
+// allow-list walls keep student code out of it, and removed at the end.
+#include "grader/src/diagnose/known_mistakes.h"
+#include "grader/src/grade/session.h"
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace gsv {
+
+class MistakePictures {
+public:
+    explicit MistakePictures(GradingSession& session) : s_(session) {}
+    ~MistakePictures();
+    MistakePictures(const MistakePictures&) = delete;
+    MistakePictures& operator=(const MistakePictures&) = delete;
+
+    // The mistakes `made` of `known` (one, or several made together) on each of `cases`, in order: from the cache or
+    // the store, else rendered (one process serving the cases it has not got). Throws gsv::Error where the mistakes
+    // cannot be made together (one's edit undoes the text another's needs).
+    std::vector<LabRun> render(const LabCases& lab, const KnownMistakes& known, const std::vector<std::size_t>& made,
+                               const std::vector<const GradeCase*>& cases);
+    int rendered() const { return rendered_; }
+    int looked_up() const { return looked_up_; }  // pictures asked for, rendered or kept
+
+private:
+    std::filesystem::path kit_of(const KnownMistakes& known, const std::vector<std::size_t>& made);
+    std::string key(const LabCases& lab, const KnownMistakes& known, const std::vector<std::size_t>& made, const GradeCase& c);
+
+    GradingSession& s_;
+    std::filesystem::path dir_;                   // the run's edited kits, one folder each
+    std::map<std::string, std::filesystem::path> kits_;  // lab + mistake name -> its folder
+    int folders_ = 0;
+    int rendered_ = 0, looked_up_ = 0;
+};
+
+}  // namespace gsv

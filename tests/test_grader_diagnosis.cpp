@@ -1,0 +1,141 @@
+// The diagnosis (grader/src/diagnose/): which known mistakes explain a lab's failing cases, ranked; what the student is
+// told of it; and where a failure it explains is put (grader/src/judge/needs.h). Without GL: the ranking works on which
+// cases each mistake's pictures explain; test_grader_diagnosis_gl.cpp grades real mistakes.
+#include "catch.hpp"
+#include "grader/src/diagnose/diagnosis.h"
+#include "grader/src/judge/needs.h"
+#include "grader/src/report/report_format.h"
+
+#include <set>
+#include <string>
+#include <vector>
+
+using namespace gsv;
+
+namespace {
+
+KnownMistake mistake(const std::string& name, const std::string& todo) {
+    return {name, todo, "says " + name, "TODO table", Json::object(), false, {}};
+}
+
+}  // namespace
+
+TEST_CASE("diagnosis: the mistake that explains the most failing cases comes first, then the one that explains the rest", "[unit]") {
+    const std::vector<KnownMistake> mistakes{mistake("a", "L01-T1"), mistake("b", "L01-T4"), mistake("c", "L01-T2")};
+    const std::vector<std::string> failing{"diffuse", "phong", "gooch", "stretched", "odd"};
+    const LabDiagnosis d = rank_mistakes("lab01", failing, mistakes,
+                                         {{"diffuse", "phong", "stretched"}, {"gooch"}, {"diffuse"}});
+    REQUIRE(d.found.size() == 2);
+    CHECK(d.found[0].names == std::vector<std::string>{"a"});
+    CHECK(d.found[0].todo == "L01-T1");
+    CHECK(d.found[0].cases == std::vector<std::string>{"diffuse", "phong", "stretched"});
+    CHECK(d.found[1].names == std::vector<std::string>{"b"});
+    CHECK(d.found[1].cases == std::vector<std::string>{"gooch"});
+    // "c" explains nothing "a" left: not named. "odd" no mistake explains: said so, not given the nearest name.
+    CHECK(d.unexplained == std::vector<std::string>{"odd"});
+    CHECK(d.failing == failing);
+}
+
+TEST_CASE("diagnosis: mistakes whose pictures explain the same cases are twins, named together with one text", "[unit]") {
+    const std::vector<KnownMistake> mistakes{mistake("inverse without transpose", "L01-T1"), mistake("model-view", "L01-T1"),
+                                             mistake("other", "L01-T1")};
+    const LabDiagnosis d = rank_mistakes("lab01", {"stretched"}, mistakes, {{"stretched"}, {"stretched"}, {}});
+    REQUIRE(d.found.size() == 1);
+    CHECK(d.found[0].names == std::vector<std::string>{"inverse without transpose", "model-view"});
+    CHECK(d.found[0].says == "says inverse without transpose");
+    CHECK(d.unexplained.empty());
+}
+
+TEST_CASE("diagnosis: between two that explain as many, the one that explains fewer cases in all is the closer", "[unit]") {
+    // "broad" also explains a case that passed for the student (not failing): it would have changed more than they did.
+    const std::vector<KnownMistake> mistakes{mistake("broad", "L02-T1"), mistake("narrow", "L02-T3")};
+    const LabDiagnosis d = rank_mistakes("lab02", {"border"}, mistakes, {{"border", "elsewhere"}, {"border"}});
+    REQUIRE(d.found.size() == 1);
+    CHECK(d.found[0].names == std::vector<std::string>{"narrow"});
+}
+
+TEST_CASE("diagnosis: no failing case, or none explained, names no mistake", "[unit]") {
+    const std::vector<KnownMistake> mistakes{mistake("a", "L01-T1")};
+    CHECK(rank_mistakes("lab01", {}, mistakes, {{}}).found.empty());
+    const LabDiagnosis d = rank_mistakes("lab01", {"phong"}, mistakes, {{}});
+    CHECK(d.found.empty());
+    CHECK(d.unexplained == std::vector<std::string>{"phong"});
+}
+
+TEST_CASE("diagnosis: the student's lines name the idea, the TODO, the sheet and the cases; never a hidden case", "[unit]") {
+    LabDiagnosis d;
+    d.lab = "lab01";
+    d.failing = {"stretched", "hidden-stretched", "gooch"};
+    d.found = {{"L01-T1", "the normal stays in the model's space", "The hard cases", {"kit name"}, {"stretched", "hidden-stretched"}, false}};
+    d.unexplained = {"gooch"};
+    d.not_started = {"L01-T6"};
+    d.compare = "build/bin/lab01 compare --case gooch";
+    GradeReport report;
+    for (const auto& [name, visibility] : std::vector<std::pair<std::string, std::string>>{
+             {"stretched", "public"}, {"hidden-stretched", "hidden"}, {"gooch", "public"}}) {
+        CaseResult r;
+        r.lab = "lab01";
+        r.name = name;
+        r.visibility = visibility;
+        report.results.push_back(r);
+    }
+    const std::vector<std::string> all = diagnosis_lines(d);
+    REQUIRE(all.size() == 4);
+    CHECK(all[0] == "one known mistake explains 2 of your 3 failing cases:");
+    CHECK(all[1] == "  L01-T1: the normal stays in the model's space (sheet: The hard cases)");
+    CHECK(all[2] == "no known mistake matches 'gooch'; compare yours with the reference: build/bin/lab01 compare --case gooch");
+    CHECK(all[3] == "not started: L01-T6");
+    const LabDiagnosis student = student_diagnosis(d, report);
+    CHECK(student.failing == std::vector<std::string>{"stretched", "gooch"});
+    REQUIRE(student.found.size() == 1);
+    CHECK(student.found[0].cases == std::vector<std::string>{"stretched"});
+    std::string text;
+    for (const auto& line : diagnosis_lines(student)) text += line + "\n";
+    CHECK(text.find("hidden") == std::string::npos);
+    CHECK(text.find("kit name") == std::string::npos);  // the kit's own name of a mistake is the instructor's
+    CHECK(text.find("1 of your 2 failing cases") != std::string::npos);
+}
+
+TEST_CASE("diagnosis: a failure a known mistake explains is put on the mistake's TODO, not relabelled as needing another", "[unit]") {
+    LabCases lab;
+    lab.lab = "lab01";
+    GradeCase stretched, diffuse;
+    stretched.name = "stretched";
+    stretched.todo = "L01-T1";
+    diffuse.name = "diffuse";
+    diffuse.todo = "L01-T2";
+    diffuse.needs = {"L01-T1"};
+    lab.cases = {stretched, diffuse};
+    std::vector<CaseResult> rows(2);
+    rows[0].name = "stretched";
+    rows[0].todo = "L01-T1";
+    rows[1].name = "diffuse";
+    rows[1].todo = "L01-T2";
+    for (auto& r : rows) {
+        r.lab = "lab01";
+        r.status = CaseStatus::WrongImage;
+        r.detail = "max diff 84";
+    }
+    SECTION("explained: the status stands, the detail names the mistake and its TODO") {
+        rows[1].mistake = "the normal stays in the model's space";
+        rows[1].mistake_todo = "L01-T1";
+        blame_needed_todos(lab, rows, 0);
+        CHECK(rows[1].status == CaseStatus::WrongImage);
+        CHECK(rows[1].detail == "a known mistake in L01-T1 explains it: the normal stays in the model's space; here: max diff 84");
+    }
+    SECTION("not explained: needs L01-T1 first, as before") {
+        blame_needed_todos(lab, rows, 0);
+        CHECK(rows[1].status == CaseStatus::NeedsFirst);
+        CHECK(rows[1].detail.rfind("needs L01-T1 first", 0) == 0);
+    }
+    SECTION("a mistake in a TODO whose own cases pass is still the root another case's failure goes to") {
+        rows[0].status = CaseStatus::Passed;
+        rows.push_back(rows[1]);
+        rows[1].mistake = "the normal stays in the model's space";
+        rows[1].mistake_todo = "L01-T1";
+        rows[2].name = "diffuse";  // a second failure of the same case's kind, not explained
+        blame_needed_todos(lab, rows, 0);
+        CHECK(rows[2].status == CaseStatus::NeedsFirst);
+        CHECK(rows[2].detail.find("needs L01-T1 first (its case 'diffuse' fails)") == 0);
+    }
+}
