@@ -26,7 +26,9 @@ const char* const kGradeUsage =
     "                    machines share a class; then gsv-grade merge joins their --out folders\n"
     "  --roster FILE     with --batch: the class, one name per line (default: the folders in DIR); DIR then needs\n"
     "                    only this shard's folders, and a name without one is graded 'nothing submitted'\n"
-    "  --out DIR         images and reports: results.json (Gradescope), report.json, junit.xml, report.html\n"
+    "  --out DIR         images and reports: results.json (Gradescope), report.json, junit.xml, report.html; with\n"
+    "                    --batch also class.csv, class.txt, batch.json and the class by its mistakes (class-report.html,\n"
+    "                    class-mistakes.csv)\n"
     "  --cases A,B       only these cases (public or hidden names) of the chosen labs: re-check one fix quickly\n"
     "  --todo L02-T3     only the cases of one TODO (its lab's): what the lab sheet's TODO table gives\n"
     "  --seed N          draws the hidden cases; the same seed gives the same cases (default: a fresh one, printed)\n"
@@ -62,6 +64,8 @@ const char* const kGradeUsage =
     "                    the per-submission folders, class.csv, class.txt, batch.json; refused when the shards were\n"
     "                    graded with other seeds, kits, labs or options, overlap, or one is missing\n"
     "       gsv-grade shard K/N ROSTER       the names of shard K of N of a roster file, one a line (what to fetch)\n"
+    "       gsv-grade mistake-skeleton OUT ID  an entry for tests/mutants/<lab>.json from cluster ID (lab01/gooch/1) of\n"
+    "                    a batch's class report (OUT/class-report.html): failures no known mistake explains, alike\n"
     "exit status: 0 graded (whatever the score), 1 under --fail-under, 2 usage or internal error, 3 the kit's fault\n"
     "                    (its set-up, not a student's files: nothing graded; one line says what to fix)\n";
 

@@ -10,6 +10,7 @@
 #include "grader/src/app/grade_command.h"
 #include "grader/src/batch/batch.h"
 #include "grader/src/batch/batch_merge.h"
+#include "grader/src/batch/class_report.h"
 #include "grader/src/batch/batch_record.h"
 #include "grader/src/cases/draw.h"
 #include "grader/src/golden/golden_update.h"
@@ -78,10 +79,18 @@ int shard_main(int argc, char** argv) {
     return gsv::kGradeOk;
 }
 
-// `gsv-grade merge ...` and `gsv-grade shard ...`.
+// gsv-grade mistake-skeleton OUT CLUSTER: an entry for tests/mutants/<lab>.json from a cluster of the class report.
+int skeleton_main(int argc, char** argv) {
+    if (argc != 4) throw gsv::Error("needs a batch's --out and a cluster of its class report: gsv-grade mistake-skeleton OUT lab01/gooch/1");
+    std::printf("%s", gsv::mistake_skeleton(argv[2], argv[3]).c_str());
+    return gsv::kGradeOk;
+}
+
+// `gsv-grade merge ...`, `gsv-grade shard ...` and `gsv-grade mistake-skeleton ...`.
 int run_subcommand(int argc, char** argv) {
     try {
-        return std::string(argv[1]) == "merge" ? merge_main(argc, argv) : shard_main(argc, argv);
+        const std::string which = argv[1];
+        return which == "merge" ? merge_main(argc, argv) : which == "shard" ? shard_main(argc, argv) : skeleton_main(argc, argv);
     } catch (const gsv::Error& e) {
         std::fprintf(stderr, "gsv-grade %s: %s\n", argv[1], e.what());
         return gsv::kGradeNotGraded;
@@ -218,7 +227,8 @@ int grade_one(const gsv::GradeCommand& command, const char* argv0) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc > 1 && (std::string(argv[1]) == "merge" || std::string(argv[1]) == "shard")) return run_subcommand(argc, argv);
+    if (argc > 1 && (std::string(argv[1]) == "merge" || std::string(argv[1]) == "shard" || std::string(argv[1]) == "mistake-skeleton"))
+        return run_subcommand(argc, argv);
     gsv::GradeCommand command;
     command.options.kit_root = GSV_SOURCE_ROOT;
     command.options.bin_dir = GSV_BIN_DIR;

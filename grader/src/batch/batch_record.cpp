@@ -1,4 +1,5 @@
 #include "grader/src/batch/batch_record.h"
+#include "grader/src/batch/class_report.h"
 
 #include "common/core/error.h"
 #include "common/core/fnv1a.h"
@@ -131,6 +132,8 @@ void write_class_tables(const std::vector<BatchEntry>& entries, const fs::path& 
         out << text;
         if (!out) throw Error("cannot write '" + (out_dir / name).string() + "'");
     }
+    // The class by its mistakes (class_report.h): class-report.html and class-mistakes.csv.
+    write_class_report(out_dir, entries);
 }
 
 }  // namespace gsv

@@ -10,6 +10,7 @@
 #include <iterator>
 #include <map>
 #include <set>
+#include <sstream>
 
 namespace fs = std::filesystem;
 
@@ -54,6 +55,76 @@ KnownMistakes known_mistakes(const fs::path& kit_root, const std::string& lab) {
                                   Json::object(), true, files});
     }
     return known;
+}
+
+namespace {
+
+std::string file_text(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+std::string trimmed(const std::string& line) {
+    const auto first = line.find_first_not_of(" \t\r");
+    if (first == std::string::npos) return "";
+    return line.substr(first, line.find_last_not_of(" \t\r") - first + 1);
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) lines.push_back(trimmed(line));
+    return lines;
+}
+
+}  // namespace
+
+bool still_starter(const fs::path& kit_root, const std::string& lab_dir, const fs::path& student_folder, const std::string& todo,
+                   const std::vector<std::string>& files) {
+    for (const std::string& file : files) {
+        // This TODO's starter blocks in the file, as make_starter writes them (the leading // removed).
+        std::vector<std::vector<std::string>> blocks;
+        bool ours = false, in_starter = false;
+        std::vector<std::string>* follow = nullptr;
+        for (const std::string& line : lines_of(file_text(KitLayout{kit_root}.solutions() / lab_dir / file))) {
+            if (line.rfind("//@solution", 0) == 0) {
+                ours = trimmed(line.substr(11)) == todo;
+                in_starter = false;
+            } else if (line.rfind("//@starter", 0) == 0) {
+                in_starter = ours;
+                if (ours) blocks.emplace_back();
+            } else if (line.rfind("//@end", 0) == 0) {
+                in_starter = false;
+                if (ours && !blocks.empty()) follow = &blocks.back();
+            } else if (follow) {
+                // The first line after the block closes it: an empty starter (a line left out) is told by what follows.
+                if (!line.empty()) {
+                    follow->push_back(line);
+                    follow = nullptr;
+                }
+            } else if (in_starter) {
+                blocks.back().push_back(trimmed(line.size() >= 2 && line.compare(0, 2, "//") == 0 ? line.substr(2) : line));
+            }
+        }
+        if (blocks.empty()) continue;
+        // The student's file: right after each comment that names the TODO (and the comment lines with it), a block's
+        // lines and the line after it, in a row (blank lines aside).
+        std::vector<std::string> student;
+        for (const std::string& line : lines_of(file_text(student_folder / file)))
+            if (!line.empty()) student.push_back(line);
+        const std::string marker = "TODO(" + todo + ")";
+        for (std::size_t i = 0; i < student.size(); ++i) {
+            if (student[i].find(marker) == std::string::npos) continue;
+            std::size_t at = i + 1;
+            while (at < student.size() && student[at].rfind("//", 0) == 0) ++at;
+            for (auto block : blocks) {
+                block.erase(std::remove(block.begin(), block.end(), std::string()), block.end());
+                if (block.empty() || at + block.size() > student.size()) continue;
+                if (std::equal(block.begin(), block.end(), student.begin() + static_cast<long>(at))) return true;
+            }
+        }
+    }
+    return false;
 }
 
 }  // namespace gsv

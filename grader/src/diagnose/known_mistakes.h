@@ -33,4 +33,11 @@ struct KnownMistakes {
 // naming the file and the entry where one is malformed or has no "says".
 KnownMistakes known_mistakes(const std::filesystem::path& kit_root, const std::string& lab);
 
+// Whether the student's copy of the lab (`student_folder`, its files by the solution's names) still holds `todo`'s
+// starter code: in some file of the TODO, after the line that names it (TODO(L04-T4)), the starter's lines as the
+// solution's //@starter block has them, each line's surrounding white space aside. Where a TODO's pictures are a known
+// mistake's too (a pass-through starter), its source tells "not started" from the mistake.
+bool still_starter(const std::filesystem::path& kit_root, const std::string& lab_dir, const std::filesystem::path& student_folder,
+                   const std::string& todo, const std::vector<std::string>& files);
+
 }  // namespace gsv

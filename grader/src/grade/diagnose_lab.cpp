@@ -1,5 +1,6 @@
 #include "grader/src/grade/diagnose_lab.h"
 
+#include "common/app/kit_layout.h"
 #include "common/core/error.h"
 #include "common/image/image.h"
 
@@ -111,14 +112,26 @@ void diagnose_lab(GradingSession& s, MistakePictures& pictures, const LabCases& 
             left = still;
         }
         for (const FailedRender* f : left) d.unexplained.push_back(f->c->name);
-        // A TODO not started (its pictures the starter's) is said so, not named as a mistake. Where a mistake draws the
-        // same on these cases (a pass-through starter that leaves out what the mistake leaves out), the mistake is named:
-        // the student's other cases, which the starter would fail too, passed.
+        // A TODO not started (its pictures the starter's) is said so, not named as a mistake. Where a mistake or another
+        // TODO's starter draws the same on these cases (a pass-through starter leaves out what the mistake leaves out),
+        // the student's source decides: the TODO whose starter code is still there is not started, else the mistake.
         std::vector<MistakeFound> mistakes_found;
+        const fs::path student_folder = fs::exists(KitLayout{s.student_kit()}.labs() / known.lab_dir)
+                                            ? KitLayout{s.student_kit()}.labs() / known.lab_dir
+                                            : KitLayout{s.student_kit()}.solutions() / known.lab_dir;
         for (MistakeFound& found : d.found) {
-            const auto is_starter = [&](const std::string& n) { return known.mistakes[index_of(known, n)].not_started; };
-            if (!std::all_of(found.names.begin(), found.names.end(), is_starter)) {
-                found.names.erase(std::remove_if(found.names.begin(), found.names.end(), is_starter), found.names.end());
+            std::vector<std::string> starters, confirmed;
+            for (const std::string& n : found.names) {
+                const KnownMistake& k = known.mistakes[index_of(known, n)];
+                if (!k.not_started) continue;
+                starters.push_back(k.todo);
+                if (still_starter(s.kit, known.lab_dir, student_folder, k.todo, k.files)) confirmed.push_back(k.todo);
+            }
+            const bool any_mistake = starters.size() < found.names.size();
+            if (starters.empty() || (confirmed.empty() && any_mistake)) {
+                found.names.erase(std::remove_if(found.names.begin(), found.names.end(),
+                                                 [&](const std::string& n) { return known.mistakes[index_of(known, n)].not_started; }),
+                                  found.names.end());
                 const KnownMistake& first = known.mistakes[index_of(known, found.names.front())];
                 found.todo = first.todo;
                 found.says = first.says;
@@ -126,10 +139,11 @@ void diagnose_lab(GradingSession& s, MistakePictures& pictures, const LabCases& 
                 mistakes_found.push_back(std::move(found));
                 continue;
             }
-            if (std::find(d.not_started.begin(), d.not_started.end(), found.todo) == d.not_started.end()) d.not_started.push_back(found.todo);
+            const std::string todo = confirmed.empty() ? starters.front() : confirmed.front();
+            if (std::find(d.not_started.begin(), d.not_started.end(), todo) == d.not_started.end()) d.not_started.push_back(todo);
             for (const std::string& name : found.cases) {
                 const auto f = std::find_if(failed.begin(), failed.end(), [&](const FailedRender& x) { return x.c->name == name; });
-                s.report.results[f->row].mistake_todo = found.todo;  // "mistake" stays empty: not started
+                s.report.results[f->row].mistake_todo = todo;  // "mistake" stays empty: not started
             }
         }
         d.found = std::move(mistakes_found);
