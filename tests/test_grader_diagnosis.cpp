@@ -139,3 +139,19 @@ TEST_CASE("diagnosis: a failure a known mistake explains is put on the mistake's
         CHECK(rows[2].detail.find("needs L01-T1 first (its case 'diffuse' fails)") == 0);
     }
 }
+
+TEST_CASE("diagnosis: a TODO's starter code is found in the starter and not in the solution, in every lab", "[unit]") {
+    const std::filesystem::path kit = GSV_SOURCE_ROOT;
+    int todos = 0;
+    for (const char* lab : {"lab01", "lab02", "lab03", "lab04", "lab05", "lab06", "lab07"}) {
+        const KnownMistakes known = known_mistakes(kit, lab);
+        for (const KnownMistake& m : known.mistakes) {
+            if (!m.not_started) continue;
+            ++todos;
+            INFO(lab << " " << m.todo);
+            CHECK(still_starter(kit, known.lab_dir, kit / "labs" / known.lab_dir, m.todo, m.files));
+            CHECK_FALSE(still_starter(kit, known.lab_dir, kit / "solutions" / known.lab_dir, m.todo, m.files));
+        }
+    }
+    CHECK(todos >= 25);
+}

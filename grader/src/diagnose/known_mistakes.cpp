@@ -82,28 +82,40 @@ std::vector<std::string> lines_of(const std::string& text) {
 bool still_starter(const fs::path& kit_root, const std::string& lab_dir, const fs::path& student_folder, const std::string& todo,
                    const std::vector<std::string>& files) {
     for (const std::string& file : files) {
-        // This TODO's starter blocks in the file, as make_starter writes them (the leading // removed).
+        // This TODO's starter blocks in the file, as make_starter writes them (the leading // removed), each after the
+        // code between the comment that names the TODO and the block (a function's first line), and before the line
+        // that follows the block.
         std::vector<std::vector<std::string>> blocks;
-        bool ours = false, in_starter = false;
+        bool ours = false, in_solution = false, in_starter = false, after_marker = false;
         std::vector<std::string>* follow = nullptr;
+        std::vector<std::string> prefix;
+        const std::string marker = "TODO(" + todo + ")";
         for (const std::string& line : lines_of(file_text(KitLayout{kit_root}.solutions() / lab_dir / file))) {
             if (line.rfind("//@solution", 0) == 0) {
                 ours = trimmed(line.substr(11)) == todo;
-                in_starter = false;
+                in_solution = true;
             } else if (line.rfind("//@starter", 0) == 0) {
-                in_starter = ours;
-                if (ours) blocks.emplace_back();
+                in_solution = false;
+                in_starter = true;
+                if (ours) blocks.push_back(after_marker ? prefix : std::vector<std::string>{});
             } else if (line.rfind("//@end", 0) == 0) {
                 in_starter = false;
-                if (ours && !blocks.empty()) follow = &blocks.back();
-            } else if (follow) {
-                // The first line after the block closes it: an empty starter (a line left out) is told by what follows.
-                if (!line.empty()) {
-                    follow->push_back(line);
-                    follow = nullptr;
-                }
+                if (ours) follow = &blocks.back();
+                ours = after_marker = false;
+                prefix.clear();
+            } else if (in_solution) {
+                continue;
             } else if (in_starter) {
-                blocks.back().push_back(trimmed(line.size() >= 2 && line.compare(0, 2, "//") == 0 ? line.substr(2) : line));
+                if (ours) blocks.back().push_back(trimmed(line.size() >= 2 && line.compare(0, 2, "//") == 0 ? line.substr(2) : line));
+            } else if (line.find(marker) != std::string::npos) {
+                after_marker = true;
+                prefix.clear();
+            } else if (follow && !line.empty()) {
+                // The first line after the block closes it: an empty starter (a line left out) is told by what follows.
+                follow->push_back(line);
+                follow = nullptr;
+            } else if (after_marker && !line.empty() && line.rfind("//", 0) != 0) {
+                prefix.push_back(line);
             }
         }
         if (blocks.empty()) continue;
@@ -112,7 +124,6 @@ bool still_starter(const fs::path& kit_root, const std::string& lab_dir, const f
         std::vector<std::string> student;
         for (const std::string& line : lines_of(file_text(student_folder / file)))
             if (!line.empty()) student.push_back(line);
-        const std::string marker = "TODO(" + todo + ")";
         for (std::size_t i = 0; i < student.size(); ++i) {
             if (student[i].find(marker) == std::string::npos) continue;
             std::size_t at = i + 1;
