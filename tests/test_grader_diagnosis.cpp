@@ -62,7 +62,7 @@ TEST_CASE("diagnosis: no failing case, or none explained, names no mistake", "[u
     CHECK(d.unexplained == std::vector<std::string>{"phong"});
 }
 
-TEST_CASE("diagnosis: the student's lines name the idea, the TODO, the sheet and the cases; never a hidden case", "[unit]") {
+TEST_CASE("diagnosis: the student's lines name the idea, the TODO, the sheet and the cases, never a hidden case", "[unit]") {
     LabDiagnosis d;
     d.lab = "lab01";
     d.failing = {"stretched", "hidden-stretched", "gooch"};

@@ -79,7 +79,7 @@ TEST_CASE("diagnosis: one slip in L01-T1 is named as its known mistake on every 
     }
 }
 
-TEST_CASE("diagnosis: two mistakes in two TODOs are named both; a correct lab and the TODOs left undone get none", "[grader]") {
+TEST_CASE("diagnosis: two mistakes in two TODOs are named both, a correct lab and the TODOs left undone get none", "[grader]") {
     const auto cache = std::make_shared<ReferenceCache>();
     {
         const GradeReport report = graded_with({"the normal left in the model's space", "alpha and beta swapped"}, false, cache);

@@ -10,7 +10,12 @@ using namespace gsv;
 
 namespace {
 
-void held_out(const std::string& lab) {
+struct HeldOut {
+    int mistakes = 0, wrong = 0;
+    std::string outcomes;
+};
+
+HeldOut held_out(const std::string& lab) {
     const Json list = read_json_file(test::source_root() / "tests" / "heldout" / (lab + ".json"));
     const std::string lab_dir = test::mutant_spec(lab).string_at("lab_dir");
     const auto cache = std::make_shared<ReferenceCache>();
@@ -30,26 +35,34 @@ void held_out(const std::string& lab) {
         ++mistakes;
         std::string named;
         for (const auto& d : report.diagnoses)
-            for (const auto& f : d.found) named += (named.empty() ? "" : "; ") + f.names.front();
+            for (const auto& f : d.found)
+                named += (named.empty() ? "" : "; ") + f.names.front() + " (" + std::to_string(f.cases.size()) + " of " +
+                         std::to_string(d.failing.size()) + " failing cases)";
         if (!named.empty()) ++wrong;
         bool said_unexplained = false;
         for (const auto& d : report.diagnoses) said_unexplained = said_unexplained || !d.unexplained.empty();
         unexplained += said_unexplained;
         outcomes += "  '" + m.string_at("name") + "': " + (named.empty() ? std::string("no known mistake") : "named '" + named + "'") + "\n";
     }
-    INFO(lab << ": " << wrong << " of " << mistakes << " held-out mistakes given a known mistake's name:\n" << outcomes);
+    INFO(lab << ": held-out mistakes in tests/heldout/" << lab << ".json");
     CHECK(mistakes >= 3);
-    CHECK(wrong * 20 <= mistakes);
-    WARN(lab << " held out: " << mistakes << " mistakes, " << wrong << " named wrong, " << unexplained
-              << " said 'no known mistake matches'\n" << outcomes);
+    return {mistakes, wrong, lab + ": " + std::to_string(mistakes) + " mistakes, " + std::to_string(wrong) + " named wrong, " +
+                                 std::to_string(unexplained) + " said 'no known mistake matches'\n" + outcomes};
 }
 
 }  // namespace
 
-TEST_CASE("lab01: held-out mistakes get no known mistake's name", "[grader][mutants]") { held_out("lab01"); }
-TEST_CASE("lab02: held-out mistakes get no known mistake's name", "[grader][mutants]") { held_out("lab02"); }
-TEST_CASE("lab03: held-out mistakes get no known mistake's name", "[grader][mutants]") { held_out("lab03"); }
-TEST_CASE("lab04: held-out mistakes get no known mistake's name", "[grader][mutants]") { held_out("lab04"); }
-TEST_CASE("lab05: held-out mistakes get no known mistake's name", "[grader][mutants][gl43]") { held_out("lab05"); }
-TEST_CASE("lab06: held-out mistakes get no known mistake's name", "[grader][mutants]") { held_out("lab06"); }
-TEST_CASE("lab07: held-out mistakes get no known mistake's name", "[grader][mutants]") { held_out("lab07"); }
+// One test over every lab: the bar is over the whole list (at most 1 in 20), as the issue sets it.
+TEST_CASE("every lab's held-out mistakes get no known mistake's name, wrong names at most 1 in 20", "[grader][mutants][gl43]") {
+    int mistakes = 0, wrong = 0;
+    std::string outcomes;
+    for (const char* lab : {"lab01", "lab02", "lab03", "lab04", "lab05", "lab06", "lab07"}) {
+        const HeldOut h = held_out(lab);
+        mistakes += h.mistakes;
+        wrong += h.wrong;
+        outcomes += h.outcomes;
+    }
+    INFO(wrong << " of " << mistakes << " held-out mistakes given a known mistake's name:\n" << outcomes);
+    CHECK(wrong * 20 <= mistakes);
+    WARN("held out: " << mistakes << " mistakes, " << wrong << " named wrong\n" << outcomes);
+}

@@ -20,6 +20,18 @@ std::size_t index_of(const KnownMistakes& known, const std::string& name) {
         known.mistakes.begin());
 }
 
+// Whether the mistakes `made` pass every case the student's lab passed (their pictures kept and rendered like any).
+bool agrees_with_passes(GradingSession& s, MistakePictures& pictures, const LabCases& lab, const KnownMistakes& known,
+                        const std::vector<std::size_t>& made, const std::vector<PassedRender>& passed) {
+    if (passed.empty()) return true;
+    std::vector<const GradeCase*> cases;
+    for (const PassedRender& p : passed) cases.push_back(p.c);
+    const std::vector<LabRun> runs = pictures.render(lab, known, made, cases);
+    for (std::size_t i = 0; i < passed.size(); ++i)
+        if (runs[i].status != CaseStatus::Passed || mistake_fails(lab, *passed[i].c, runs[i], passed[i].expected, s.kit)) return false;
+    return true;
+}
+
 void add_note(GradeReport& report, const std::string& line) {
     if (report.diagnosis_note.find(line) != std::string::npos) return;
     report.diagnosis_note += (report.diagnosis_note.empty() ? "" : "; ") + line;
@@ -33,7 +45,8 @@ bool diagnoses(const GradingSession& s, const GradeCase& c) {
 }
 
 void diagnose_lab(GradingSession& s, MistakePictures& pictures, const LabCases& lab, std::size_t first,
-                  const std::vector<FailedRender>& failed) {
+                  const LabRenders& renders) {
+    const std::vector<FailedRender>& failed = renders.failed;
     if (s.diagnose == DiagnoseCases::Off) return;
     LabDiagnosis d;
     d.lab = lab.lab;
@@ -91,24 +104,36 @@ void diagnose_lab(GradingSession& s, MistakePictures& pictures, const LabCases& 
                     if (round == 0) add_note(s.report, std::string("a known mistake's picture could not be made: ") + e.what());
                     continue;  // later rounds: mistakes that cannot be made together with those named
                 }
-                for (std::size_t i = 0; i < left.size(); ++i) {
-                    if (!student_matches(lab, *left[i]->c, left[i]->student, runs[i]) ||
-                        !mistake_fails(lab, *left[i]->c, runs[i], left[i]->expected, s.kit))
-                        continue;
-                    explains[m].insert(left[i]->c->name);
-                    pictures_of.emplace(std::make_pair(m, left[i]->c->name), *runs[i].image);
-                }
+                std::set<std::string> explained;
+                for (std::size_t i = 0; i < left.size(); ++i)
+                    if (student_matches(lab, *left[i]->c, left[i]->student, runs[i]) &&
+                        mistake_fails(lab, *left[i]->c, runs[i], left[i]->expected, s.kit))
+                        explained.insert(left[i]->c->name);
+                if (explained.empty()) continue;
+                // It must also agree with what the student got right: a case they passed, it passes too.
+                if (!agrees_with_passes(s, pictures, lab, known, made, renders.passed)) continue;
+                for (std::size_t i = 0; i < left.size(); ++i)
+                    if (explained.count(left[i]->c->name)) pictures_of.emplace(std::make_pair(m, left[i]->c->name), *runs[i].image);
+                explains[m] = explained;
             }
             const LabDiagnosis ranked = rank_mistakes(lab.lab, left_names, known.mistakes, explains);
-            if (ranked.found.empty()) break;
+            // A mistake is named only where it explains at least half the failures still left when its turn comes: one
+            // that matches a case or two of many is a coincidence of pictures (lab 03's wrong slices look alike
+            // whatever chose them), not evidence.
+            std::set<std::string> newly;
+            std::size_t remaining = left.size();
             for (MistakeFound f : ranked.found) {
+                if (f.cases.size() * 2 < remaining) break;
+                remaining -= f.cases.size();
+                newly.insert(f.cases.begin(), f.cases.end());
                 f.with_earlier = round > 0;
                 named.push_back(index_of(known, f.names.front()));
                 d.found.push_back(std::move(f));
             }
+            if (newly.empty()) break;
             std::vector<const FailedRender*> still;
             for (const FailedRender* f : left)
-                if (std::find(ranked.unexplained.begin(), ranked.unexplained.end(), f->c->name) != ranked.unexplained.end()) still.push_back(f);
+                if (!newly.count(f->c->name)) still.push_back(f);
             left = still;
         }
         for (const FailedRender* f : left) d.unexplained.push_back(f->c->name);

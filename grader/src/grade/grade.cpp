@@ -55,7 +55,7 @@ CaseResult judge_render(GradingSession& s, CopySearch& copies, const LabCases& l
 // arrays, then, where the case is timed and its image passed, the frame time. Each check is a row. A check that fails
 // on what a served process drew after other cases is judged again on a render of the case alone (below).
 void grade_case(GradingSession& s, CopySearch& copies, const LabCases& lab, const GradeCase& c, bool live,
-                const LabBuild* build, std::vector<FailedRender>& failed) {
+                const LabBuild* build, LabRenders& renders) {
     CaseResult r = s.result_for(lab, c);
     r.reference = live ? "live" : "golden";
     const bool timed = live && s.options.timing && c.timing.points > 0;
@@ -139,9 +139,11 @@ void grade_case(GradingSession& s, CopySearch& copies, const LabCases& lab, cons
         failed_alone = again;
         judged_on = &*failed_alone;
     }
-    // A wrong picture or wrong numbers, kept for the diagnosis after the lab's last case.
+    // A wrong picture or wrong numbers, kept for the diagnosis after the lab's last case; and what a passed case expected.
     if (is_diagnosable(judged.status) && diagnoses(s, c))
-        failed.push_back({s.report.results.size(), &c, *judged_on, {expected, reference, live}});
+        renders.failed.push_back({s.report.results.size(), &c, *judged_on, {expected, reference, live}});
+    // A case passed: a mistake that would fail it is not the student's (diagnose_lab.h).
+    if (judged.status == CaseStatus::Passed && diagnoses(s, c)) renders.passed.push_back({&c, {expected, reference, live}});
     s.record(judged);
     const CaseResult image_row = s.report.results.back();
     if (!timed) return;
@@ -178,12 +180,12 @@ GradeReport grade(const GradeOptions& options, const std::function<void(const Gr
         const LabCases& lab = s.labs[i];
         const LabBuild* build = s.build_of(lab.lab);
         const std::size_t first = s.report.results.size();
-        std::vector<FailedRender> failed;
+        LabRenders renders;
         {
             const ServedWhileGrading served(s, lab);
             for (const auto& c : lab.cases) {
                 try {
-                    grade_case(s, copies, lab, c, s.live[i], build, failed);
+                    grade_case(s, copies, lab, c, s.live[i], build, renders);
                 } catch (const std::exception& e) {
                     // One case's trouble never stops the rest.
                     CaseResult r = s.result_for(lab, c);
@@ -195,7 +197,7 @@ GradeReport grade(const GradeOptions& options, const std::function<void(const Gr
         }
         // After the student's processes for the lab have ended: the mistakes' kits hold answers.
         try {
-            diagnose_lab(s, mistake_pictures, lab, first, failed);
+            diagnose_lab(s, mistake_pictures, lab, first, renders);
         } catch (const std::exception& e) {
             s.report.diagnosis_note += std::string(s.report.diagnosis_note.empty() ? "" : "; ") + lab.lab + ": " + e.what();
         }
