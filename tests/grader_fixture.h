@@ -45,6 +45,9 @@ inline GradeOptions instructor_options(const std::string& lab, const std::filesy
     options.seed = 20261122;
     // These tests check grading, not the walls (test_grader_attacks.cpp does): they run where unshare is refused.
     options.allow_readable_kit = true;
+    // Nor the diagnosis, which has tests of its own (test_grader_diagnosis*.cpp, the mutation and held-out tests turn it
+    // on): each failing case would render every known mistake of its lab.
+    options.diagnose = DiagnoseCases::Off;
     return options;
 }
 

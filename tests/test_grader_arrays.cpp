@@ -556,6 +556,7 @@ Image flat(std::uint8_t red) {
 // Grading the fake labs of `dir`'s kit/ and bin/ into `dir`/`out`.
 GradeOptions fake_kit_options(const test::TempDir& dir, const std::string& out) {
     GradeOptions options;
+    options.diagnose = DiagnoseCases::Off;  // the diagnosis has tests of its own (test_grader_diagnosis*.cpp)
     options.kit_root = dir.path("kit");
     options.bin_dir = dir.path("bin");
     options.out_dir = dir.path(out);

@@ -149,6 +149,7 @@ TEST_CASE("cases: a malformed spec or case file names the file and what is wrong
 
     // Through grade(): a broken case file and a lab with no cases stop the run with one clear line.
     GradeOptions options;
+    options.diagnose = DiagnoseCases::Off;  // the diagnosis has tests of its own (test_grader_diagnosis*.cpp)
     options.kit_root = dir.path();
     options.bin_dir = dir.path("bin");
     options.out_dir = dir.path("out");
@@ -171,6 +172,7 @@ TEST_CASE("cases: a truncated golden image is the reference's failure, named, no
     const std::string bytes = test::read_text(golden);
     std::ofstream(golden, std::ios::binary | std::ios::trunc) << bytes.substr(0, bytes.size() / 3);
     GradeOptions options;
+    options.diagnose = DiagnoseCases::Off;  // the diagnosis has tests of its own (test_grader_diagnosis*.cpp)
     options.kit_root = dir.path("kit");
     options.bin_dir = test::bin_dir();
     options.out_dir = dir.path("out");
@@ -259,6 +261,7 @@ TEST_CASE("cases: an instructor's mistake stops grading in one line before any s
     fs::create_directory_symlink(test::source_root() / "data", kit / "data");
     const std::string original = test::read_text(test::source_root() / "grader" / "cases" / "lab02.json");
     GradeOptions options;
+    options.diagnose = DiagnoseCases::Off;  // the diagnosis has tests of its own (test_grader_diagnosis*.cpp)
     options.kit_root = kit;
     options.bin_dir = test::bin_dir();
     options.out_dir = dir.path("out");

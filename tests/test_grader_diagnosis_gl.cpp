@@ -100,6 +100,7 @@ TEST_CASE("diagnosis: two mistakes in two TODOs are named both, a correct lab an
         options.hidden = false;
         options.timing = false;
         options.reference_cache = cache;
+        options.diagnose = DiagnoseCases::Default;
         const GradeReport report = grade(options);
         INFO(score_table(report));
         REQUIRE(report.diagnoses.size() == 1);

@@ -27,6 +27,7 @@ HeldOut held_out(const std::string& lab) {
         options.hidden = false;
         options.timing = false;
         options.reference_cache = cache;
+        options.diagnose = DiagnoseCases::Default;
         const GradeReport report = grade(options);
         bool lost = false;
         for (const auto& r : report.results) lost = lost || r.points < r.max_points;

@@ -43,6 +43,9 @@ Outcome grade_todo(GradeOptions options, const std::string& todo, bool self_chec
     options.hidden = false;
     options.timing = false;
     options.reference_cache = cache;
+    // The diagnosis is checked where students see it, the self-check: in instructor grading it names mistakes the same
+    // way (only what the failing picture is judged against differs), and twice would double the test's time.
+    options.diagnose = self_check ? DiagnoseCases::Public : DiagnoseCases::Off;
     const GradeReport report = grade(options);
     if (self_check) {
         options.lab_processes = LabProcesses::PerCase;
@@ -111,6 +114,7 @@ void mutation_test(const std::string& lab) {
                 killed += o.lost;
                 // The diagnosis (issue 40): a classic mistake graded as a student's is named first (or a twin, whose
                 // pictures are the same); a TODO left undone is "not started" and named as no mistake.
+                if (!self_check) continue;
                 if (m.name == m.todo + " left undone") {
                     CHECK(o.first_named.empty());
                     CHECK(o.not_started == std::vector<std::string>{m.todo});
@@ -133,7 +137,7 @@ void mutation_test(const std::string& lab) {
             }
             INFO(lab << " (" << (self_check ? "self-check" : "live") << "): " << classic_named << " of " << classic_diagnosed
                      << " classic mistakes named first:\n" << misnamed);
-            CHECK(classic_named * 100 >= classic_diagnosed * 95);
+            if (self_check) CHECK(classic_named * 100 >= classic_diagnosed * 95);
             int kept = 0, variants = 0;
             if (const Json* list = spec.find("variants"))
                 for (const Json& v : list->as_array()) {

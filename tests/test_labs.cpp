@@ -176,6 +176,7 @@ namespace {
 
 GradeOptions grading_options(const std::string& lab) {
     GradeOptions options;
+    options.diagnose = DiagnoseCases::Off;  // the diagnosis has tests of its own (test_grader_diagnosis*.cpp)
     options.kit_root = test::source_root();
     options.bin_dir = test::bin_dir();
     options.labs = {lab};

@@ -42,6 +42,7 @@ namespace {
 void es_full_marks_and_core_images(const std::string& lab) {
     const auto submission = test::solution_submission(lab, "es-solution-submission-" + lab);
     GradeOptions options;
+    options.diagnose = DiagnoseCases::Off;  // the diagnosis has tests of its own (test_grader_diagnosis*.cpp)
     options.kit_root = test::source_root();
     options.bin_dir = test::bin_dir();
     options.labs = {lab};
@@ -103,6 +104,7 @@ TEST_CASE("es: every lab has its full-marks test above", "[lab][es]") {
 
 TEST_CASE("es: graded on OpenGL ES, the starter fails every TODO while the reference renders every case", "[lab][es]") {
     GradeOptions options;
+    options.diagnose = DiagnoseCases::Off;  // the diagnosis has tests of its own (test_grader_diagnosis*.cpp)
     options.kit_root = test::source_root();
     options.bin_dir = test::bin_dir();
     options.profile = Profile::Es;
