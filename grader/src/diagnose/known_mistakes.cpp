@@ -6,8 +6,6 @@
 #include "tools/starter.h"
 
 #include <algorithm>
-#include <fstream>
-#include <iterator>
 #include <map>
 #include <set>
 #include <sstream>
@@ -42,9 +40,7 @@ KnownMistakes known_mistakes(const fs::path& kit_root, const std::string& lab) {
     std::sort(sources.begin(), sources.end());
     for (const fs::path& source : sources) {
         const std::string name = source.filename().string();
-        std::ifstream in(source, std::ios::binary);
-        const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-        for (const auto& id : make_starter(text, name).todo_ids) {
+        for (const auto& id : make_starter(read_text_file(source), name).todo_ids) {
             if (is_cpp_file(name)) in_cpp.insert(id);
             if (std::find(files_of[id].begin(), files_of[id].end(), name) == files_of[id].end()) files_of[id].push_back(name);
         }
@@ -58,11 +54,6 @@ KnownMistakes known_mistakes(const fs::path& kit_root, const std::string& lab) {
 }
 
 namespace {
-
-std::string file_text(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
 
 std::string trimmed(const std::string& line) {
     const auto first = line.find_first_not_of(" \t\r");
@@ -90,7 +81,7 @@ bool still_starter(const fs::path& kit_root, const std::string& lab_dir, const f
         std::vector<std::string>* follow = nullptr;
         std::vector<std::string> prefix;
         const std::string marker = "TODO(" + todo + ")";
-        for (const std::string& line : lines_of(file_text(KitLayout{kit_root}.solutions() / lab_dir / file))) {
+        for (const std::string& line : lines_of(read_text_file(KitLayout{kit_root}.solutions() / lab_dir / file))) {
             if (line.rfind("//@solution", 0) == 0) {
                 ours = trimmed(line.substr(11)) == todo;
                 in_solution = true;
@@ -121,8 +112,10 @@ bool still_starter(const fs::path& kit_root, const std::string& lab_dir, const f
         if (blocks.empty()) continue;
         // The student's file: right after each comment that names the TODO (and the comment lines with it), a block's
         // lines and the line after it, in a row (blank lines aside).
+        std::error_code ec;
+        if (!fs::is_regular_file(student_folder / file, ec)) continue;
         std::vector<std::string> student;
-        for (const std::string& line : lines_of(file_text(student_folder / file)))
+        for (const std::string& line : lines_of(read_text_file(student_folder / file)))
             if (!line.empty()) student.push_back(line);
         for (std::size_t i = 0; i < student.size(); ++i) {
             if (student[i].find(marker) == std::string::npos) continue;

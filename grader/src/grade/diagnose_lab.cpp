@@ -57,11 +57,11 @@ void diagnose_lab(GradingSession& s, MistakePictures& pictures, const LabCases& 
             d.not_started.push_back(r.todo);
     }
     std::vector<std::string> failing;
-    std::vector<const GradeCase*> cases;
-    for (const FailedRender& f : failed) {
-        failing.push_back(f.c->name);
-        cases.push_back(f.c);
-    }
+    for (const FailedRender& f : failed) failing.push_back(f.c->name);
+    // The report's row of a failing case.
+    const auto row_of = [&](const std::string& name) -> CaseResult& {
+        return s.report.results[std::find_if(failed.begin(), failed.end(), [&](const FailedRender& x) { return x.c->name == name; })->row];
+    };
     if (!failed.empty()) {
         KnownMistakes known;
         try {
@@ -166,18 +166,14 @@ void diagnose_lab(GradingSession& s, MistakePictures& pictures, const LabCases& 
             }
             const std::string todo = confirmed.empty() ? starters.front() : confirmed.front();
             if (std::find(d.not_started.begin(), d.not_started.end(), todo) == d.not_started.end()) d.not_started.push_back(todo);
-            for (const std::string& name : found.cases) {
-                const auto f = std::find_if(failed.begin(), failed.end(), [&](const FailedRender& x) { return x.c->name == name; });
-                s.report.results[f->row].mistake_todo = todo;  // "mistake" stays empty: not started
-            }
+            for (const std::string& name : found.cases) row_of(name).mistake_todo = todo;  // "mistake" stays empty: not started
         }
         d.found = std::move(mistakes_found);
         // Each explained row: its mistake, and that mistake's picture beside the student's.
         for (const MistakeFound& found : d.found) {
             const std::size_t m = index_of(known, found.names.front());
             for (const std::string& name : found.cases) {
-                const auto f = std::find_if(failed.begin(), failed.end(), [&](const FailedRender& x) { return x.c->name == name; });
-                CaseResult& r = s.report.results[f->row];
+                CaseResult& r = row_of(name);
                 r.mistake = found.says;
                 r.mistake_todo = found.todo;
                 r.mistake_sheet = found.sheet;

@@ -129,15 +129,14 @@ void grade_case(GradingSession& s, CopySearch& copies, const LabCases& lab, cons
     // says the lab kept something between cases. Not for a lab whose C++ is the kit's own (its starter's, or the
     // solution's), which the kit's tests prove keeps nothing: only its GLSL is the student's, and a GL context is new
     // for every case.
-    std::optional<LabRun> failed_alone;
+    std::optional<LabRun> again;  // the case rendered alone, where it was
     const bool alone_needed = judged.status != CaseStatus::Passed && student.after_other_cases && !s.cpp_is_the_kits(lab.lab);
     if (alone_needed) {
         const LabRunner alone = s.student.alone();
-        const LabRun again = alone.render(lab.lab, lab, c, s.limits(lab, true));
-        judged = judge_render(s, copies, lab, c, live, r, again, alone, expected, reference);
+        again = alone.render(lab.lab, lab, c, s.limits(lab, true));
+        judged = judge_render(s, copies, lab, c, live, r, *again, alone, expected, reference);
         if (judged.status == CaseStatus::Passed) judged.detail += kPassedOnlyAlone;
-        failed_alone = again;
-        judged_on = &*failed_alone;
+        judged_on = &*again;
     }
     // A wrong picture or wrong numbers, kept for the diagnosis after the lab's last case; and what a passed case expected.
     if (is_diagnosable(judged.status) && diagnoses(s, c))

@@ -8,7 +8,6 @@
 
 #include <cstdlib>
 #include <fstream>
-#include <iterator>
 
 namespace fs = std::filesystem;
 
@@ -42,10 +41,8 @@ fs::path MistakePictures::kit_of(const KnownMistakes& known, const std::vector<s
                 continue;
             }
             for (const std::string& file : mistake.files) {
-                std::ifstream in(lab_folder / file, std::ios::binary);
-                const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-                in.close();
-                std::ofstream(lab_folder / file, std::ios::binary | std::ios::trunc) << make_starter(text, file, mistake.todo).text;
+                const std::string text = make_starter(read_text_file(lab_folder / file), file, mistake.todo).text;
+                std::ofstream(lab_folder / file, std::ios::binary | std::ios::trunc) << text;
             }
         }
     });

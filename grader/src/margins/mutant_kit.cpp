@@ -10,15 +10,12 @@
 namespace fs = std::filesystem;
 
 namespace gsv {
-namespace {
 
-std::string read_whole(const fs::path& file) {
+std::string read_text_file(const fs::path& file) {
     std::ifstream in(file, std::ios::binary);
     if (!in) throw Error("cannot read " + file.string());
     return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
-
-}  // namespace
 
 Json read_mutant_spec(const fs::path& kit_root, const std::string& lab) {
     return read_json_file(KitLayout{kit_root}.tests() / "mutants" / (lab + ".json"));
@@ -37,7 +34,7 @@ std::vector<std::string> labs_with_mutants(const fs::path& kit_root) {
 
 void apply_mutant_edits(const fs::path& lab_folder, const Json& edit, const fs::path& kit_root) {
     const fs::path file = lab_folder / edit.string_at("file");
-    std::string text = read_whole(file);
+    std::string text = read_text_file(file);
     auto one = [&](const Json& e) {
         const std::string find = e.string_at("find");
         const auto at = text.find(find);

@@ -22,6 +22,9 @@ std::vector<std::string> labs_with_mutants(const std::filesystem::path& kit_root
 // "@KIT@" in a replacement becomes `kit_root`. Throws gsv::Error when a find is not in the file.
 void apply_mutant_edits(const std::filesystem::path& lab_folder, const Json& edit, const std::filesystem::path& kit_root);
 
+// A file of the kit (or of a copy of a lab) as text; throws gsv::Error naming it when it cannot be read.
+std::string read_text_file(const std::filesystem::path& file);
+
 // True for a C++ file, which the copied binary would not see: such an edit needs a submission the grader builds.
 bool is_cpp_file(const std::string& file);
 
