@@ -49,7 +49,8 @@ add_library(gsv_grader_page STATIC
   ${PROJECT_SOURCE_DIR}/grader/src/cases/cases.cpp ${PROJECT_SOURCE_DIR}/grader/src/cases/draw.cpp
   ${PROJECT_SOURCE_DIR}/grader/src/judge/array_compare.cpp ${PROJECT_SOURCE_DIR}/grader/src/judge/image_verdict.cpp
   ${PROJECT_SOURCE_DIR}/grader/src/judge/needs.cpp ${PROJECT_SOURCE_DIR}/grader/src/report/report_table.cpp
-  ${PROJECT_SOURCE_DIR}/grader/src/report/report_format.cpp ${PROJECT_SOURCE_DIR}/grader/src/judge/grade_result.cpp)
+  ${PROJECT_SOURCE_DIR}/grader/src/report/report_format.cpp ${PROJECT_SOURCE_DIR}/grader/src/judge/grade_result.cpp
+  ${PROJECT_SOURCE_DIR}/grader/src/diagnose/ranking.cpp ${PROJECT_SOURCE_DIR}/grader/src/diagnose/shipped_diagnosis.cpp)
 target_link_libraries(gsv_grader_page PUBLIC gsv_common)
 target_compile_options(gsv_grader_page PRIVATE -Wall -Wextra)
 # Compiled once for every page (an object library: its EMSCRIPTEN_BINDINGS would be dropped from a static one).

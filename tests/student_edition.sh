@@ -159,4 +159,30 @@ run cmake --build "$kit/build" --target lab01 -j 2 || fail "the export does not 
 step "self-check the solution"
 grade "$tmp/grade-solution" full
 
+step "a known mistake in L01-T1, self-checked: the shipped pictures name it"
+# The export has no tests/ and no solutions: what names the mistake is grader/golden/lab01/mistakes.* alone.
+[ ! -d "$kit/tests" ] && [ -f "$kit/grader/golden/lab01/mistakes.json" ] || fail "the export lacks the shipped mistakes, or has tests/"
+says=$(python3 - "$root/tests/mutants/lab01.json" "$kit/labs/lab01_gooch" <<'PY'
+import json, sys
+spec = json.load(open(sys.argv[1]))
+m = next(m for m in spec["mutants"] if m["name"] == "the normal left in the model's space")
+path = f"{sys.argv[2]}/{m['file']}"
+text = open(path).read()
+assert m["find"] in text, f"{m['name']}: its edit does not apply"
+open(path, "w").write(text.replace(m["find"], m["replace"], 1))
+print(m["says"])
+PY
+) || fail "cannot make lab01's L01-T1 mistake in the export"
+run cmake --build "$kit/build" --target lab01 -j 2 || fail "the export does not build with the mistake"
+rc=0
+run "$kit/build/bin/gsv-grade" --kit "$kit" --bin "$kit/build/bin" --out "$tmp/grade-mistake" --labs lab01 || rc=$?
+[ $rc -le 1 ] || fail "gsv-grade exited $rc on the mistake"
+grep -qF "$says" "$tmp/grade-mistake/results.json" ||
+  fail "results.json of the L01-T1 mistake does not say what went wrong ('$says')"
+python3 -c 'import html, sys; sys.exit(sys.argv[2] not in html.unescape(open(sys.argv[1]).read()))' \
+  "$tmp/grade-mistake/report.html" "$says" || fail "report.html of the L01-T1 mistake does not say what went wrong"
+size=$(stat -c %s "$tmp/grade-mistake/report.html")
+[ "$size" -lt 2000000 ] || fail "the student's report.html is $size bytes, not well under 2 MB"
+echo "the student's report.html: $size bytes"
+
 step "passed"

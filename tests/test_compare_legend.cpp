@@ -2,6 +2,9 @@
 #include "catch.hpp"
 #include "common/image/comparison_image.h"
 #include "common/image/image.h"
+#include "common/app/known_mistake_pictures.h"
+#include "common/io/json.h"
+#include "grader/src/margins/mutant_kit.h"
 #include "grader/src/run/process.h"
 #include "lab_runner.h"
 #include "test_support.h"
@@ -123,9 +126,50 @@ TEST_CASE("compare: with no solution beside it (a student's kit) the case's gold
     const std::string size = std::to_string(golden.width) + "x" + std::to_string(golden.height);
     const auto yours = run(lab, {"render", "--case", "phong", "--size", size, "--out", dir.path("yours.png").string()}, dir.path());
     REQUIRE(yours.exit_code == 0);
-    const Image expected = gsv::compose_comparison(gsv::read_png(dir.path("yours.png")), golden, "yours: lab01 (starter)",
-                                                   "reference: golden image grader/golden/lab01/phong.png");
+    // The starter's phong is a TODO not started as the kit ships its picture: the fourth view says so.
+    const Image mine = gsv::read_png(dir.path("yours.png"));
+    const auto panel = gsv::known_mistake_panel(gsv::read_known_mistake_pictures(GSV_SOURCE_ROOT, "lab01"), "phong", mine, golden);
+    REQUIRE(panel);
+    CHECK(contains(panel->label, "not started"));
+    const Image expected = gsv::compose_comparison(mine, golden, "yours: lab01 (starter)",
+                                                   "reference: golden image grader/golden/lab01/phong.png", nullptr, &*panel);
     CHECK(same_pixels(gsv::read_png(dir.path("golden.png")), expected));
+}
+
+TEST_CASE("compare: where yours is a known mistake's picture (the pictures the kit ships), it is the fourth view, with what went wrong", "[lab][labs]") {
+    // lab01's solution with the normal left in the model's space, in a kit of its own with no solution beside the lab:
+    // compared with the golden image of "stretched", the case that mistake fails.
+    gsv::test::TempDir dir;
+    const gsv::Json spec = gsv::read_json_file(fs::path(GSV_SOURCE_ROOT) / "tests" / "mutants" / "lab01.json");
+    const gsv::Json* mistake = nullptr;
+    for (const gsv::Json& m : spec.array_at("mutants").as_array())
+        if (m.string_at("name") == "the normal left in the model's space") mistake = &m;
+    REQUIRE(mistake);
+    gsv::make_edited_kit(dir.path("edited"), GSV_SOURCE_ROOT, gsv::test::bin_dir(), "lab01", "lab01_gooch", *mistake);
+    fs::create_directory_symlink(fs::path(GSV_SOURCE_ROOT) / "grader", dir.path("edited/kit/grader"));
+    const fs::path lab = dir.path("edited/bin/lab01");
+    const auto compare = [&](const std::string& case_name, const fs::path& out) {
+        std::vector<std::string> argv{lab.string(), "compare", "--case", case_name, "--out", out.string()};
+        gsv::ProcessLimits limits;
+        limits.timeout = std::chrono::milliseconds(120000);
+        return gsv::run_process(argv, dir.path(), limits, {"GSV_ROOT=" + dir.path("edited/kit").string()});
+    };
+    const auto result = compare("stretched", dir.path("stretched.png"));
+    INFO(result.output);
+    REQUIRE(result.exit_code == 0);
+    CHECK(contains(result.output, "| a known mistake's picture"));
+    CHECK(contains(result.output, "what went wrong: looks like a known mistake in L01-T1: " + mistake->string_at("says") +
+                                      " (its picture, reduced)"));
+    const Image golden = gsv::read_png(fs::path(GSV_SOURCE_ROOT) / "grader" / "golden" / "lab01" / "stretched.png");
+    const Image written = gsv::read_png(dir.path("stretched.png"));
+    gsv::ComparisonLayout three;
+    gsv::compose_comparison(golden, golden, "a", "b", &three);
+    CHECK(written.width > three.panels[2][2] + golden.width);  // a fourth panel past the difference
+    // A case the mistake draws right: three views, no mistake named.
+    const auto right = compare("diffuse", dir.path("diffuse.png"));
+    INFO(right.output);
+    REQUIRE(right.exit_code == 0);
+    CHECK_FALSE(contains(right.output, "what went wrong"));
 }
 
 TEST_CASE("compare: no reference, a demo without a golden image, changed settings, another size, an unknown case: one line each", "[lab][labs]") {

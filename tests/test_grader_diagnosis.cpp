@@ -15,7 +15,7 @@ using namespace gsv;
 namespace {
 
 KnownMistake mistake(const std::string& name, const std::string& todo) {
-    return {name, todo, "says " + name, "TODO table", Json::object(), false, {}};
+    return {name, todo, "says " + name, "TODO table", Json::object(), false, {}, {}};
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 #include "grader_fixture.h"
 #include "serve_compare.h"
 
+#include "common/app/known_mistake_pictures.h"
+#include "grader/src/diagnose/known_mistakes.h"
 #include "tools/starter.h"
 
 #include <cstdio>
@@ -52,8 +54,17 @@ Outcome grade_todo(GradeOptions options, const std::string& todo, bool self_chec
         test::check_graded_alike(grade(options), report, what, racy);
     }
     Outcome o;
+    // The self-check names mistakes by the ids the kit ships (grader/golden/<lab>/mistakes.json): the lists' names here.
+    std::map<std::string, std::string> name_of;
+    for (const std::string& lab : options.labs) {
+        const KnownMistakes known = known_mistakes(test::source_root(), lab);
+        const KnownMistakePictures shipped = read_known_mistake_pictures(test::source_root(), lab);
+        for (std::size_t m = 0; m < shipped.mistakes.size() && m < known.mistakes.size(); ++m)
+            name_of[shipped.mistakes[m].id] = known.mistakes[m].name;
+    }
     for (const auto& d : report.diagnoses) {
-        if (!d.found.empty() && o.first_named.empty()) o.first_named = d.found.front().names;
+        if (!d.found.empty() && o.first_named.empty())
+            for (const std::string& n : d.found.front().names) o.first_named.push_back(name_of.count(n) ? name_of[n] : n);
         o.not_started.insert(o.not_started.end(), d.not_started.begin(), d.not_started.end());
     }
     for (const auto& r : report.results) {

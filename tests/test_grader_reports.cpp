@@ -482,3 +482,63 @@ TEST_CASE("grader reports: wrong data shows in the table, report.json, JUnit and
     CHECK(contains(page, "the lab handed in no &#39;velocities&#39; array"));
     CHECK(count(page, "data:image/png;base64,") == 2);  // actual and expected; the image passed, no difference
 }
+
+TEST_CASE("grader reports: the student's report.html has no seed and no hidden case's settings, the descriptions and the diagnosis, and thumbnails", "[grader]") {
+    test::TempDir dir;
+    GradeReport report = sample_report(dir.path());
+    report.results[1].settings = {"light=secret-hidden-setting"};
+    report.results[1].description = "a hidden description";
+    report.results[1].reproduce = "build/bin/lab01 render --case shadow --set light=secret-hidden-setting";
+    LabDiagnosis d;
+    d.lab = "lab01";
+    d.failing = {"phong-wrong", "shadow"};
+    d.found.push_back({"L01-T1", "the normal stays in the model's space", "The hard cases", {"normals in model space"}, {"phong-wrong", "shadow"}});
+    report.diagnoses.push_back(d);
+    // A public failing case with full-size pictures: what the thumbnails replace.
+    CaseResult wrong = make_case("lab01", "phong-wrong", "L01-T3", 0, 2, CaseStatus::WrongImage);
+    wrong.visibility = "public";
+    wrong.description = "Phong shading, the highlight where the light says";
+    wrong.settings = {"shininess=64"};
+    wrong.actual_png = "lab01/phong-wrong/actual.png";
+    wrong.expected_png = "lab01/phong-wrong/expected.png";
+    wrong.diff_png = "lab01/phong-wrong/diff.png";
+    Image noise(256, 256);
+    std::uint32_t state = 12345;
+    for (auto& b : noise.rgba) b = static_cast<std::uint8_t>((state = state * 1664525u + 1013904223u) >> 24);
+    for (const auto& png : {wrong.actual_png, wrong.expected_png, wrong.diff_png}) write_png(dir.path(png), noise);
+    report.results.push_back(wrong);
+
+    const std::string instructor = html_report(report, dir.path(), ReportReader::Instructor);
+    const std::string student = html_report(report, dir.path(), ReportReader::Student);
+    CHECK(contains(instructor, "12345678901234567890"));
+    CHECK(contains(instructor, "secret-hidden-setting"));
+    CHECK_FALSE(contains(student, "12345678901234567890"));
+    CHECK_FALSE(contains(student, "secret-hidden-setting"));
+    CHECK_FALSE(contains(student, "a hidden description"));
+    CHECK_FALSE(contains(student, kHostileOutput.substr(0, 6) + "<"));  // a hidden case's output stays the instructor's
+    CHECK(contains(student, "Phong shading, the highlight where the light says"));
+    CHECK(contains(student, "shininess=64"));
+    // The diagnosis, of the public case only: the hidden one is not counted to the student.
+    CHECK((contains(student, "the normal stays in the model&#39;s space") || contains(student, "the normal stays in the model's space")));
+    CHECK(contains(student, "data:image/jpeg;base64,"));
+    CHECK_FALSE(contains(student, "data:image/png;base64,"));
+    // Three full-size noise pictures are ~600 kB as PNG; as thumbnails a few tens of kB.
+    CHECK(instructor.size() > 500000);
+    CHECK(student.size() < 60000);
+    // A hundred such failing cases (noise: no picture compresses worse) still make a report well under 2 MB: past its
+    // budget a picture is a line saying where to see it.
+    for (int i = 0; i < 99; ++i) report.results.push_back(wrong);
+    const std::string hundred = html_report(report, dir.path(), ReportReader::Student);
+    CHECK(hundred.size() < 1800000);
+    CHECK(contains(hundred, "left out to keep this report small"));
+
+    // write_reports: report.html is the instructor's in instructor grading, with the student's beside it; a
+    // self-check's report.html is the student's, and none beside it.
+    write_reports(report, dir.path("out"));
+    CHECK(contains(test::read_text(dir.path("out/report.html")), "12345678901234567890"));
+    CHECK_FALSE(contains(test::read_text(dir.path("out/student-report.html")), "12345678901234567890"));
+    report.mode = "self-check";
+    write_reports(report, dir.path("out"));
+    CHECK_FALSE(contains(test::read_text(dir.path("out/report.html")), "data:image/png"));
+    CHECK_FALSE(fs::exists(dir.path("out/student-report.html")));
+}

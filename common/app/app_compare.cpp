@@ -2,6 +2,7 @@
 // case's golden image) and their difference, amplified, in one PNG, with RMSE and the largest difference printed.
 // What a student looks at before asking why a case fails, and what a lecturer projects.
 #include "common/app/app_session.h"
+#include "common/app/known_mistake_pictures.h"
 #include "common/app/reference_image.h"
 #include "common/core/error.h"
 #include "common/gl/framebuffer.h"
@@ -10,6 +11,7 @@
 #include "common/io/output_folder.h"
 
 #include <cstdio>
+#include <optional>
 #include <string>
 
 namespace gsv {
@@ -42,12 +44,25 @@ int run_compare(Session& s) {
 
     const Image reference = source.kind == ReferenceSource::Kind::Golden ? golden : reference_image(s, source, width, height);
     const std::string reference_text = source.describe(s);
-    const Image composite = compose_comparison(yours.image, reference, "yours: " + s.title(), "reference: " + reference_text);
+    // A fourth view where the case is named and yours is the picture of a mistake the kit knows (the pictures it ships).
+    std::optional<MistakePanel> mistake;
+    if (!s.options.case_name.empty()) {
+        KnownMistakePictures known;
+        try {
+            known = read_known_mistake_pictures(s.find_assets().layout().root, s.info.id);
+        } catch (const Error& e) {
+            std::fprintf(stderr, "%s: the known mistakes are left out of the comparison: %s\n", s.info.id.c_str(), e.what());
+        }
+        mistake = known_mistake_panel(known, s.options.case_name, yours.image, reference);
+    }
+    const Image composite = compose_comparison(yours.image, reference, "yours: " + s.title(), "reference: " + reference_text,
+                                               nullptr, mistake ? &*mistake : nullptr);
     const ImageDifference d = image_difference(yours.image, reference);
 
     write_png(png, composite);
-    std::printf("%s: wrote %s (yours | reference | difference x%d, %dx%d each)\n", s.info.id.c_str(), png.c_str(),
-                difference_factor(d.max_rgb), width, height);
+    std::printf("%s: wrote %s (yours | reference | difference x%d%s, %dx%d each)\n", s.info.id.c_str(), png.c_str(),
+                difference_factor(d.max_rgb), mistake ? " | a known mistake's picture" : "", width, height);
+    if (mistake) std::printf("%s: what went wrong: %s\n", s.info.id.c_str(), mistake->label.c_str());
     std::printf("%s: against %s: RMSE %.4g, max difference %d of 255 (RGB), %ld of %ld pixels differ\n",
                 s.info.id.c_str(), reference_text.c_str(), d.rmse, d.max_rgb, d.differing_pixels,
                 static_cast<long>(width) * height);

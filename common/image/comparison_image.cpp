@@ -67,7 +67,7 @@ Image amplified_difference(const Image& yours, const Image& reference, int facto
 }
 
 Image compose_comparison(const Image& yours, const Image& reference, const std::string& yours_label,
-                         const std::string& reference_label, ComparisonLayout* layout) {
+                         const std::string& reference_label, ComparisonLayout* layout, const MistakePanel* mistake) {
     const ImageDifference d = image_difference(yours, reference);
     const int factor = difference_factor(d.max_rgb);
     const int w = yours.width, h = yours.height;
@@ -77,23 +77,30 @@ Image compose_comparison(const Image& yours, const Image& reference, const std::
 
     const std::string difference_label =
         d.max_rgb == 0 ? "difference: none, identical" : "difference \xC3\x97" + std::to_string(factor) + " (|yours - reference|)";
-    const std::vector<std::vector<std::string>> labels = {wrap_text(yours_label, w, px), wrap_text(reference_label, w, px),
-                                                          wrap_text(difference_label, w, px)};
+    std::vector<std::vector<std::string>> labels = {wrap_text(yours_label, w, px), wrap_text(reference_label, w, px),
+                                                    wrap_text(difference_label, w, px)};
+    if (mistake) {
+        if (mistake->picture.width != w || mistake->picture.height != h)
+            throw Error("a known mistake's picture of " + std::to_string(mistake->picture.width) + "x" +
+                        std::to_string(mistake->picture.height) + " beside renders of " + std::to_string(w) + "x" + std::to_string(h));
+        labels.push_back(wrap_text(mistake->label, w, px));
+    }
+    const int n = static_cast<int>(labels.size());
     std::size_t label_lines = 1;
     for (const auto& l : labels) label_lines = std::max(label_lines, l.size());
     char numbers[160];
     std::snprintf(numbers, sizeof numbers, "RMSE %.3g, max difference %d of 255 (RGB), %ld of %ld pixels differ",
                   d.rmse, d.max_rgb, d.differing_pixels, static_cast<long>(w) * h);
-    const std::vector<std::string> caption = wrap_text(numbers, 3 * w + 2 * gap, px);
+    const std::vector<std::string> caption = wrap_text(numbers, n * w + (n - 1) * gap, px);
 
     const int top = margin + static_cast<int>(label_lines) * line + px / 4;
-    Image out(3 * w + 2 * gap + 2 * margin, top + h + px / 3 + static_cast<int>(caption.size()) * line + margin);
+    Image out(n * w + (n - 1) * gap + 2 * margin, top + h + px / 3 + static_cast<int>(caption.size()) * line + margin);
     fill_rect(out, 0, 0, out.width, out.height, kGround);
     const Image difference = amplified_difference(yours, reference, factor);
-    const Image* panels[3] = {&yours, &reference, &difference};
+    const Image* panels[4] = {&yours, &reference, &difference, mistake ? &mistake->picture : nullptr};
     ComparisonLayout where;
     where.font_px = px;
-    for (int i = 0; i < 3; ++i) {
+    for (int i = 0; i < n; ++i) {
         const int x0 = margin + i * (w + gap);
         paste(out, *panels[i], x0, top);
         where.panels[static_cast<std::size_t>(i)] = {x0, top, x0 + w, top + h};

@@ -24,12 +24,20 @@ int difference_factor(int max_rgb);
 Image amplified_difference(const Image& yours, const Image& reference, int factor);
 
 struct ComparisonLayout {
-    std::array<std::array<int, 4>, 3> panels{};  // yours, reference, difference: [x0, x1) x [y0, y1) in the composite
+    // yours, reference, difference and, where given, the known mistake's: [x0, y0, x1, y1] in the composite
+    std::array<std::array<int, 4>, 4> panels{};
     int font_px = 0;
+};
+
+// A fourth panel: the picture of a known mistake that yours matches (common/app/known_mistake_pictures.h).
+struct MistakePanel {
+    Image picture;
+    std::string label;
 };
 
 // The composite: a label over each panel (wrapped to its width), and one line of numbers under them.
 Image compose_comparison(const Image& yours, const Image& reference, const std::string& yours_label,
-                         const std::string& reference_label, ComparisonLayout* layout = nullptr);
+                         const std::string& reference_label, ComparisonLayout* layout = nullptr,
+                         const MistakePanel* mistake = nullptr);
 
 }  // namespace gsv

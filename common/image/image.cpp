@@ -173,6 +173,38 @@ std::vector<std::uint8_t> encode_png(const Image& image) {
     return bytes;
 }
 
+std::vector<std::uint8_t> encode_jpeg(const Image& image, int quality) {
+    if (const std::string why = unencodable(image); !why.empty()) throw Error("cannot encode JPEG: " + why);
+    // JPEG has no alpha: the colour channels only, as the picture is seen.
+    std::vector<std::uint8_t> rgb(static_cast<std::size_t>(image.width) * image.height * 3);
+    for (std::size_t p = 0; p < rgb.size() / 3; ++p)
+        for (int c = 0; c < 3; ++c) rgb[p * 3 + c] = image.rgba[p * 4 + c];
+    std::vector<std::uint8_t> bytes;
+    if (!stbi_write_jpg_to_func(append_to_vector, &bytes, image.width, image.height, 3, rgb.data(), std::clamp(quality, 1, 100)))
+        throw Error("cannot encode JPEG: encoding failed");
+    return bytes;
+}
+
+Image thumbnail(const Image& image, int longest) {
+    const int side = std::max(image.width, image.height);
+    if (image.empty() || side <= longest) return image;
+    const int w = std::max(1, image.width * longest / side), h = std::max(1, image.height * longest / side);
+    Image out(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            // The mean of the source pixels this one covers.
+            const int x0 = x * image.width / w, x1 = std::max(x0 + 1, (x + 1) * image.width / w);
+            const int y0 = y * image.height / h, y1 = std::max(y0 + 1, (y + 1) * image.height / h);
+            unsigned sum[4] = {0, 0, 0, 0};
+            for (int sy = y0; sy < y1; ++sy)
+                for (int sx = x0; sx < x1; ++sx)
+                    for (int c = 0; c < 4; ++c) sum[c] += image.at(sx, sy)[c];
+            const unsigned n = static_cast<unsigned>((x1 - x0) * (y1 - y0));
+            for (int c = 0; c < 4; ++c) out.at(x, y)[c] = static_cast<std::uint8_t>((sum[c] + n / 2) / n);
+        }
+    return out;
+}
+
 Image to_rgba8(const ImageF& image) {
     Image out(image.width, image.height);
     const std::size_t pixel_count = out.rgba.size() / 4;

@@ -50,6 +50,11 @@ void write_png(const std::filesystem::path& path, const Image& image);
 // The bytes write_png would store: for containers built from PNG chunks (animated PNG).
 std::vector<std::uint8_t> encode_png(const Image& image);
 
+// JPEG bytes of the colour channels (quality 1..100): small pictures for a report a student downloads.
+std::vector<std::uint8_t> encode_jpeg(const Image& image, int quality);
+// The picture scaled down (area means) so its longer side is at most `longest`; as it is where it is no larger.
+Image thumbnail(const Image& image, int longest);
+
 // Clamps to [0,1] and rounds to the nearest of 256 levels. A pixel with a NaN in any channel
 // becomes opaque magenta, so a shader bug shows up in the PNG instead of being clamped away.
 Image to_rgba8(const ImageF& image);

@@ -181,6 +181,44 @@ async function oneTodoUndone(context, lab, todo) {
   await page.close();
 }
 
+// A known mistake made in the page (lab 01's normal left in the model's space): the page's self-check names it, as
+// gsv-grade's self-check does, with the mistake's picture beside the student's and in compare's fourth view.
+async function knownMistake(context, lab, name) {
+  const spec = JSON.parse(fs.readFileSync(path.join(args.kit, 'tests/mutants', lab + '.json'), 'utf8'));
+  const mistake = spec.mutants.find((m) => m.name === name);
+  const folder = fs.readdirSync(path.join(args.kit, 'solutions')).find((d) => d.startsWith(lab + '_'));
+  const dir = path.join(out, 'mistake-' + lab);
+  fs.rmSync(dir, { recursive: true, force: true });
+  fs.mkdirSync(dir, { recursive: true });
+  const shaders = fs.readdirSync(path.join(args.kit, 'solutions', folder)).filter((n) => /\.(vert|frag|glsl|comp)$/.test(n));
+  for (const n of shaders) {
+    let text = fs.readFileSync(path.join(args.kit, 'solutions', folder, n), 'utf8');
+    if (n === mistake.file) text = text.replace(mistake.find, mistake.replace);
+    fs.writeFileSync(path.join(dir, n), text);
+  }
+  const { page } = await openPage(context, args.base + '/solution-pages/' + lab + '/index.html');
+  await page.setInputFiles('#open', shaders.map((n) => path.join(dir, n)));
+  await page.waitForFunction(() => /^Opened/.test(document.getElementById('status').textContent));
+  await page.waitForTimeout(800);  // the editor's 300 ms pause, then the rebuild
+  const result = await selfCheck(page);
+  const named = result.results.filter((r) => r.mistake === mistake.says);
+  check(named.length > 0 && named.every((r) => r.mistake_todo === mistake.todo && r.mistake_picture),
+        lab + ' ' + mistake.todo + ' mistake in the page: named on ' + named.map((r) => r.name).join(', ') +
+        ' (' + result.results.filter((r) => r.status !== 'passed').length + ' cases failing)');
+  check(result.table.includes(mistake.says), lab + ' the page\'s table says what went wrong');
+  check(await page.evaluate(() => document.querySelector('#self-check-rows .mistake') !== null),
+        lab + ' the page shows what went wrong beside the pictures');
+  await page.screenshot({ path: path.join(out, lab + '-known-mistake-self-check.png'), fullPage: true });
+  const compareWidth = await page.evaluate((c) => new Promise((done) => {
+    const img = new Image();
+    img.onload = () => done(img.width);
+    img.src = window.gsvSelfCheck.compareUrl(c);
+  }), named.length ? named[0].name : 'stretched');
+  check(compareWidth > 4 * 256, lab + ' compare in the page has the mistake\'s picture as a fourth view (' + compareWidth + ' px wide)');
+  await page.evaluate(() => localStorage.clear());
+  await page.close();
+}
+
 // The editor: a broken edit, its fix, a reload, and the download graded by gsv-grade.
 async function editor(context, lab) {
   const { page } = await openPage(context, args.base + '/solution-pages/' + lab + '/index.html');
@@ -357,6 +395,7 @@ async function deckWithLiveLab(context) {
     const t0 = Date.now();
     try {
       await oneTodoUndone(context, 'lab01', 'L01-T4');
+      await knownMistake(context, 'lab01', 'the normal left in the model\'s space');
       await editor(context, 'lab01');
       await faults(context, browser);
       await deckWithLiveLab(context);

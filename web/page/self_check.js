@@ -1,5 +1,6 @@
 // The self-check's view: gsv-grade's table as the grader's code wrote it in the page (grader/src/app/page_self_check.cpp), and
-// for each case that did not pass, yours | golden | the difference, with compare's composite a click away.
+// for each case that did not pass, yours | golden | the difference (and the known mistake it matches, with what went
+// wrong), with compare's composite a click away.
 'use strict';
 window.gsvSelfCheck = (function () {
   const $ = (id) => document.getElementById(id);
@@ -40,8 +41,17 @@ window.gsvSelfCheck = (function () {
       const block = document.createElement('div');
       const title = document.createElement('p');
       title.textContent = r.name + ' (' + r.todo + '): ' + r.status + ' — ' + r.detail;
-      block.append(title, figure('yours', r.actual), figure('golden', golden(r.name)));
+      block.append(title);
+      if (r.mistake) {
+        // What went wrong: the known mistake this picture is (gsv-grade's self-check names it the same way).
+        const said = document.createElement('p');
+        said.className = 'mistake';
+        said.textContent = 'What went wrong: ' + r.mistake + ' (' + r.mistake_todo + '; see "' + r.mistake_sheet + '" in the sheet)';
+        block.append(said);
+      }
+      block.append(figure('yours', r.actual), figure('golden', golden(r.name)));
       if (r.diff) block.append(figure('over the tolerance', r.diff));
+      if (r.mistake_picture) block.append(figure('the known mistake\'s picture (reduced)', r.mistake_picture));
       rows.append(block);
     }
     window.gsvPage.selfCheck = result;

@@ -15,7 +15,7 @@ const char* const kGradeUsage =
     "                 [--out DIR]"
     " [--labs lab01,lab02] [--cases gyre,wrap] [--todo L02-T3] [--seed N] [--self-check] [--no-timing]\n"
     "                 [--public-only] [--profile core|es]"
-    " [--timeout S] [--fail-under F] [--update-goldens] [--allow-readable-kit] [--no-namespaces]\n"
+    " [--timeout S] [--fail-under F] [--update-goldens] [--update-mistakes] [--allow-readable-kit] [--no-namespaces]\n"
     "                 [--no-sandbox] [--build-all] [--fresh-references] [--grader-cache DIR] [--regrade-only changed]\n"
     "                 [--one-process-per-case] [--diagnose off|public|all] [--quiet] [--help] [--version]\n"
     "  --kit DIR         the kit (cases, goldens, hidden cases, solutions); default: the one this was built from\n"
@@ -40,6 +40,8 @@ const char* const kGradeUsage =
     "  --timeout S       wall-clock limit per student lab process (default: the case file's)\n"
     "  --fail-under F    exit 1 when the score is below F (0..1) of the maximum: a CI gate\n"
     "  --update-goldens  render grader/golden/<lab>/<case>.png (and <case>.<array>.f32s) with the reference solutions\n"
+    "  --update-mistakes render grader/golden/<lab>/mistakes.json and mistakes.png, the known mistakes' pictures a\n"
+    "                    student's copy diagnoses with (tests/mutants/<lab>.json on every public case), after the goldens\n"
     "  --allow-readable-kit  where the sandbox cannot hide the kit (no namespaces), grade hidden cases and live\n"
     "                    references anyway; without it they are refused there, and the report says which walls were up\n"
     "  --no-namespaces   every wall but the namespaces: how the grader behaves where unshare is refused\n"
@@ -154,6 +156,7 @@ GradeAction read_grade_command(int argc, char** argv, GradeCommand& command) {
         else if (a == "--sandbox-uid") options.sandbox_uid = static_cast<unsigned>(number(1000, 4000000000.0));
         else if (a == "--timeout") { options.timeout_s = number(0.1, 3600); pass_through.insert(pass_through.end(), {a, std::to_string(options.timeout_s)}); }
         else if (a == "--update-goldens") command.update_goldens = true;
+        else if (a == "--update-mistakes") command.update_mistakes = true;
         else if (a == "--profile") {
             options.profile = parse_profile(value());
             pass_through.insert(pass_through.end(), {a, profile_name(options.profile)});
@@ -178,6 +181,10 @@ GradeAction read_grade_command(int argc, char** argv, GradeCommand& command) {
                     std::string(profile_name(options.profile)));
     if (command.batch.empty() && !command.shard.empty()) throw Error("--shard " + command.shard + " needs --batch DIR");
     if (command.batch.empty() && !command.roster.empty()) throw Error("--roster needs --batch DIR");
+    if (command.update_mistakes && (command.update_goldens || command.regrade_only_changed || !command.batch.empty()))
+        throw Error("--update-mistakes runs alone: after --update-goldens, not with it, and grades nothing");
+    if (command.update_mistakes && (options.profile != Profile::Core || !options.cases.empty() || !options.todo.empty()))
+        throw Error("--update-mistakes renders every public case on the core profile: drop --profile, --case and --todo");
     if (command.update_goldens && command.regrade_only_changed) throw Error("--regrade-only grades; --update-goldens rewrites the goldens");
     return GradeAction::Grade;
 }

@@ -14,6 +14,7 @@
 #include "grader/src/batch/batch_record.h"
 #include "grader/src/cases/draw.h"
 #include "grader/src/golden/golden_update.h"
+#include "grader/src/golden/mistake_update.h"
 #include "grader/src/grade/grade.h"
 #include "grader/src/grade/grade_exit.h"
 #include "grader/src/run/kit_fault.h"
@@ -145,6 +146,17 @@ int grade_class(const gsv::GradeCommand& command, const char* argv0) {
     return gsv::kGradeOk;
 }
 
+// --update-mistakes: a line per lab.
+int rewrite_mistakes(const gsv::GradeCommand& command) {
+    const gsv::GradeReport report = gsv::update_mistake_pictures(command.options, print_progress);
+    int failed = 0;
+    for (const auto& r : report.results) {
+        std::fprintf(r.status == gsv::CaseStatus::Passed ? stdout : stderr, "%s: %s\n", r.lab.c_str(), r.detail.c_str());
+        failed += r.status != gsv::CaseStatus::Passed;
+    }
+    return failed ? gsv::kGradeFailed : gsv::kGradeOk;
+}
+
 // --update-goldens: a line for each golden the reference did not render.
 int rewrite_goldens(const gsv::GradeCommand& command) {
     const gsv::GradeReport report = gsv::update_goldens(command.options, print_progress);
@@ -244,6 +256,7 @@ int main(int argc, char** argv) {
         // Before any build or lab runs: a grading that cannot write its reports says so first (a batch once its
         // command line is known good, so that a refused one leaves no folder behind).
         gsv::prepare_output_folder(command.options.out_dir, "--out");
+        if (command.update_mistakes) return rewrite_mistakes(command);
         return command.update_goldens ? rewrite_goldens(command) : grade_one(command, argv[0]);
     } catch (const gsv::KitFault& e) {
         // The kit's own fault: one line saying what to fix; the student's results.json says it is not theirs.

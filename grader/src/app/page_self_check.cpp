@@ -10,14 +10,19 @@
 #include "common/image/comparison_image.h"
 #include "common/image/image.h"
 #include "common/io/json.h"
+#include "common/app/known_mistake_pictures.h"
 #include "grader/src/cases/cases.h"
+#include "grader/src/diagnose/shipped_diagnosis.h"
 #include "grader/src/judge/image_verdict.h"
 #include "grader/src/judge/needs.h"
 #include "grader/src/report/report.h"
 
 #include <emscripten/bind.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <map>
+#include <set>
 
 namespace gsv {
 namespace {
@@ -40,7 +45,12 @@ Image draw_case(Session& s, const LabCases& lab, const GradeCase& c) {
     return read_back(target).image;
 }
 
-CaseResult check_case(Session& s, const LabCases& lab, const GradeCase& c) {
+// A failing case's pictures, kept for the diagnosis after the last case.
+struct Drawn {
+    Image actual, expected;
+};
+
+CaseResult check_case(Session& s, const LabCases& lab, const GradeCase& c, std::map<std::string, Drawn>& drawn) {
     CaseResult r = case_row(lab, c);
     r.reference = "golden";
     if (!fits_webgl2(c)) {
@@ -71,7 +81,59 @@ CaseResult check_case(Session& s, const LabCases& lab, const GradeCase& c) {
         write_png(dir / "compare.png", compose_comparison(actual, expected, "yours: " + s.title() + " in the page",
                                                           "golden: " + c.name));
     }
+    drawn[c.name] = {std::move(actual), expected};
     return r;
+}
+
+// What went wrong, as gsv-grade's self-check says it (grader/src/diagnose/shipped_diagnosis.h): the failing cases'
+// pictures against the known mistakes' pictures the page has with the goldens; an explained case's compare.png gains
+// the mistake's picture as a fourth view.
+void diagnose(Session& s, const LabCases& lab, GradeReport& report, const std::map<std::string, Drawn>& drawn) {
+    KnownMistakePictures shipped;
+    try {
+        shipped = read_known_mistake_pictures(s.assets->root(), lab.lab);
+    } catch (const std::exception& e) {
+        report.diagnosis_note = e.what();
+        return;
+    }
+    LabDiagnosis none;
+    none.lab = lab.lab;
+    std::vector<ShippedFailure> failed;
+    std::set<std::string> passed;
+    for (const CaseResult& r : report.results) {
+        if (r.status == CaseStatus::Passed) passed.insert(r.name);
+        if (r.status == CaseStatus::NotDone && std::find(none.not_started.begin(), none.not_started.end(), r.todo) == none.not_started.end())
+            none.not_started.push_back(r.todo);
+        const auto it = drawn.find(r.name);
+        if ((r.status == CaseStatus::WrongImage || r.status == CaseStatus::BlankImage) && it != drawn.end())
+            failed.push_back({r.name, &it->second.actual, &it->second.expected});
+    }
+    if (shipped.empty() || failed.empty()) {
+        if (!none.not_started.empty()) report.diagnoses.push_back(none);
+        return;
+    }
+    ShippedDiagnosis found = diagnose_shipped(shipped, failed, passed, s.assets->lab_dir());
+    for (CaseResult& r : report.results) {
+        if (const auto t = found.not_started_cases.find(r.name); t != found.not_started_cases.end()) r.mistake_todo = t->second;
+        const auto m = found.mistake_of_case.find(r.name);
+        if (m == found.mistake_of_case.end()) continue;
+        const ShippedMistake& mistake = shipped.mistakes[m->second];
+        r.mistake = mistake.says;
+        r.mistake_todo = mistake.todo;
+        r.mistake_sheet = mistake.sheet;
+        const Drawn& d = drawn.at(r.name);
+        MistakePanel panel{shipped_picture(shipped, m->second, r.name, d.actual.width, d.actual.height),
+                           "looks like a known mistake in " + mistake.todo + ": " + mistake.says + " (its picture, reduced)"};
+        const fs::path dir = kOut / r.name;
+        write_png(dir / "mistake.png", panel.picture);
+        r.mistake_png = (dir / "mistake.png").string();
+        write_png(dir / "compare.png", compose_comparison(d.actual, d.expected, "yours: " + s.title() + " in the page",
+                                                          "golden: " + r.name, nullptr, &panel));
+    }
+    for (const std::string& t : none.not_started)
+        if (std::find(found.diagnosis.not_started.begin(), found.diagnosis.not_started.end(), t) == found.diagnosis.not_started.end())
+            found.diagnosis.not_started.push_back(t);
+    report.diagnoses.push_back(std::move(found.diagnosis));
 }
 
 Json result_json(const CaseResult& r) {
@@ -90,6 +152,10 @@ Json result_json(const CaseResult& r) {
     j["tolerance_max_differing_fraction"] = r.image.tolerance.max_differing_fraction;
     j["actual"] = r.actual_png;
     j["diff"] = r.diff_png;
+    j["mistake"] = r.mistake;
+    j["mistake_todo"] = r.mistake_todo;
+    j["mistake_sheet"] = r.mistake_sheet;
+    j["mistake_picture"] = r.mistake_png;
     return j;
 }
 
@@ -113,8 +179,11 @@ std::string self_check(const std::string& only) {
         report.mode = "self-check";
         report.profile = "es";
         report.sandbox = "none needed: your own code, in your own browser";
+        std::map<std::string, Drawn> drawn;
         for (const auto& c : lab.cases)
-            if (c.visibility == "public" && (only.empty() || c.name == only)) report.results.push_back(check_case(s, lab, c));
+            if (c.visibility == "public" && (only.empty() || c.name == only)) report.results.push_back(check_case(s, lab, c, drawn));
+        // Before the needs: a failure a known mistake explains is put on the mistake's TODO (grader/src/judge/needs.h).
+        diagnose(s, lab, report, drawn);
         blame_needed_todos(lab, report.results, 0);
         s.params = before;
         if (auto error = s.sync_params()) throw Error(*error);

@@ -36,45 +36,4 @@ bool student_matches(const LabCases& lab, const GradeCase& c, const LabRun& stud
     return row.status == CaseStatus::Passed;
 }
 
-LabDiagnosis rank_mistakes(const std::string& lab, const std::vector<std::string>& failing,
-                           const std::vector<KnownMistake>& mistakes, const std::vector<std::set<std::string>>& explains) {
-    LabDiagnosis d;
-    d.lab = lab;
-    d.failing = failing;
-    std::set<std::string> left(failing.begin(), failing.end());
-    std::vector<bool> named(mistakes.size(), false);
-    const auto still_explained = [&](std::size_t m) {
-        std::vector<std::string> cases;
-        for (const auto& f : failing)
-            if (left.count(f) && explains[m].count(f)) cases.push_back(f);
-        return cases;
-    };
-    while (!left.empty()) {
-        std::size_t best = mistakes.size();
-        std::size_t best_count = 0;
-        for (std::size_t m = 0; m < mistakes.size(); ++m) {
-            if (named[m]) continue;
-            const std::size_t count = still_explained(m).size();
-            if (count == 0) continue;
-            if (best == mistakes.size() || count > best_count ||
-                (count == best_count && explains[m].size() < explains[best].size())) {
-                best = m;
-                best_count = count;
-            }
-        }
-        if (best == mistakes.size()) break;
-        MistakeFound found{mistakes[best].todo, mistakes[best].says, mistakes[best].sheet, {}, still_explained(best)};
-        for (std::size_t m = 0; m < mistakes.size(); ++m) {
-            if (named[m] || explains[m] != explains[best]) continue;
-            named[m] = true;
-            found.names.push_back(mistakes[m].name);
-        }
-        for (const auto& c : found.cases) left.erase(c);
-        d.found.push_back(std::move(found));
-    }
-    for (const auto& f : failing)
-        if (left.count(f)) d.unexplained.push_back(f);
-    return d;
-}
-
 }  // namespace gsv

@@ -7,6 +7,7 @@
 // nothing there explains nothing there.
 #include "grader/src/cases/cases.h"
 #include "grader/src/diagnose/known_mistakes.h"
+#include "grader/src/diagnose/ranking.h"
 #include "grader/src/judge/grade_result.h"
 #include "grader/src/run/lab_run.h"
 
@@ -37,11 +38,5 @@ bool mistake_fails(const LabCases& lab, const GradeCase& c, const LabRun& mistak
 // Whether the student's render of case `c` is the mistake's, as the case would judge it against a reference rendered on
 // the same machine (its live tolerance, arrays included).
 bool student_matches(const LabCases& lab, const GradeCase& c, const LabRun& student, const LabRun& mistake);
-
-// The ranking: `explains[m]` holds the failing cases mistake m explains. Greedily the mistake that explains the most
-// failing cases not yet explained (ties: the one that explains fewer cases in all, then the list's order); mistakes that
-// explain exactly the same cases as it are its twins (named together, one text). Stops where none explains another.
-LabDiagnosis rank_mistakes(const std::string& lab, const std::vector<std::string>& failing,
-                           const std::vector<KnownMistake>& mistakes, const std::vector<std::set<std::string>>& explains);
 
 }  // namespace gsv

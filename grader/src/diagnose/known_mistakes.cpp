@@ -28,7 +28,7 @@ KnownMistakes known_mistakes(const fs::path& kit_root, const std::string& lab) {
         if (is_cpp_file(m.string_or("file", ""))) continue;
         const std::string says = m.string_or("says", "");
         if (says.empty()) throw Error(file.string() + ": mistake '" + name + "' has no \"says\" (what it tells a student who made it)");
-        known.mistakes.push_back({name, m.string_at("todo"), says, m.string_or("sheet", "TODO table"), m, false, {}});
+        known.mistakes.push_back({name, m.string_at("todo"), says, m.string_or("sheet", "TODO table"), m, false, {}, {}});
     }
     // Each TODO of the solution whose blocks are all in shaders, left as the starter has it.
     std::map<std::string, std::vector<std::string>> files_of;
@@ -48,7 +48,7 @@ KnownMistakes known_mistakes(const fs::path& kit_root, const std::string& lab) {
     for (const auto& [todo, files] : files_of) {
         if (in_cpp.count(todo)) continue;
         known.mistakes.push_back({todo + " not started", todo, "not started: its part is still the starter's", "TODO table",
-                                  Json::object(), true, files});
+                                  Json::object(), true, files, starter_blocks(kit_root, known.lab_dir, todo, files)});
     }
     return known;
 }
@@ -70,8 +70,9 @@ std::vector<std::string> lines_of(const std::string& text) {
 
 }  // namespace
 
-bool still_starter(const fs::path& kit_root, const std::string& lab_dir, const fs::path& student_folder, const std::string& todo,
-                   const std::vector<std::string>& files) {
+StarterBlocks starter_blocks(const fs::path& kit_root, const std::string& lab_dir, const std::string& todo,
+                             const std::vector<std::string>& files) {
+    StarterBlocks out;
     for (const std::string& file : files) {
         // This TODO's starter blocks in the file, as make_starter writes them (the leading // removed), each after the
         // code between the comment that names the TODO and the block (a function's first line), and before the line
@@ -109,26 +110,14 @@ bool still_starter(const fs::path& kit_root, const std::string& lab_dir, const f
                 prefix.push_back(line);
             }
         }
-        if (blocks.empty()) continue;
-        // The student's file: right after each comment that names the TODO (and the comment lines with it), a block's
-        // lines and the line after it, in a row (blank lines aside).
-        std::error_code ec;
-        if (!fs::is_regular_file(student_folder / file, ec)) continue;
-        std::vector<std::string> student;
-        for (const std::string& line : lines_of(read_text_file(student_folder / file)))
-            if (!line.empty()) student.push_back(line);
-        for (std::size_t i = 0; i < student.size(); ++i) {
-            if (student[i].find(marker) == std::string::npos) continue;
-            std::size_t at = i + 1;
-            while (at < student.size() && student[at].rfind("//", 0) == 0) ++at;
-            for (auto block : blocks) {
-                block.erase(std::remove(block.begin(), block.end(), std::string()), block.end());
-                if (block.empty() || at + block.size() > student.size()) continue;
-                if (std::equal(block.begin(), block.end(), student.begin() + static_cast<long>(at))) return true;
-            }
-        }
+        if (!blocks.empty()) out[file] = std::move(blocks);
     }
-    return false;
+    return out;
+}
+
+bool still_starter(const fs::path& kit_root, const std::string& lab_dir, const fs::path& student_folder, const std::string& todo,
+                   const std::vector<std::string>& files) {
+    return holds_starter(student_folder, todo, starter_blocks(kit_root, lab_dir, todo, files));
 }
 
 }  // namespace gsv

@@ -4,6 +4,7 @@
 // a student who made it ("says": the idea missed, never the code) and the part of the lab's sheet that teaches it
 // ("sheet": a heading of labs/<lab_dir>/README.md, or "TODO table"). The lists are the instructor's (their edits are
 // answers): a kit without tests/ (the student edition) has none. An instructor adds a mistake with one entry there.
+#include "common/app/known_mistake_pictures.h"
 #include "common/io/json.h"
 
 #include <filesystem>
@@ -20,6 +21,7 @@ struct KnownMistake {
     // draws no magenta (a pass-through) is told apart from a mistake in it by its pictures, and called "not started".
     bool not_started = false;
     std::vector<std::string> files;
+    StarterBlocks starter;  // not started: the starter's code in `files`
 };
 
 struct KnownMistakes {
@@ -37,6 +39,8 @@ KnownMistakes known_mistakes(const std::filesystem::path& kit_root, const std::s
 // starter code: in some file of the TODO, after the line that names it (TODO(L04-T4)), the starter's lines as the
 // solution's //@starter block has them, each line's surrounding white space aside. Where a TODO's pictures are a known
 // mistake's too (a pass-through starter), its source tells "not started" from the mistake.
+StarterBlocks starter_blocks(const std::filesystem::path& kit_root, const std::string& lab_dir, const std::string& todo,
+                             const std::vector<std::string>& files);
 bool still_starter(const std::filesystem::path& kit_root, const std::string& lab_dir, const std::filesystem::path& student_folder,
                    const std::string& todo, const std::vector<std::string>& files);
 

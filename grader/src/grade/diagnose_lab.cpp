@@ -1,6 +1,8 @@
 #include "grader/src/grade/diagnose_lab.h"
 
 #include "common/app/kit_layout.h"
+#include "common/app/known_mistake_pictures.h"
+#include "grader/src/diagnose/shipped_diagnosis.h"
 #include "common/core/error.h"
 #include "common/image/image.h"
 
@@ -37,6 +39,84 @@ void add_note(GradeReport& report, const std::string& line) {
     report.diagnosis_note += (report.diagnosis_note.empty() ? "" : "; ") + line;
 }
 
+// The student's copy of the lab: its folder in labs/, or solutions/ where the kit's own reference is graded.
+fs::path student_folder(GradingSession& s, const std::string& lab_dir) {
+    const KitLayout student{s.student_kit()};
+    return fs::exists(student.labs() / lab_dir) ? student.labs() / lab_dir : student.solutions() / lab_dir;
+}
+
+// The mistakes found, told from TODOs not started, each explained row marked with its mistake and its picture.
+void name_found(GradingSession& s, const LabCases& lab, const KnownMistakes& known, const std::vector<FailedRender>& failed,
+                const std::map<std::pair<std::size_t, std::string>, Image>& pictures_of, LabDiagnosis& d) {
+    // The report's row of a failing case.
+    const auto row_of = [&](const std::string& name) -> CaseResult& {
+        return s.report.results[std::find_if(failed.begin(), failed.end(), [&](const FailedRender& x) { return x.c->name == name; })->row];
+    };
+    for (const auto& [name, todo] : tell_not_started(d, known, student_folder(s, known.lab_dir)))
+        row_of(name).mistake_todo = todo;  // "mistake" stays empty: not started
+    // Each explained row: its mistake, and that mistake's picture beside the student's.
+    for (const MistakeFound& found : d.found) {
+        const std::size_t m = index_of(known, found.names.front());
+        for (const std::string& name : found.cases) {
+            CaseResult& r = row_of(name);
+            r.mistake = found.says;
+            r.mistake_todo = found.todo;
+            r.mistake_sheet = found.sheet;
+            const fs::path png = s.out / lab.lab / name / "mistake.png";
+            write_png(png, pictures_of.at({m, name}));
+            r.mistake_png = fs::relative(png, s.out).generic_string();
+        }
+    }
+}
+
+// The self-check's diagnosis from the pictures the kit ships (common/app/known_mistake_pictures.h): each mistake alone
+// (no two made together: their pictures are not shipped), a candidate only where the cases its picture fails are all
+// cases the student failed. False where this run does not use them (instructor grading, none shipped for the lab).
+bool shipped_diagnosis(GradingSession& s, const LabCases& lab, const LabRenders& renders, LabDiagnosis& d) {
+    if (s.options.mistake_pictures == MistakePictureSource::Rendered) return false;
+    // Default: where the failures were judged against the goldens (a self-check, or a kit without the solutions), as
+    // the pictures shipped beside them were.
+    const bool against_goldens = std::none_of(renders.failed.begin(), renders.failed.end(),
+                                              [](const FailedRender& f) { return f.expected.live; });
+    if (s.options.mistake_pictures == MistakePictureSource::Default && !against_goldens) return false;
+    KnownMistakePictures shipped;
+    try {
+        shipped = read_known_mistake_pictures(s.kit, lab.lab);
+    } catch (const Error& e) {
+        add_note(s.report, e.what());
+        return true;  // said; a broken file is not made up for by rendering
+    }
+    if (shipped.empty()) return false;
+    std::set<std::string> passed;
+    for (const PassedRender& p : renders.passed) passed.insert(p.c->name);
+    std::vector<ShippedFailure> failed;
+    for (const FailedRender& f : renders.failed)
+        failed.push_back({f.c->name, f.student.image ? &*f.student.image : nullptr, &f.expected.image});
+    ShippedDiagnosis found = diagnose_shipped(shipped, failed, passed, student_folder(s, shipped.lab_dir));
+    const auto row_of = [&](const std::string& name) -> CaseResult& {
+        return s.report.results[std::find_if(renders.failed.begin(), renders.failed.end(),
+                                             [&](const FailedRender& x) { return x.c->name == name; })->row];
+    };
+    for (const auto& [name, todo] : found.not_started_cases) row_of(name).mistake_todo = todo;
+    for (const MistakeFound& f : found.diagnosis.found)
+        for (const std::string& name : f.cases) {
+            CaseResult& r = row_of(name);
+            r.mistake = f.says;
+            r.mistake_todo = f.todo;
+            r.mistake_sheet = f.sheet;
+            const fs::path png = s.out / lab.lab / name / "mistake.png";
+            write_png(png, shipped_picture(shipped, found.mistake_of_case.at(name), name, lab.width, lab.height));
+            r.mistake_png = fs::relative(png, s.out).generic_string();
+        }
+    found.diagnosis.not_started.insert(found.diagnosis.not_started.begin(), d.not_started.begin(), d.not_started.end());
+    std::vector<std::string> unique;
+    for (const std::string& t : found.diagnosis.not_started)
+        if (std::find(unique.begin(), unique.end(), t) == unique.end()) unique.push_back(t);
+    found.diagnosis.not_started = unique;
+    d = std::move(found.diagnosis);
+    return true;
+}
+
 }  // namespace
 
 bool diagnoses(const GradingSession& s, const GradeCase& c) {
@@ -58,11 +138,9 @@ void diagnose_lab(GradingSession& s, MistakePictures& pictures, const LabCases& 
     }
     std::vector<std::string> failing;
     for (const FailedRender& f : failed) failing.push_back(f.c->name);
-    // The report's row of a failing case.
-    const auto row_of = [&](const std::string& name) -> CaseResult& {
-        return s.report.results[std::find_if(failed.begin(), failed.end(), [&](const FailedRender& x) { return x.c->name == name; })->row];
-    };
-    if (!failed.empty()) {
+    if (!failed.empty() && shipped_diagnosis(s, lab, renders, d)) {
+        // the self-check: the pictures the kit ships
+    } else if (!failed.empty()) {
         KnownMistakes known;
         try {
             known = known_mistakes(s.kit, lab.lab);
@@ -137,51 +215,7 @@ void diagnose_lab(GradingSession& s, MistakePictures& pictures, const LabCases& 
             left = still;
         }
         for (const FailedRender* f : left) d.unexplained.push_back(f->c->name);
-        // A TODO not started (its pictures the starter's) is said so, not named as a mistake. Where a mistake or another
-        // TODO's starter draws the same on these cases (a pass-through starter leaves out what the mistake leaves out),
-        // the student's source decides: the TODO whose starter code is still there is not started, else the mistake.
-        std::vector<MistakeFound> mistakes_found;
-        const fs::path student_folder = fs::exists(KitLayout{s.student_kit()}.labs() / known.lab_dir)
-                                            ? KitLayout{s.student_kit()}.labs() / known.lab_dir
-                                            : KitLayout{s.student_kit()}.solutions() / known.lab_dir;
-        for (MistakeFound& found : d.found) {
-            std::vector<std::string> starters, confirmed;
-            for (const std::string& n : found.names) {
-                const KnownMistake& k = known.mistakes[index_of(known, n)];
-                if (!k.not_started) continue;
-                starters.push_back(k.todo);
-                if (still_starter(s.kit, known.lab_dir, student_folder, k.todo, k.files)) confirmed.push_back(k.todo);
-            }
-            const bool any_mistake = starters.size() < found.names.size();
-            if (starters.empty() || (confirmed.empty() && any_mistake)) {
-                found.names.erase(std::remove_if(found.names.begin(), found.names.end(),
-                                                 [&](const std::string& n) { return known.mistakes[index_of(known, n)].not_started; }),
-                                  found.names.end());
-                const KnownMistake& first = known.mistakes[index_of(known, found.names.front())];
-                found.todo = first.todo;
-                found.says = first.says;
-                found.sheet = first.sheet;
-                mistakes_found.push_back(std::move(found));
-                continue;
-            }
-            const std::string todo = confirmed.empty() ? starters.front() : confirmed.front();
-            if (std::find(d.not_started.begin(), d.not_started.end(), todo) == d.not_started.end()) d.not_started.push_back(todo);
-            for (const std::string& name : found.cases) row_of(name).mistake_todo = todo;  // "mistake" stays empty: not started
-        }
-        d.found = std::move(mistakes_found);
-        // Each explained row: its mistake, and that mistake's picture beside the student's.
-        for (const MistakeFound& found : d.found) {
-            const std::size_t m = index_of(known, found.names.front());
-            for (const std::string& name : found.cases) {
-                CaseResult& r = row_of(name);
-                r.mistake = found.says;
-                r.mistake_todo = found.todo;
-                r.mistake_sheet = found.sheet;
-                const fs::path png = s.out / lab.lab / name / "mistake.png";
-                write_png(png, pictures_of.at({m, name}));
-                r.mistake_png = fs::relative(png, s.out).generic_string();
-            }
-        }
+        name_found(s, lab, known, failed, pictures_of, d);
     }
     if (!d.failing.empty() || !d.not_started.empty()) s.report.diagnoses.push_back(std::move(d));
 }

@@ -34,6 +34,11 @@ enum class LabProcesses {
 
 enum class DiagnoseCases { Default, Off, Public, All };
 
+// Where the known mistakes' pictures come from: shipped (grader/golden/<lab>/mistakes.*, what a student's copy has)
+// or rendered on this machine from the instructor's lists. Default: shipped where the failures were judged against the
+// goldens (a self-check; a student's and the instructor's say the same) and the lab has them, else rendered.
+enum class MistakePictureSource { Default, Shipped, Rendered };
+
 struct GradeOptions {
     std::filesystem::path kit_root;     // grader/cases, golden, hidden; solutions/
     std::filesystem::path bin_dir;      // the kit's build: <lab>_solution, and <lab> when no submission is given
@@ -77,6 +82,7 @@ struct GradeOptions {
     // name the mistake: none (exams), the public ones (what a student may be told) or all (the instructor's own
     // reports). Default: public in a self-check, all in instructor grading.
     DiagnoseCases diagnose = DiagnoseCases::Default;
+    MistakePictureSource mistake_pictures = MistakePictureSource::Default;
 };
 
 // What a row's detail gains where a check failed on a render made after other cases in the same process and passed on

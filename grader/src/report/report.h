@@ -16,13 +16,20 @@ std::string gradescope_json(const GradeReport& report);
 std::string report_json(const GradeReport& report);
 // JUnit XML: one testsuite per lab, one testcase per check.
 std::string junit_xml(const GradeReport& report);
+// Who reads report.html: the instructor (everything, full-size images: the seed, hidden cases' settings and output) or
+// the student (public cases' descriptions, details and the diagnosis; a hidden case its status and points only; no
+// seed; images as small JPEG thumbnails of the failing cases only, so the file stays well under 2 MB).
+enum class ReportReader { Instructor, Student };
+
 // One self-contained HTML file: the images embedded as data URIs, actual / expected / difference side by side.
-std::string html_report(const GradeReport& report, const std::filesystem::path& out_dir);
+std::string html_report(const GradeReport& report, const std::filesystem::path& out_dir,
+                        ReportReader reader = ReportReader::Instructor);
 
 // report.json read back: an earlier run's report, whole. Throws gsv::Error naming the file and what is wrong.
 GradeReport read_report_json(const std::filesystem::path& file);
 
-// Writes results.json, report.json, junit.xml and report.html into out_dir.
+// Writes results.json, report.json, junit.xml and report.html into out_dir: report.html the student's form in a
+// self-check (what a student runs), else the instructor's, with student-report.html beside it to hand out.
 void write_reports(const GradeReport& report, const std::filesystem::path& out_dir);
 
 }  // namespace gsv

@@ -1,4 +1,5 @@
 #include "common/core/number_text.h"
+#include "common/image/image.h"
 #include "grader/src/report/report.h"
 #include "grader/src/report/report_format.h"
 
@@ -64,24 +65,56 @@ std::string read_png_bytes(const fs::path& out_dir, const std::string& relative,
     }
 }
 
-void figure(std::ostringstream& out, const fs::path& out_dir, const std::string& relative, const char* caption) {
+// A student's report shows each picture this large at most, as a JPEG of this quality: a lab's failing cases in a few
+// hundred kilobytes.
+constexpr int kThumbnailSide = 128;
+constexpr int kThumbnailQuality = 80;
+// And embeds pictures up to this many bytes in all (base64 adds a third): past it, a line saying where to see them.
+constexpr std::size_t kStudentPictureBytes = 1200u << 10;
+
+// The picture as a student's report embeds it: a thumbnail, JPEG; empty with `why` where it cannot be read.
+std::string thumbnail_bytes(const fs::path& png, std::string& why) {
+    try {
+        const Image full = read_png(png);
+        const std::vector<std::uint8_t> jpeg = encode_jpeg(thumbnail(full, kThumbnailSide), kThumbnailQuality);
+        return std::string(jpeg.begin(), jpeg.end());
+    } catch (const std::exception& e) {
+        why = std::string("the picture cannot be read: ") + e.what();
+        return {};
+    }
+}
+
+// The pictures a report embeds: who reads it, and for a student what is left of the bytes it may hold.
+struct Pictures {
+    ReportReader reader = ReportReader::Instructor;
+    std::size_t left = kStudentPictureBytes;
+};
+
+void figure(std::ostringstream& out, const fs::path& out_dir, const std::string& relative, const char* caption, Pictures& pictures) {
     std::string why;
-    const std::string bytes = read_png_bytes(out_dir, relative, why);
+    std::string bytes = read_png_bytes(out_dir, relative, why);
+    const bool small = pictures.reader == ReportReader::Student && !bytes.empty();
+    if (small) bytes = thumbnail_bytes(out_dir / relative, why);
+    if (small && bytes.size() > pictures.left) {
+        bytes.clear();
+        why = "left out to keep this report small: `compare` draws it (the reproduce line above names the case)";
+    }
+    if (small) pictures.left -= bytes.size();
     out << "<figure>";
     if (bytes.empty())
         out << "<div class=\"note\">" << html(why) << "</div>";
     else
-        out << "<img alt=\"" << caption << "\" src=\"data:image/png;base64," << base64(bytes) << "\">";
+        out << "<img alt=\"" << caption << "\" src=\"data:image/" << (small ? "jpeg" : "png") << ";base64," << base64(bytes) << "\">";
     out << "<figcaption>" << caption << "</figcaption></figure>";
 }
 
-void figures(std::ostringstream& out, const fs::path& out_dir, const CaseResult& r, bool with_diff) {
+void figures(std::ostringstream& out, const fs::path& out_dir, const CaseResult& r, bool with_diff, Pictures& pictures) {
     out << "<div class=\"figures\">";
-    figure(out, out_dir, r.actual_png, "actual (yours)");
-    figure(out, out_dir, r.expected_png, "expected");
-    if (with_diff) figure(out, out_dir, r.diff_png, "difference");
+    figure(out, out_dir, r.actual_png, "actual (yours)", pictures);
+    figure(out, out_dir, r.expected_png, "expected", pictures);
+    if (with_diff) figure(out, out_dir, r.diff_png, "difference", pictures);
     // The known mistake that explains it, drawn by the reference with that mistake made (grader/src/diagnose/).
-    if (!r.mistake_png.empty()) figure(out, out_dir, r.mistake_png, "the known mistake's picture");
+    if (!r.mistake_png.empty()) figure(out, out_dir, r.mistake_png, "the known mistake's picture", pictures);
     out << "</div>\n";
     if (!r.mistake.empty())
         out << "<p class=\"mistake\">A known mistake in " << html(r.mistake_todo) << " explains this: " << html(r.mistake)
@@ -158,8 +191,17 @@ void timing_numbers(std::ostringstream& out, const CaseResult& r) {
         << "</td></tr></table>\n";
 }
 
-void check_section(std::ostringstream& out, const fs::path& out_dir, const CaseResult& r, std::size_t index) {
+void check_section(std::ostringstream& out, const fs::path& out_dir, const CaseResult& r, std::size_t index, Pictures& pictures) {
+    const ReportReader reader = pictures.reader;
     const bool passed = r.status == CaseStatus::Passed;
+    if (reader == ReportReader::Student && r.visibility != "public") {
+        // A hidden case: what it is worth and how it went, nothing of what it draws or how.
+        out << "<section id=\"check-" << index << "\" class=\"check " << status_class(r.status) << "\">\n<h3>" << html(check_title(r))
+            << " <span class=\"badge\">" << html(status_name(r.status)) << "</span> " << format_points(r.points) << "/"
+            << format_points(r.max_points) << "</h3>\n<p class=\"note\">a hidden case: its settings and pictures are the "
+            << "instructor's</p>\n</section>\n";
+        return;
+    }
     const bool has_images = !r.actual_png.empty() || !r.expected_png.empty() || !r.diff_png.empty();
     out << "<section id=\"check-" << index << "\" class=\"check " << status_class(r.status) << "\">\n";
     out << "<h3>" << html(check_title(r)) << " <span class=\"badge\">" << html(status_name(r.status)) << "</span> "
@@ -176,14 +218,15 @@ void check_section(std::ostringstream& out, const fs::path& out_dir, const CaseR
     if (r.kind == "timing") {
         timing_numbers(out, r);
     } else if (passed) {
-        if (has_images) {
+        // A student's report shows the pictures of what failed only: it stays small.
+        if (has_images && reader == ReportReader::Instructor) {
             out << "<details><summary>images</summary>";
-            figures(out, out_dir, r, false);
+            figures(out, out_dir, r, false, pictures);
             out << "</details>\n";
         }
     } else {
         // Wrong data has a passing image: no difference to show.
-        if (has_images) figures(out, out_dir, r, r.status != CaseStatus::WrongData);
+        if (has_images) figures(out, out_dir, r, r.status != CaseStatus::WrongData, pictures);
         if (r.image.done || has_images) image_numbers(out, r);
         data_numbers(out, r);
     }
@@ -215,7 +258,8 @@ table.numbers th { font-weight: normal; color: #5f6368; }
 
 }  // namespace
 
-std::string html_report(const GradeReport& report, const fs::path& out_dir) {
+std::string html_report(const GradeReport& report, const fs::path& out_dir, ReportReader reader) {
+    const bool student = reader == ReportReader::Student;
     std::ostringstream out;
     out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
         // Nothing in this file needs the network or scripts; saying so lets the browser refuse both.
@@ -236,7 +280,7 @@ std::string html_report(const GradeReport& report, const fs::path& out_dir) {
     out << "<tr><th>profile</th><td>" << html(report.profile) << "</td></tr>\n";
     if (!report.renderer.empty()) out << "<tr><th>renderer</th><td>" << html(report.renderer) << "</td></tr>\n";
     if (!report.golden_renderers.empty()) out << "<tr><th>goldens rendered on</th><td>" << html(golden_renderers_text(report)) << "</td></tr>\n";
-    if (report.hidden_included) {
+    if (report.hidden_included && !student) {
         char seed[32];
         std::snprintf(seed, sizeof seed, "%" PRIu64, report.seed);
         out << "<tr><th>seed</th><td>" << seed << "</td></tr>\n";
@@ -249,7 +293,9 @@ std::string html_report(const GradeReport& report, const fs::path& out_dir) {
     // What the failures come down to, before the checks (grader/src/diagnose/).
     if (!report.diagnoses.empty()) {
         out << "<h2>What went wrong</h2>\n<p>Your failing pictures compared with the kit's known mistakes' pictures.</p>\n";
-        for (const auto& d : report.diagnoses) {
+        for (const auto& diagnosis : report.diagnoses) {
+            // A student is told of public cases only (hidden ones are the instructor's).
+            const LabDiagnosis d = student ? student_diagnosis(diagnosis, report) : diagnosis;
             out << "<h3>" << html(d.lab) << "</h3>\n<ul class=\"diagnosis\">\n";
             for (const auto& line : diagnosis_lines(d)) out << "<li>" << html(line) << "</li>\n";
             out << "</ul>\n";
@@ -273,10 +319,11 @@ std::string html_report(const GradeReport& report, const fs::path& out_dir) {
             << "\">" << html(check_label(r)) << "</a></td><td>" << html(r.todo) << "</td><td>" << html(r.visibility)
             << "</td><td class=\"status\">" << html(status_name(r.status)) << "</td><td class=\"points\">"
             << format_points(r.points) << "/" << format_points(r.max_points) << "</td><td>"
-            << html(one_line(r.detail, 160)) << "</td></tr>\n";
+            << html(student && r.visibility != "public" ? std::string("a hidden case") : one_line(r.detail, 160)) << "</td></tr>\n";
     }
     out << "</table>\n<h2>Details</h2>\n";
-    for (std::size_t i = 0; i < report.results.size(); ++i) check_section(out, out_dir, report.results[i], i);
+    Pictures pictures{reader};
+    for (std::size_t i = 0; i < report.results.size(); ++i) check_section(out, out_dir, report.results[i], i, pictures);
     out << "</body>\n</html>\n";
     return out.str();
 }

@@ -28,7 +28,10 @@ void write_reports(const GradeReport& report, const fs::path& out_dir) {
     write_text(out_dir / "results.json", gradescope_json(report));
     write_text(out_dir / "report.json", report_json(report));
     write_text(out_dir / "junit.xml", junit_xml(report));
-    write_text(out_dir / "report.html", html_report(report, out_dir));
+    const bool student_run = report.mode == "self-check";
+    write_text(out_dir / "report.html", html_report(report, out_dir, student_run ? ReportReader::Student : ReportReader::Instructor));
+    if (!student_run) write_text(out_dir / "student-report.html", html_report(report, out_dir, ReportReader::Student));
+    else fs::remove(out_dir / "student-report.html", ec);  // an earlier instructor run's, in the same folder
 }
 
 }  // namespace gsv
