@@ -226,7 +226,8 @@ and vcpkg equivalents; then `cmake --preset default && cmake --build --preset de
 - `build/bin/lab01` opens your lab in a window (shaders reload when saved; H lists the keys); `build/bin/lab01 list`
   shows its parameters and named cases; `build/bin/lab01 render --case phong --out phong.png` renders one headless.
 - `build/bin/lab01 compare --case phong` writes `lab01-compare-phong.png`: your render, the case's golden image and
-  their difference, amplified, side by side, and prints the RMSE and the largest difference. In labs 04 to 07,
+  their difference, amplified, side by side, and prints the RMSE and the largest difference; where your picture is
+  one of the kit's known mistakes, that mistake's picture is a fourth view and a line says what went wrong. In labs 04 to 07,
   `render --legend` adds a colour bar with the values the colours stand for, sampled from your own shaders.
 
 ## Self-check
@@ -234,8 +235,11 @@ and vcpkg equivalents; then `cmake --preset default && cmake --build --preset de
 The self-check renders each public case of `grader/cases/<lab>.json` with your lab and compares the image with the
 committed golden image in `grader/golden/<lab>/`, rendered by the reference solution, with a tolerance wide enough
 for another GPU or driver. It prints a score table: each failing case says what is wrong (not done, which TODO it
-needs first, a compile error in your file, a wrong image) and the command that reproduces it. It writes
-`build/grade-results/`: `report.html` (your image, the expected one and where they differ, side by side),
+needs first, a compile error in your file, a wrong image) and the command that reproduces it. It opens with what went
+wrong: your failing pictures compared with the pictures of mistakes students often make (`grader/golden/<lab>/mistakes.*`),
+naming the idea missed, its TODO and the part of the sheet that teaches it, or saying that no known mistake matches;
+where you have not started, the TODO to start with (one whose case needs no other). It writes
+`build/grade-results/`: `report.html` (your image, the expected one and where they differ, as small thumbnails),
 `results.json` and `junit.xml`. Every push runs the same check on GitHub (`.github/workflows/self-check.yml`, also
 `.ci/run`).
 

@@ -130,6 +130,29 @@ TEST_CASE("margins: what CI holds an implementation to, each failure naming the 
     CHECK(more[2] == "llvmpipe-128 was not measured: GL_RENDERER is 'softpipe', without 'llvmpipe'");
 }
 
+TEST_CASE("margins: the diagnosis gives no mutant another's name, and measuring every lab it names nine in ten first", "[unit]") {
+    MarginMeasurement m;
+    m.implementations.push_back({known_implementations().at(0), "llvmpipe (LLVM 15.0.6, 256 bits)", true, "", 0});
+    m.labs_with_mutants = 2;
+    for (int i = 0; i < 9; ++i) m.diagnoses.push_back({"default", "lab03", "m" + std::to_string(i), "m" + std::to_string(i), true});
+    m.diagnoses.push_back({"default", "lab03", "m9", "", false});  // none named: "no known mistake matches"
+    CHECK(grading_failures(m).empty());
+    CHECK(contains(margins_table(m), "default           9 of 10 named first: not lab03 'm9' as none"));
+    // Another mistake's name is a failure on its own.
+    m.diagnoses.push_back({"default", "lab03", "m10", "m3", false});
+    auto failures = grading_failures(m);
+    REQUIRE(failures.size() == 1);
+    CHECK(failures[0] == "on default (GL_RENDERER 'llvmpipe (LLVM 15.0.6, 256 bits)'): lab03: mutant 'm10' is named as 'm3'");
+    // 10 of 13 is under the bar, held only where every lab with mutants was measured.
+    m.diagnoses.push_back({"default", "lab04", "n0", "n0", true});
+    m.diagnoses.push_back({"default", "lab04", "n1", "", false});
+    failures = grading_failures(m);
+    REQUIRE(failures.size() == 2);
+    CHECK(contains(failures[1], "the self-check names 10 of 13 mutants first, under 90%"));
+    const MarginMeasurement back = margins_from_json(parse_json(margins_json(m).dump(2), "margins.json"));
+    CHECK(grading_failures(back) == failures);
+}
+
 TEST_CASE("margins: the cross-implementation bar is the case's own tolerance with one and a half budgets", "[unit]") {
     const ImageTolerance own{24, 0.01, 1};
     const ImageTolerance cross = cross_implementation_tolerance(own);

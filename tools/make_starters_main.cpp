@@ -8,6 +8,8 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -20,12 +22,15 @@ constexpr const char* kUsage =
     "  --root DIR   the kit to work on (default: the one this was built from)\n"
     "  --undone TODO --to DIR   the reference's lab folder with that one TODO left as the starter has it, into DIR\n"
     "               (what the tests hand a lab to see that exactly that TODO's cases fail)\n"
+    "  --done T1,T2 --to DIR    the reference's lab folder with every TODO but these left as the starter has it\n"
+    "               (a student part way through: what a case that declares these as its needs must pass with)\n"
     "  --version    the kit's version\n";
 
 namespace fs = std::filesystem;
 
-// solutions/labXX_*/ of the TODO's lab, each file with only that TODO's blocks turned into the starter's.
-int write_one_undone(const fs::path& root, const std::string& todo, const fs::path& to) {
+// solutions/labXX_*/ of the TODOs' lab, each file with only the blocks of the TODOs `undone` says turned into the starter's.
+int write_partly_undone(const fs::path& root, const std::string& todo, const fs::path& to,
+                        const std::function<std::string(const std::string&, const std::string&)>& convert, const std::string& what) {
     const std::string lab = "lab" + todo.substr(1, 2);
     fs::create_directories(to);
     int written = 0;
@@ -36,13 +41,34 @@ int write_one_undone(const fs::path& root, const std::string& todo, const fs::pa
             std::stringstream text;
             text << in.rdbuf();
             const std::string name = file.path().filename().string();
-            std::ofstream(to / name, std::ios::binary) << gsv::make_starter(text.str(), name, todo).text;
+            std::ofstream(to / name, std::ios::binary) << convert(text.str(), name);
             ++written;
         }
     }
     if (written == 0) throw gsv::Error("no solutions/" + lab + "_*/ folder for TODO '" + todo + "' in " + root.string());
-    std::printf("wrote %d files of %s with %s undone into %s\n", written, lab.c_str(), todo.c_str(), to.string().c_str());
+    std::printf("wrote %d files of %s with %s into %s\n", written, lab.c_str(), what.c_str(), to.string().c_str());
     return 0;
+}
+
+int write_one_undone(const fs::path& root, const std::string& todo, const fs::path& to) {
+    return write_partly_undone(root, todo, to, [&](const std::string& text, const std::string& name) {
+        return gsv::make_starter(text, name, todo).text;
+    }, todo + " undone");
+}
+
+// Every TODO but those listed (comma-separated, of one lab) left as the starter has it.
+int write_only_done(const fs::path& root, const std::string& list, const fs::path& to) {
+    std::set<std::string> done;
+    std::stringstream in(list);
+    for (std::string id; std::getline(in, id, ',');) {
+        if (id.size() < 4 || id[0] != 'L' || (!done.empty() && id.substr(0, 3) != done.begin()->substr(0, 3)))
+            throw gsv::Error("--done takes TODO ids of one lab, comma-separated (L02-T1,L02-T3), got '" + list + "'");
+        done.insert(id);
+    }
+    if (done.empty()) throw gsv::Error("--done takes at least one TODO id");
+    return write_partly_undone(root, *done.begin(), to, [&](const std::string& text, const std::string& name) {
+        return gsv::make_partial_starter(text, name, done).text;
+    }, "only " + list + " done");
 }
 
 }  // namespace
@@ -50,12 +76,13 @@ int write_one_undone(const fs::path& root, const std::string& todo, const fs::pa
 int main(int argc, char** argv) {
     bool write = false;
     const char* root = GSV_SOURCE_ROOT;
-    std::string undone, to;
+    std::string undone, done, to;
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--write") == 0) write = true;
         else if (std::strcmp(argv[i], "--check") == 0) write = false;
         else if (std::strcmp(argv[i], "--root") == 0 && i + 1 < argc) root = argv[++i];
         else if (std::strcmp(argv[i], "--undone") == 0 && i + 1 < argc) undone = argv[++i];
+        else if (std::strcmp(argv[i], "--done") == 0 && i + 1 < argc) done = argv[++i];
         else if (std::strcmp(argv[i], "--to") == 0 && i + 1 < argc) to = argv[++i];
         else if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0) {
             std::printf("%s", kUsage);
@@ -68,12 +95,13 @@ int main(int argc, char** argv) {
             return 2;
         }
     }
-    if (undone.empty() != to.empty()) {
-        std::fprintf(stderr, "gsv-make-starters: --undone TODO and --to DIR go together (see --help)\n");
+    if ((undone.empty() && done.empty()) != to.empty() || (!undone.empty() && !done.empty())) {
+        std::fprintf(stderr, "gsv-make-starters: --undone TODO or --done T1,T2, and --to DIR, go together (see --help)\n");
         return 2;
     }
     try {
         if (!undone.empty()) return write_one_undone(root, undone, to);
+        if (!done.empty()) return write_only_done(root, done, to);
         int stale = 0;
         for (const auto& r : gsv::sync_starters(root, write)) {
             if (!r.up_to_date) {

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <fstream>
 #include <iterator>
+#include <functional>
 #include <regex>
 #include <sstream>
 
@@ -33,14 +34,17 @@ std::string read_text(const fs::path& path) {
 
 }  // namespace
 
-StarterText make_starter(const std::string& text, const std::string& file, const std::string& only_todo) {
+namespace {
+
+// `undone(id)`: whether a block of that TODO becomes the starter's.
+StarterText convert(const std::string& text, const std::string& file, const std::function<bool(const std::string&)>& undone) {
     enum class State { Both, Solution, Starter } state = State::Both;
     static const std::regex id_pattern(R"(^L[0-9]{2}-T[0-9]+$)");
     StarterText out;
     std::istringstream in(text);
     std::string line;
     int number = 0, block_start = 0;
-    bool converting = true;  // this block becomes the starter's (all blocks, or only_todo's)
+    bool converting = true;  // this block becomes the starter's
     auto fail = [&](const std::string& what) { throw Error(file + ":" + std::to_string(number) + ": " + what); };
     while (std::getline(in, line)) {
         ++number;
@@ -50,7 +54,7 @@ StarterText make_starter(const std::string& text, const std::string& file, const
             const std::string id = trim(t.substr(11));
             if (!std::regex_match(id, id_pattern)) fail("//@solution needs a TODO id like L01-T2, got '" + id + "'");
             if (std::find(out.todo_ids.begin(), out.todo_ids.end(), id) == out.todo_ids.end()) out.todo_ids.push_back(id);
-            converting = only_todo.empty() || id == only_todo;
+            converting = undone(id);
             state = State::Solution;
             block_start = number;
         } else if (t == "//@starter") {
@@ -76,6 +80,16 @@ StarterText make_starter(const std::string& text, const std::string& file, const
     }
     if (!text.empty() && text.back() != '\n' && !out.text.empty()) out.text.pop_back();
     return out;
+}
+
+}  // namespace
+
+StarterText make_starter(const std::string& text, const std::string& file, const std::string& only_todo) {
+    return convert(text, file, [&](const std::string& id) { return only_todo.empty() || id == only_todo; });
+}
+
+StarterText make_partial_starter(const std::string& text, const std::string& file, const std::set<std::string>& done) {
+    return convert(text, file, [&](const std::string& id) { return done.count(id) == 0; });
 }
 
 std::vector<StarterFileResult> sync_starters(const fs::path& root, bool write) {

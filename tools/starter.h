@@ -9,6 +9,7 @@
 //     //    return kNotDone;                         <- starter only: the leading // is removed
 //     //@end
 #include <filesystem>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,9 @@ struct StarterText {
 // line that is not a comment, an id that does not match L<lab>-T<n>). With `only_todo`, only that TODO's blocks
 // become the starter's and the others keep the solution: the reference with one TODO left undone.
 StarterText make_starter(const std::string& solution_text, const std::string& file_name, const std::string& only_todo = "");
+
+// The reference with every TODO but those in `done` left as the starter has it: a student part way through the lab.
+StarterText make_partial_starter(const std::string& solution_text, const std::string& file_name, const std::set<std::string>& done);
 
 struct StarterFileResult {
     std::filesystem::path solution, starter;

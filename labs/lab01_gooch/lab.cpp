@@ -30,7 +30,9 @@ public:
                      "the mesh: two procedural ones, the teapot from data/meshes, or any OBJ file (mesh_file)");
         p.add_file("mesh_file", "", "an OBJ file: triangles or polygons, with or without normals (model=file)")
             .applies_when("model", {"file"});
-        p.add_choice("shading", "gooch", {"phong", "gooch"}, "the lighting model").at_compile_time();
+        p.add_choice("shading", "gooch", {"phong", "gooch", "normals"},
+                     "the lighting model, or the eye-space normal as a colour (what L01-T1 computes, before any light)")
+            .at_compile_time();
         p.add_choice("shading_rate", "fragment", {"vertex", "fragment"},
                      "light each vertex and blend colours (Gouraud), or light each fragment").at_compile_time().series();
         p.add_int("mesh_resolution", 64, 3, 1024, "segments around the sphere or torus (half as many the other way)")

@@ -27,7 +27,11 @@ void main() {
 //    vec3 n = vEyeNormal;
 //@end
 
-#ifdef SHADING_RATE_VERTEX
+#if defined(SHADING_NORMALS)
+    // The normal's direction as a colour (n/2 + 1/2): what L01-T1 hands on, before L01-T5 or any light touches it.
+    // Where shading looks wrong, this view tells a wrong normal from a wrong lighting model.
+    vec3 color = 0.5 * safeNormalize(vEyeNormal, vec3(0.0, 0.0, 1.0)) + 0.5;
+#elif defined(SHADING_RATE_VERTEX)
     vec3 color = gl_FrontFacing ? vFrontColor : vBackColor;
 #else
     vec3 color = shade(n, vEyePosition);

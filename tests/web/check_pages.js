@@ -181,6 +181,55 @@ async function oneTodoUndone(context, lab, todo) {
   await page.close();
 }
 
+// One TODO at a time in the page: for every public case, the reference with every TODO left as the starter has it but
+// the case's own and those it declares as needs (gsv-make-starters --done) passes the case, as natively
+// (test_grader_one_todo.cpp). A lab's C++ TODO left undone is its starter page (built from labs/); one page per lab and
+// kind, the files of each set of TODOs opened in turn, each case checked alone.
+async function oneTodoAtATime(context, lab) {
+  const cases = JSON.parse(fs.readFileSync(path.join(args.kit, 'grader/cases', lab + '.json'), 'utf8')).cases
+    .filter((c) => (c.visibility || 'public') === 'public');
+  const folder = fs.readdirSync(path.join(args.kit, 'solutions')).find((d) => d.startsWith(lab + '_'));
+  const cppTodos = new Set();
+  for (const n of fs.readdirSync(path.join(args.kit, 'solutions', folder)).filter((n) => /\.(cpp|h)$/.test(n)))
+    for (const m of fs.readFileSync(path.join(args.kit, 'solutions', folder, n), 'utf8').matchAll(/\/\/@solution (L\d\d-T\d+)/g)) cppTodos.add(m[1]);
+  const groups = new Map();
+  for (const c of cases) {
+    const done = [...new Set([c.todo, ...(c.needs || [])])].sort().join(',');
+    if (!groups.has(done)) groups.set(done, []);
+    groups.get(done).push(c.name);
+  }
+  const pages = new Map();
+  const failed = [];
+  let checked = 0;
+  for (const [done, names] of groups) {
+    const starterCpp = [...cppTodos].some((t) => !done.split(',').includes(t));
+    const url = args.base + (starterCpp ? '/site/' + lab + '/index.html' : '/solution-pages/' + lab + '/index.html');
+    if (!pages.has(url)) pages.set(url, (await openPage(context, url)).page);
+    const page = pages.get(url);
+    const dir = path.join(out, 'done-' + lab + '-' + done.replace(/,/g, '+'));
+    fs.rmSync(dir, { recursive: true, force: true });
+    execFileSync(path.join(args.bin, 'gsv-make-starters'), ['--done', done, '--to', dir]);
+    const shaders = fs.readdirSync(dir).filter((n) => /\.(vert|frag|glsl|comp)$/.test(n));
+    await page.evaluate(() => { document.getElementById('status').textContent = ''; });
+    await page.setInputFiles('#open', shaders.map((n) => path.join(dir, n)));
+    await page.waitForFunction(() => /^Opened/.test(document.getElementById('status').textContent));
+    await page.waitForTimeout(800);  // the editor's 300 ms pause, then the rebuild
+    for (const name of names) {
+      const result = await page.evaluate((n) => window.gsvSelfCheck.run(n), name);
+      const r = (result.results || [])[0];
+      ++checked;
+      if (!r || (r.status !== 'passed' && r.status !== 'unsupported'))
+        failed.push(name + ' with only ' + done + ' done: ' + (r ? r.status + ', ' + r.detail : result.error));
+    }
+  }
+  for (const page of pages.values()) {
+    await page.evaluate(() => localStorage.clear());
+    await page.close();
+  }
+  check(failed.length === 0, lab + ' one TODO at a time: ' + checked + ' cases, each with only its TODO and its needs done, in ' +
+        groups.size + ' sets' + (failed.length ? ':\n  ' + failed.join('\n  ') : ''));
+}
+
 // A known mistake made in the page (lab 01's normal left in the model's space): the page's self-check names it, as
 // gsv-grade's self-check does, with the mistake's picture beside the student's and in compare's fourth view.
 async function knownMistake(context, lab, name) {
@@ -396,6 +445,7 @@ async function deckWithLiveLab(context) {
     try {
       await oneTodoUndone(context, 'lab01', 'L01-T4');
       await knownMistake(context, 'lab01', 'the normal left in the model\'s space');
+      for (const lab of labs) await oneTodoAtATime(context, lab);
       await editor(context, 'lab01');
       await faults(context, browser);
       await deckWithLiveLab(context);

@@ -184,7 +184,7 @@ GradeAction read_grade_command(int argc, char** argv, GradeCommand& command) {
     if (command.update_mistakes && (command.update_goldens || command.regrade_only_changed || !command.batch.empty()))
         throw Error("--update-mistakes runs alone: after --update-goldens, not with it, and grades nothing");
     if (command.update_mistakes && (options.profile != Profile::Core || !options.cases.empty() || !options.todo.empty()))
-        throw Error("--update-mistakes renders every public case on the core profile: drop --profile, --case and --todo");
+        throw Error("--update-mistakes renders every public case on the core profile: drop --profile, --cases and --todo");
     if (command.update_goldens && command.regrade_only_changed) throw Error("--regrade-only grades; --update-goldens rewrites the goldens");
     return GradeAction::Grade;
 }

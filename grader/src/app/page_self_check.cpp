@@ -108,6 +108,7 @@ void diagnose(Session& s, const LabCases& lab, GradeReport& report, const std::m
         if ((r.status == CaseStatus::WrongImage || r.status == CaseStatus::BlankImage) && it != drawn.end())
             failed.push_back({r.name, &it->second.actual, &it->second.expected});
     }
+    if (!none.not_started.empty()) none.way_in = way_in(lab, report.results, 0);
     if (shipped.empty() || failed.empty()) {
         if (!none.not_started.empty()) report.diagnoses.push_back(none);
         return;
@@ -133,6 +134,7 @@ void diagnose(Session& s, const LabCases& lab, GradeReport& report, const std::m
     for (const std::string& t : none.not_started)
         if (std::find(found.diagnosis.not_started.begin(), found.diagnosis.not_started.end(), t) == found.diagnosis.not_started.end())
             found.diagnosis.not_started.push_back(t);
+    if (!found.diagnosis.not_started.empty()) found.diagnosis.way_in = way_in(lab, report.results, 0);
     report.diagnoses.push_back(std::move(found.diagnosis));
 }
 

@@ -2,9 +2,10 @@
 
 #include "common/app/kit_layout.h"
 #include "common/app/known_mistake_pictures.h"
-#include "grader/src/diagnose/shipped_diagnosis.h"
 #include "common/core/error.h"
 #include "common/image/image.h"
+#include "grader/src/diagnose/shipped_diagnosis.h"
+#include "grader/src/judge/needs.h"
 
 #include <algorithm>
 
@@ -217,6 +218,8 @@ void diagnose_lab(GradingSession& s, MistakePictures& pictures, const LabCases& 
         for (const FailedRender* f : left) d.unexplained.push_back(f->c->name);
         name_found(s, lab, known, failed, pictures_of, d);
     }
+    // A TODO not started: where to begin, a TODO whose case needs no other.
+    if (!d.not_started.empty()) d.way_in = way_in(lab, s.report.results, first);
     if (!d.failing.empty() || !d.not_started.empty()) s.report.diagnoses.push_back(std::move(d));
 }
 

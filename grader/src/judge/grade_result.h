@@ -124,6 +124,8 @@ struct LabDiagnosis {
     std::vector<std::string> unexplained;  // failing cases no known mistake explains
     std::vector<std::string> not_started;  // TODOs whose cases show the starter's not-done colour
     std::string compare;                   // the command that compares an unexplained public case with the reference
+    // Where a student starts (grader/src/judge/needs.h, way_in): a TODO with a case that needs no other TODO.
+    std::string way_in;
 };
 
 struct LabBuild {

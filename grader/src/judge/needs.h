@@ -21,6 +21,11 @@ bool is_quality_status(CaseStatus status);
 // and fail only for each other), the case keeps its own status. Passes, build errors and the kit's faults stay as they
 // are. A failure a known mistake explains (CaseResult::mistake_todo, grader/src/diagnose/) is put on the mistake's TODO,
 // which is then a root: its status stands and its detail names the mistake.
+// Where a student part way through starts: the first TODO (in the case file's order) whose cases do not all pass and
+// that has a public case needing no other TODO, as "L01-T1 (its case 'eye-normals' needs no other TODO)"; empty
+// where every case passes or no such TODO is left.
+std::string way_in(const LabCases& lab, const std::vector<CaseResult>& results, std::size_t first);
+
 void blame_needed_todos(const LabCases& lab, std::vector<CaseResult>& results, std::size_t first);
 
 }  // namespace gsv

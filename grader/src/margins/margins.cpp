@@ -1,5 +1,8 @@
 #include "grader/src/margins/margins.h"
 
+#include "common/app/known_mistake_pictures.h"
+#include "grader/src/diagnose/known_mistakes.h"
+
 #include "common/app/kit_layout.h"
 #include "common/core/error.h"
 #include "common/core/number_text.h"
@@ -134,6 +137,7 @@ public:
 
     MarginMeasurement run() {
         load();
+        result_.labs_with_mutants = labs_with_mutants(options_.kit_root).size();
         for (const auto& implementation : chosen_implementations()) measure(implementation);
         return result_;
     }
@@ -236,12 +240,37 @@ private:
         if (implementation.profile == Profile::Es) g.es_at_least = options_.es_at_least;
         g.todo = todo;
         g.cases = cases;
-        // The table measures margins: naming mistakes (grade.h's diagnose) would render every mistake of each failing case.
-        g.diagnose = DiagnoseCases::Off;
+        // A mutant's failures are named from the pictures the kit ships, as a student's self-check names them there
+        // (nothing rendered for it); the rest are not diagnosed.
+        g.diagnose = kind == "mutant" ? DiagnoseCases::Public : DiagnoseCases::Off;
+        g.mistake_pictures = MistakePictureSource::Shipped;
         GradeReport report = grade(g);
         record(implementation, report, kind, source);
+        if (kind == "mutant") record_diagnosis(implementation, lab, report, source);
         fs::remove_all(work, ec);
         return report;
+    }
+
+    // The first name of the report's diagnosis in the lists' names (the kit ships ids, in the lists' order).
+    void record_diagnosis(const Implementation& implementation, const LabToMeasure& lab, const GradeReport& report, const std::string& mutant) {
+        bool failed = false;
+        for (const auto& r : report.results) failed = failed || r.status == CaseStatus::WrongImage || r.status == CaseStatus::BlankImage;
+        if (!failed) return;  // nothing a picture could name: passed, or failed for a reason that is not a picture
+        const KnownMistakes known = known_mistakes(options_.kit_root, lab.cases.lab);
+        const KnownMistakePictures shipped = read_known_mistake_pictures(options_.kit_root, lab.cases.lab);
+        MarginDiagnosis d{implementation.name, lab.cases.lab, mutant, "", false};
+        for (const auto& diagnosis : report.diagnoses) {
+            if (diagnosis.found.empty()) continue;
+            for (const std::string& id : diagnosis.found.front().names) {
+                std::string name = id;
+                for (std::size_t m = 0; m < shipped.mistakes.size() && m < known.mistakes.size(); ++m)
+                    if (shipped.mistakes[m].id == id) name = known.mistakes[m].name;
+                d.named += (d.named.empty() ? "" : "; ") + name;
+                d.right = d.right || name == mutant;
+            }
+            break;
+        }
+        result_.diagnoses.push_back(d);
     }
 
     static bool all_passed(const GradeReport& report) {
@@ -333,7 +362,12 @@ Json margins_json(const MarginMeasurement& m) {
                                   {"source", r.source}, {"share", number_or_null(r.share)}, {"status", r.status},
                                   {"detail", valid_utf8(r.detail)}, {"offset", number_or_null(r.offset)}}));
     for (const auto& n : m.notes) notes.push_back(n);
-    return object({{"implementations", implementations}, {"cases", cases}, {"renders", renders}, {"notes", notes}});
+    Json diagnoses = Json::array();
+    for (const auto& d : m.diagnoses)
+        diagnoses.push_back(object({{"implementation", d.implementation}, {"lab", d.lab}, {"mutant", d.mutant}, {"named", d.named},
+                                    {"right", d.right}}));
+    return object({{"implementations", implementations}, {"cases", cases}, {"renders", renders}, {"diagnoses", diagnoses},
+                   {"labs_with_mutants", m.labs_with_mutants}, {"notes", notes}});
 }
 
 MarginMeasurement margins_from_json(const Json& root) {
@@ -355,6 +389,11 @@ MarginMeasurement margins_from_json(const Json& root) {
                              j.string_at("source"), j.number_or("share", kInf), j.string_at("status"),
                              j.string_at("detail"), j.number_or("offset", 0)});
     for (const Json& n : root.array_at("notes").as_array()) m.notes.push_back(n.as_string());
+    m.labs_with_mutants = static_cast<std::size_t>(root.number_or("labs_with_mutants", 0));
+    if (const Json* list = root.find("diagnoses"))
+        for (const Json& j : list->as_array())
+            m.diagnoses.push_back({j.string_at("implementation"), j.string_at("lab"), j.string_at("mutant"), j.string_at("named"),
+                                   j.bool_at("right")});
     return m;
 }
 
@@ -366,6 +405,8 @@ MarginMeasurement merge_margins(const std::vector<MarginMeasurement>& parts) {
         for (const auto& c : part.cases)
             if (seen_cases.insert(c.lab + "/" + c.name).second) all.cases.push_back(c);
         all.renders.insert(all.renders.end(), part.renders.begin(), part.renders.end());
+        all.diagnoses.insert(all.diagnoses.end(), part.diagnoses.begin(), part.diagnoses.end());
+        all.labs_with_mutants = std::max(all.labs_with_mutants, part.labs_with_mutants);
         for (const auto& n : part.notes)
             if (seen_notes.insert(n).second) all.notes.push_back(n);
     }
@@ -470,6 +511,27 @@ std::vector<std::string> grading_failures(const MarginMeasurement& m) {
         lines.push_back("on " + on(key.substr(0, bar)) + ": " + key.substr(bar + 1, bar2 - bar - 1) + ": mutant '" + key.substr(bar2 + 1) +
                         "' passes every case it must fail");
     }
+    // The diagnosis: never another mistake's name for a mutant, on any implementation (none at all is honest: "no
+    // known mistake matches"); and, where the measurement holds every lab with mutants, the mutant itself named first
+    // for kDiagnosisBar of them on each implementation (the bar is over the kit's mistakes, not a lab's few).
+    std::map<std::string, std::pair<int, int>> named;  // implementation -> right, all
+    std::map<std::string, std::string> missed;
+    std::set<std::string> labs;
+    for (const auto& d : m.diagnoses) {
+        labs.insert(d.lab);
+        auto& [right, all] = named[d.implementation];
+        ++all;
+        right += d.right;
+        if (!d.right) missed[d.implementation] += (missed[d.implementation].empty() ? "" : "; ") + d.lab + " '" + d.mutant + "'";
+        if (!d.right && !d.named.empty())
+            lines.push_back("on " + on(d.implementation) + ": " + d.lab + ": mutant '" + d.mutant + "' is named as '" + d.named + "'");
+    }
+    if (labs.size() >= m.labs_with_mutants)
+        for (const auto& [implementation, count] : named)
+            if (count.first < kDiagnosisBar * count.second)
+                lines.push_back("on " + on(implementation) + ": the self-check names " + std::to_string(count.first) + " of " +
+                                std::to_string(count.second) + " mutants first, under " + percent_text(kDiagnosisBar) + ": not " +
+                                missed[implementation]);
     for (const auto& run : m.implementations)
         if (!run.available) lines.push_back(run.implementation.name + " was not measured: " + run.why_not);
     return lines;
@@ -548,6 +610,23 @@ std::string margins_table(const MarginMeasurement& m) {
     out << "\nthe whole picture's offset: the largest of a correct render " << fixed(worst_offset, 2) << " px (" << worst_offset_what
         << "); a share of the budget above is also the offset over the " << fixed(kMaxGlobalOffset, 2)
         << " px the grader refuses, so correct renders stay under " << fixed(kCorrectBar * kMaxGlobalOffset, 2) << " px\n";
+    // The diagnosis: per implementation, how many mutants the self-check named first, from the shipped pictures.
+    if (!m.diagnoses.empty()) {
+        out << "\nthe diagnosis (the self-check's first name, from the pictures the kit ships) of the mutants graded; at least "
+            << percent_text(kDiagnosisBar) << " right on each:\n";
+        for (const auto& name : measured) {
+            int right = 0, all = 0;
+            std::string wrong;
+            for (const auto& d : m.diagnoses) {
+                if (d.implementation != name) continue;
+                ++all;
+                right += d.right;
+                if (!d.right) wrong += (wrong.empty() ? "" : "; ") + d.lab + " '" + d.mutant + "' as " + (d.named.empty() ? "none" : "'" + d.named + "'");
+            }
+            if (all == 0) continue;
+            out << "  " << pad(name, 17) << " " << right << " of " << all << " named first" << (wrong.empty() ? "" : ": not " + wrong) << "\n";
+        }
+    }
     out << "\n" << cases - missing << " of " << cases << " cases meet the bar";
     if (without_mutants) out << " (" << without_mutants << " with no mutant that must fail them: correct renders only)";
     out << "\n";

@@ -69,10 +69,20 @@ struct MarginImplementationRun {
     double seconds = 0;
 };
 
+// What the self-check's diagnosis (from the pictures the kit ships, grader/src/diagnose/shipped_diagnosis.h) named
+// first for a mutant graded on an implementation: whether it is the mutant (or a twin named with it).
+struct MarginDiagnosis {
+    std::string implementation, lab, mutant;
+    std::string named;  // the first mistake's names as the lists have them, "; "-separated; "" where none was named
+    bool right = false;
+};
+
 struct MarginMeasurement {
     std::vector<MarginImplementationRun> implementations;
     std::vector<MarginCase> cases;
     std::vector<MarginRender> renders;
+    std::vector<MarginDiagnosis> diagnoses;
+    std::size_t labs_with_mutants = 0;  // in the kit measured: the diagnosis bar holds where all were measured
     std::vector<std::string> notes;  // what was left out, and why
 };
 
@@ -105,8 +115,13 @@ std::string margins_table(const MarginMeasurement& m);
 // The cases that miss the bar, one line each saying why; empty when every case meets it.
 std::vector<std::string> cases_missing_the_bar(const MarginMeasurement& m);
 
+// The least share of mutants whose first diagnosis must be right on an implementation (the bar: the same
+// first name across implementations for nine in ten).
+inline constexpr double kDiagnosisBar = 0.9;
+
 // What CI holds an implementation to (the softpipe kind of test): every correct render passes (the solutions at full
-// marks), and every mutant loses points on a case it must fail. One line per failure, naming the implementation and
+// marks), every mutant loses points on a case it must fail, the diagnosis gives no mutant another mistake's name, and
+// (measuring every lab) names the mutant first for at least kDiagnosisBar of those that failed on a picture. One line per failure, naming the implementation and
 // its GL_RENDERER; empty when all hold.
 std::vector<std::string> grading_failures(const MarginMeasurement& m);
 

@@ -263,6 +263,7 @@ std::vector<std::string> diagnosis_lines(const LabDiagnosis& d) {
         for (const auto& t : d.not_started) todos += (todos.empty() ? "" : ", ") + t;
         lines.push_back("not started: " + todos);
     }
+    if (!d.way_in.empty()) lines.push_back("the way in: " + d.way_in);
     return lines;
 }
 
@@ -288,6 +289,7 @@ LabDiagnosis student_diagnosis(const LabDiagnosis& d, const GradeReport& report)
     out.unexplained = public_only(d.unexplained);
     out.not_started = d.not_started;
     out.compare = d.compare;
+    out.way_in = d.way_in;
     return out;
 }
 

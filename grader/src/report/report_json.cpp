@@ -174,6 +174,7 @@ Json diagnosis_json(const LabDiagnosis& d) {
     j["unexplained"] = strings_json(d.unexplained);
     j["not_started"] = strings_json(d.not_started);
     j["compare"] = text(d.compare);
+    j["way_in"] = text(d.way_in);
     return j;
 }
 

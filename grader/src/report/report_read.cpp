@@ -177,6 +177,7 @@ GradeReport read_report_json(const fs::path& file) {
                 d.unexplained = strings(j, "unexplained");
                 d.not_started = strings(j, "not_started");
                 d.compare = j.string_or("compare", "");
+                d.way_in = j.string_or("way_in", "");
                 report.diagnoses.push_back(std::move(d));
             }
         for (const char* list : {"regraded", "kept"})
