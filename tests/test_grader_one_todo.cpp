@@ -102,4 +102,3 @@ TEST_CASE("lab04: each case passes with its TODO and the TODOs it declares done,
 TEST_CASE("lab05: each case passes with its TODO and the TODOs it declares done, the rest the starter's", "[grader][mutants][gl43]") { one_todo_at_a_time("lab05"); }
 TEST_CASE("lab06: each case passes with its TODO and the TODOs it declares done, the rest the starter's", "[grader][mutants]") { one_todo_at_a_time("lab06"); }
 TEST_CASE("lab07: each case passes with its TODO and the TODOs it declares done, the rest the starter's", "[grader][mutants]") { one_todo_at_a_time("lab07"); }
-
