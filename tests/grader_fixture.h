@@ -9,6 +9,7 @@
 #include "common/io/json.h"
 #include "grader/src/grade/grade.h"
 #include "grader/src/margins/mutant_kit.h"
+#include "tools/starter.h"
 
 #include <algorithm>
 #include <functional>
@@ -34,6 +35,16 @@ inline std::filesystem::path solution_submission(const std::string& lab, const s
 }
 
 // Applies one {find, replace} edit (or each of "edits") to the file named by `edit`'s "file".
+// Every TODO id of a lab's reference (solutions/<lab_dir>), with the files that hold its blocks.
+inline std::map<std::string, std::vector<std::string>> todo_files(const std::string& lab_dir) {
+    std::map<std::string, std::vector<std::string>> files;
+    for (const auto& e : std::filesystem::directory_iterator(source_root() / "solutions" / lab_dir)) {
+        const std::string name = e.path().filename().string();
+        for (const auto& id : make_starter(read_text(e.path()), name).todo_ids) files[id].push_back(name);
+    }
+    return files;
+}
+
 inline void apply_edits(const std::filesystem::path& lab_folder, const Json& edit) { apply_mutant_edits(lab_folder, edit, source_root()); }
 
 inline GradeOptions instructor_options(const std::string& lab, const std::filesystem::path& out) {

@@ -3,7 +3,6 @@
 // results.json; two mistakes in two TODOs are named both; a correct lab and an untouched starter get no mistake.
 #include "grader_fixture.h"
 
-#include "common/app/known_mistake_pictures.h"
 #include "grader/src/diagnose/known_mistakes.h"
 #include "grader/src/report/report.h"
 
@@ -51,10 +50,8 @@ std::vector<std::string> names_found(const GradeReport& report) {
 // pictures the kit ships (grader/golden/<lab>/mistakes.json), the id shipped for it.
 std::string named_as(const std::string& name, bool self_check) {
     if (!self_check) return name;
-    const KnownMistakes known = known_mistakes(test::source_root(), "lab01");
-    const KnownMistakePictures shipped = read_known_mistake_pictures(test::source_root(), "lab01");
-    for (std::size_t m = 0; m < known.mistakes.size() && m < shipped.mistakes.size(); ++m)
-        if (known.mistakes[m].name == name) return shipped.mistakes[m].id;
+    for (const auto& [id, list_name] : list_names_of_shipped(test::source_root(), "lab01"))
+        if (list_name == name) return id;
     return "(not shipped) " + name;
 }
 

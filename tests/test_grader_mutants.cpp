@@ -3,7 +3,6 @@
 #include "grader_fixture.h"
 #include "serve_compare.h"
 
-#include "common/app/known_mistake_pictures.h"
 #include "grader/src/diagnose/known_mistakes.h"
 #include "tools/starter.h"
 
@@ -16,16 +15,6 @@
 using namespace gsv;
 
 namespace {
-
-// Every TODO id of a lab's reference, with the files that hold its blocks.
-std::map<std::string, std::vector<std::string>> todo_files(const std::string& lab_dir) {
-    std::map<std::string, std::vector<std::string>> files;
-    for (const auto& e : std::filesystem::directory_iterator(test::source_root() / "solutions" / lab_dir)) {
-        const std::string name = e.path().filename().string();
-        for (const auto& id : make_starter(test::read_text(e.path()), name).todo_ids) files[id].push_back(name);
-    }
-    return files;
-}
 
 struct Outcome {
     bool lost = false;    // some case of the TODO lost points
@@ -56,12 +45,7 @@ Outcome grade_todo(GradeOptions options, const std::string& todo, bool self_chec
     Outcome o;
     // The self-check names mistakes by the ids the kit ships (grader/golden/<lab>/mistakes.json): the lists' names here.
     std::map<std::string, std::string> name_of;
-    for (const std::string& lab : options.labs) {
-        const KnownMistakes known = known_mistakes(test::source_root(), lab);
-        const KnownMistakePictures shipped = read_known_mistake_pictures(test::source_root(), lab);
-        for (std::size_t m = 0; m < shipped.mistakes.size() && m < known.mistakes.size(); ++m)
-            name_of[shipped.mistakes[m].id] = known.mistakes[m].name;
-    }
+    for (const std::string& lab : options.labs) name_of.merge(list_names_of_shipped(test::source_root(), lab));
     for (const auto& d : report.diagnoses) {
         if (!d.found.empty() && o.first_named.empty())
             for (const std::string& n : d.found.front().names) o.first_named.push_back(name_of.count(n) ? name_of[n] : n);
@@ -85,7 +69,7 @@ void mutation_test(const std::string& lab) {
     {
         const Json spec = test::mutant_spec(lab);
         const std::string lab_dir = spec.string_at("lab_dir");
-        const auto todos = todo_files(lab_dir);
+        const auto todos = test::todo_files(lab_dir);
         struct Mutant {
             std::string todo, name;
             std::function<void(const std::filesystem::path&)> edit;
@@ -241,7 +225,7 @@ TEST_CASE("every C++ TODO: left undone or with a classic bug it loses points, li
         const Json spec = test::mutant_spec(lab);
         const std::string lab_dir = spec.string_at("lab_dir");
         std::vector<std::string> cpp_todos;
-        for (const auto& [todo, files] : todo_files(lab_dir))
+        for (const auto& [todo, files] : test::todo_files(lab_dir))
             if (std::any_of(files.begin(), files.end(), is_cpp_file)) cpp_todos.push_back(todo);
         if (cpp_todos.empty()) continue;
         const Json none = Json::array();

@@ -16,16 +16,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The lab's TODO ids, with the files that hold their blocks.
-std::map<std::string, std::vector<std::string>> todo_files(const fs::path& folder) {
-    std::map<std::string, std::vector<std::string>> files;
-    for (const auto& e : fs::directory_iterator(folder)) {
-        const std::string name = e.path().filename().string();
-        for (const auto& id : make_starter(test::read_text(e.path()), name).todo_ids) files[id].push_back(name);
-    }
-    return files;
-}
-
 std::string joined(const std::set<std::string>& items) {
     std::string out;
     for (const auto& i : items) out += (out.empty() ? "" : ", ") + i;
@@ -36,7 +26,7 @@ void one_todo_at_a_time(const std::string& lab) {
     const KitLayout kit{test::source_root()};
     const std::string lab_dir = test::mutant_spec(lab).string_at("lab_dir");
     const fs::path solution = kit.solutions() / lab_dir;
-    const auto todos = todo_files(solution);
+    const auto todos = test::todo_files(lab_dir);
     std::set<std::string> cpp_todos;
     for (const auto& [todo, files] : todos)
         for (const auto& f : files)

@@ -53,6 +53,14 @@ KnownMistakes known_mistakes(const fs::path& kit_root, const std::string& lab) {
     return known;
 }
 
+std::map<std::string, std::string> list_names_of_shipped(const fs::path& kit_root, const std::string& lab) {
+    const KnownMistakes known = known_mistakes(kit_root, lab);
+    const KnownMistakePictures shipped = read_known_mistake_pictures(kit_root, lab);
+    std::map<std::string, std::string> names;
+    for (std::size_t m = 0; m < shipped.mistakes.size() && m < known.mistakes.size(); ++m) names[shipped.mistakes[m].id] = known.mistakes[m].name;
+    return names;
+}
+
 namespace {
 
 std::string trimmed(const std::string& line) {

@@ -8,6 +8,7 @@
 #include "common/io/json.h"
 
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,10 @@ KnownMistakes known_mistakes(const std::filesystem::path& kit_root, const std::s
 // starter code: in some file of the TODO, after the line that names it (TODO(L04-T4)), the starter's lines as the
 // solution's //@starter block has them, each line's surrounding white space aside. Where a TODO's pictures are a known
 // mistake's too (a pass-through starter), its source tells "not started" from the mistake.
+// The lists' name of each id the kit ships for the lab's mistakes (grader/golden/<lab>/mistakes.json holds them in the
+// lists' order): what a self-check names, told in the instructor's words. Empty where either is missing.
+std::map<std::string, std::string> list_names_of_shipped(const std::filesystem::path& kit_root, const std::string& lab);
+
 StarterBlocks starter_blocks(const std::filesystem::path& kit_root, const std::string& lab_dir, const std::string& todo,
                              const std::vector<std::string>& files);
 bool still_starter(const std::filesystem::path& kit_root, const std::string& lab_dir, const std::filesystem::path& student_folder,

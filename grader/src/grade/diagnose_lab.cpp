@@ -46,27 +46,29 @@ fs::path student_folder(GradingSession& s, const std::string& lab_dir) {
     return fs::exists(student.labs() / lab_dir) ? student.labs() / lab_dir : student.solutions() / lab_dir;
 }
 
+// The report's row of a failing case.
+CaseResult& row_of(GradingSession& s, const std::vector<FailedRender>& failed, const std::string& name) {
+    return s.report.results[std::find_if(failed.begin(), failed.end(), [&](const FailedRender& x) { return x.c->name == name; })->row];
+}
+
+// An explained row: its mistake, and that mistake's picture beside the student's.
+void mark_explained(GradingSession& s, const LabCases& lab, CaseResult& r, const MistakeFound& found, const Image& picture) {
+    r.mistake = found.says;
+    r.mistake_todo = found.todo;
+    r.mistake_sheet = found.sheet;
+    const fs::path png = s.out / lab.lab / r.name / "mistake.png";
+    write_png(png, picture);
+    r.mistake_png = fs::relative(png, s.out).generic_string();
+}
+
 // The mistakes found, told from TODOs not started, each explained row marked with its mistake and its picture.
 void name_found(GradingSession& s, const LabCases& lab, const KnownMistakes& known, const std::vector<FailedRender>& failed,
                 const std::map<std::pair<std::size_t, std::string>, Image>& pictures_of, LabDiagnosis& d) {
-    // The report's row of a failing case.
-    const auto row_of = [&](const std::string& name) -> CaseResult& {
-        return s.report.results[std::find_if(failed.begin(), failed.end(), [&](const FailedRender& x) { return x.c->name == name; })->row];
-    };
     for (const auto& [name, todo] : tell_not_started(d, known, student_folder(s, known.lab_dir)))
-        row_of(name).mistake_todo = todo;  // "mistake" stays empty: not started
-    // Each explained row: its mistake, and that mistake's picture beside the student's.
+        row_of(s, failed, name).mistake_todo = todo;  // "mistake" stays empty: not started
     for (const MistakeFound& found : d.found) {
         const std::size_t m = index_of(known, found.names.front());
-        for (const std::string& name : found.cases) {
-            CaseResult& r = row_of(name);
-            r.mistake = found.says;
-            r.mistake_todo = found.todo;
-            r.mistake_sheet = found.sheet;
-            const fs::path png = s.out / lab.lab / name / "mistake.png";
-            write_png(png, pictures_of.at({m, name}));
-            r.mistake_png = fs::relative(png, s.out).generic_string();
-        }
+        for (const std::string& name : found.cases) mark_explained(s, lab, row_of(s, failed, name), found, pictures_of.at({m, name}));
     }
 }
 
@@ -94,26 +96,15 @@ bool shipped_diagnosis(GradingSession& s, const LabCases& lab, const LabRenders&
     for (const FailedRender& f : renders.failed)
         failed.push_back({f.c->name, f.student.image ? &*f.student.image : nullptr, &f.expected.image});
     ShippedDiagnosis found = diagnose_shipped(shipped, failed, passed, student_folder(s, shipped.lab_dir));
-    const auto row_of = [&](const std::string& name) -> CaseResult& {
-        return s.report.results[std::find_if(renders.failed.begin(), renders.failed.end(),
-                                             [&](const FailedRender& x) { return x.c->name == name; })->row];
-    };
-    for (const auto& [name, todo] : found.not_started_cases) row_of(name).mistake_todo = todo;
+    for (const auto& [name, todo] : found.not_started_cases) row_of(s, renders.failed, name).mistake_todo = todo;
     for (const MistakeFound& f : found.diagnosis.found)
-        for (const std::string& name : f.cases) {
-            CaseResult& r = row_of(name);
-            r.mistake = f.says;
-            r.mistake_todo = f.todo;
-            r.mistake_sheet = f.sheet;
-            const fs::path png = s.out / lab.lab / name / "mistake.png";
-            write_png(png, shipped_picture(shipped, found.mistake_of_case.at(name), name, lab.width, lab.height));
-            r.mistake_png = fs::relative(png, s.out).generic_string();
-        }
-    found.diagnosis.not_started.insert(found.diagnosis.not_started.begin(), d.not_started.begin(), d.not_started.end());
-    std::vector<std::string> unique;
+        for (const std::string& name : f.cases)
+            mark_explained(s, lab, row_of(s, renders.failed, name), f,
+                           shipped_picture(shipped, found.mistake_of_case.at(name), name, lab.width, lab.height));
+    // The TODOs whose cases were not done, then those a starter's picture explains.
     for (const std::string& t : found.diagnosis.not_started)
-        if (std::find(unique.begin(), unique.end(), t) == unique.end()) unique.push_back(t);
-    found.diagnosis.not_started = unique;
+        if (std::find(d.not_started.begin(), d.not_started.end(), t) == d.not_started.end()) d.not_started.push_back(t);
+    found.diagnosis.not_started = std::move(d.not_started);
     d = std::move(found.diagnosis);
     return true;
 }

@@ -1,6 +1,5 @@
 #include "grader/src/margins/margins.h"
 
-#include "common/app/known_mistake_pictures.h"
 #include "grader/src/diagnose/known_mistakes.h"
 
 #include "common/app/kit_layout.h"
@@ -128,6 +127,7 @@ struct LabToMeasure {
     LabCases cases;
     std::string lab_dir;
     std::optional<Json> spec;  // tests/mutants/<lab>.json
+    std::map<std::string, std::string> shipped_names;  // the ids the self-check names mistakes by -> the lists' names
 };
 
 class Measuring {
@@ -170,9 +170,10 @@ private:
             m.lab_dir = lab_dir_of(options_.kit_root, lab.lab);
             const auto with_mutants = labs_with_mutants(options_.kit_root);
             const bool any = options_.mutants || options_.variants;
-            if (any && std::find(with_mutants.begin(), with_mutants.end(), lab.lab) != with_mutants.end())
+            if (any && std::find(with_mutants.begin(), with_mutants.end(), lab.lab) != with_mutants.end()) {
                 m.spec = read_mutant_spec(options_.kit_root, lab.lab);
-            else if (any)
+                m.shipped_names = list_names_of_shipped(options_.kit_root, lab.lab);
+            } else if (any)
                 result_.notes.push_back(lab.lab + ": no tests/mutants/" + lab.lab + ".json, so no mutants or variants measured");
             for (const auto& c : lab.cases)
                 if (c.visibility == "public") result_.cases.push_back({lab.lab, c.name, c.todo, budget_text(lab, c)});
@@ -256,15 +257,12 @@ private:
         bool failed = false;
         for (const auto& r : report.results) failed = failed || r.status == CaseStatus::WrongImage || r.status == CaseStatus::BlankImage;
         if (!failed) return;  // nothing a picture could name: passed, or failed for a reason that is not a picture
-        const KnownMistakes known = known_mistakes(options_.kit_root, lab.cases.lab);
-        const KnownMistakePictures shipped = read_known_mistake_pictures(options_.kit_root, lab.cases.lab);
         MarginDiagnosis d{implementation.name, lab.cases.lab, mutant, "", false};
         for (const auto& diagnosis : report.diagnoses) {
             if (diagnosis.found.empty()) continue;
             for (const std::string& id : diagnosis.found.front().names) {
-                std::string name = id;
-                for (std::size_t m = 0; m < shipped.mistakes.size() && m < known.mistakes.size(); ++m)
-                    if (shipped.mistakes[m].id == id) name = known.mistakes[m].name;
+                const auto it = lab.shipped_names.find(id);
+                const std::string name = it == lab.shipped_names.end() ? id : it->second;
                 d.named += (d.named.empty() ? "" : "; ") + name;
                 d.right = d.right || name == mutant;
             }
