@@ -155,3 +155,83 @@ TEST_CASE("diagnosis: a TODO's starter code is found in the starter and not in t
     }
     CHECK(todos >= 25);
 }
+
+TEST_CASE("diagnosis: two mistakes in two TODOs, neither explaining half alone, are named both where they fit every failure", "[unit]") {
+    // "t1" changes every lit case, "t5" only the two it fails: where both touch a case, neither's picture alone is the
+    // student's; on the cases only one touches, its picture is.
+    const std::vector<KnownMistake> mistakes{mistake("t1", "L01-T1"), mistake("t5", "L01-T5"), mistake("t1 twin", "L01-T1"),
+                                             mistake("t3", "L01-T3")};
+    const std::vector<std::string> failing{"a", "b", "c", "d", "e"};
+    std::vector<std::set<std::string>> explains{{"a", "b"}, {"e"}, {"a", "b"}, {}};
+    const std::vector<std::set<std::string>> fails{{"a", "b", "c", "d"}, {"c", "d", "e"}, {"a", "b", "c", "d"}, {"c"}};
+    const LabDiagnosis d = name_mistakes_and_pairs("lab01", failing, mistakes, explains, fails);
+    REQUIRE(d.found.size() == 2);
+    CHECK(d.found[0].names == std::vector<std::string>{"t1", "t1 twin"});
+    CHECK(d.found[0].cases == std::vector<std::string>{"a", "b"});
+    CHECK(d.found[1].names == std::vector<std::string>{"t5"});
+    CHECK(d.found[1].cases == std::vector<std::string>{"e", "c", "d"});
+    CHECK(d.found[1].with_earlier);
+    CHECK(d.unexplained.empty());
+    SECTION("a failure neither fails is not explained by the pair: no pair is named") {
+        std::vector<std::string> more = failing;
+        more.push_back("f");
+        const LabDiagnosis none = name_mistakes_and_pairs("lab01", more, mistakes, explains, fails);
+        CHECK(none.found.empty());
+        CHECK(none.unexplained == more);
+    }
+    SECTION("two in the same TODO are not a pair") {
+        const std::vector<KnownMistake> same{mistake("t1", "L01-T1"), mistake("t1 other", "L01-T1"), mistake("t1 twin", "L01-T1"),
+                                             mistake("t1 third", "L01-T1")};
+        CHECK(name_mistakes_and_pairs("lab01", failing, same, explains, fails).found.empty());
+    }
+}
+
+TEST_CASE("diagnosis: a second mistake whose cases the first also fails is named only where it alone fits", "[unit]") {
+    // "t1" explains 9 of 11 by its picture; the two left it fails too, and so does "t5" alone among the mistakes that
+    // fail nothing the student passed.
+    std::vector<std::string> failing{"c1", "c2", "c3", "c4", "c5", "c6", "c7", "c8", "c9", "renormalize", "stretched"};
+    std::set<std::string> nine(failing.begin(), failing.begin() + 9);
+    std::set<std::string> all(failing.begin(), failing.end());
+    std::vector<KnownMistake> mistakes{mistake("t1", "L01-T1"), mistake("t5", "L01-T5"), mistake("t2", "L01-T2")};
+    std::vector<std::set<std::string>> explains{nine, {}, {}};
+    std::vector<std::set<std::string>> fails{all, {"renormalize", "stretched"}, {"renormalize", "passed-case"}};
+    LabDiagnosis d = name_mistakes_and_pairs("lab01", failing, mistakes, explains, fails);
+    REQUIRE(d.found.size() == 2);
+    CHECK(d.found[1].names == std::vector<std::string>{"t5"});
+    CHECK(d.found[1].cases == std::vector<std::string>{"renormalize", "stretched"});
+    CHECK(d.unexplained.empty());
+    SECTION("two in different TODOs that fit alike: neither is named") {
+        mistakes.push_back(mistake("t3", "L01-T3"));
+        explains.push_back({});
+        fails.push_back({"renormalize", "stretched"});
+        d = name_mistakes_and_pairs("lab01", failing, mistakes, explains, fails);
+        REQUIRE(d.found.size() == 1);
+        CHECK(d.unexplained == std::vector<std::string>{"renormalize", "stretched"});
+    }
+}
+
+TEST_CASE("diagnosis: where pictures drawn together can be told, a second mistake under the first is named on that evidence only", "[unit]") {
+    // Every failure is the first's by its picture; on "b" the student's picture is the two's together and shows the
+    // second beyond the first alone.
+    const std::vector<KnownMistake> mistakes{mistake("slopes", "L04-T1"), mistake("hard steps", "L04-T3"), mistake("snow", "L04-T3")};
+    const std::vector<std::string> failing{"a", "b", "c"};
+    const std::vector<std::set<std::string>> explains{{"a", "b", "c"}, {}, {}};
+    const std::vector<std::set<std::string>> fails{{"a", "b", "c"}, {"b"}, {"b", "c"}};
+    const auto check = [](bool shows) {
+        return TogetherCheck([shows](std::size_t, std::size_t second, const std::string& c) {
+            TogetherEvidence e;
+            e.matches = second == 1 && c == "b";
+            e.shows_second = shows && e.matches;
+            return e;
+        });
+    };
+    const LabDiagnosis with = name_mistakes_and_pairs("lab04", failing, mistakes, explains, fails, check(true));
+    REQUIRE(with.found.size() == 2);
+    CHECK(with.found[0].cases == std::vector<std::string>{"a", "c"});
+    CHECK(with.found[1].names == std::vector<std::string>{"hard steps"});
+    CHECK(with.found[1].cases == std::vector<std::string>{"b"});
+    // The student's picture is the first's alone as near: no second.
+    CHECK(name_mistakes_and_pairs("lab04", failing, mistakes, explains, fails, check(false)).found.size() == 1);
+    // Without a way to tell pictures drawn together: the first only.
+    CHECK(name_mistakes_and_pairs("lab04", failing, mistakes, explains, fails).found.size() == 1);
+}

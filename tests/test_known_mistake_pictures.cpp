@@ -76,6 +76,24 @@ TEST_CASE("picture signature: streaks along x and along y have one mean colour a
     CHECK(shown.at(100, 100)[1] == 128);
 }
 
+TEST_CASE("picture signature: two mistakes composed, their changes added or the colour's ratios multiplied", "[unit]") {
+    const PictureSignature golden = picture_signature(flat(64, 64, 100, 100, 100), 8);
+    const PictureSignature brighter = picture_signature(flat(64, 64, 150, 100, 100), 8);
+    const PictureSignature greener = picture_signature(flat(64, 64, 100, 160, 100), 8);
+    const PictureSignature half = picture_signature(flat(64, 64, 50, 50, 50), 8);
+    const PictureSignature added = composed_signature(brighter, greener, golden, Composition::Added);
+    CHECK(added.colour.at(3, 3)[0] == 150);
+    CHECK(added.colour.at(3, 3)[1] == 160);
+    CHECK(added.colour.at(3, 3)[2] == 100);
+    // A band's colour (brighter red) under shading halved: the product, not the sum of the changes.
+    const PictureSignature multiplied = composed_signature(brighter, half, golden, Composition::Multiplied);
+    CHECK(multiplied.colour.at(3, 3)[0] == 75);
+    CHECK(multiplied.colour.at(3, 3)[1] == 50);
+    CHECK(composed_signature(half, half, golden, Composition::Added).colour.at(0, 0)[0] == 0);  // clamped, not wrapped
+    CHECK(test::gsv_error_message([&] { composed_signature(brighter, picture_signature(flat(32, 32, 0, 0, 0), 8), golden, Composition::Added); })
+              .find("different sizes") != std::string::npos);
+}
+
 TEST_CASE("known mistake pictures: written and read back the same, one picture kept once, a bad file named", "[unit]") {
     test::TempDir dir;
     KnownMistakePictures k;

@@ -92,6 +92,25 @@ bool signature_matches(const PictureSignature& picture, const PictureSignature& 
     return apart >= kLeastDifference && signature_distance(picture, mistake) <= kNearShare * apart;
 }
 
+PictureSignature composed_signature(const PictureSignature& first, const PictureSignature& second, const PictureSignature& golden,
+                                    Composition how) {
+    signature_distance(first, golden);  // the sizes checked
+    signature_distance(second, golden);
+    PictureSignature out = golden;
+    const auto level = [](double v) { return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0, 255.0))); };
+    for (const bool colour : {true, false}) {
+        const Image& a = colour ? first.colour : first.texture;
+        const Image& b = colour ? second.colour : second.texture;
+        Image& o = colour ? out.colour : out.texture;
+        for (std::size_t i = 0; i < o.rgba.size(); i += 4)
+            for (int c = 0; c < 3; ++c) {
+                const double g = o.rgba[i + c], x = a.rgba[i + c], y = b.rgba[i + c];
+                o.rgba[i + c] = level(colour && how == Composition::Multiplied ? x * y / std::max(g, 1.0) : x + y - g);
+            }
+    }
+    return out;
+}
+
 Image signature_picture(const PictureSignature& signature, int width, int height) {
     const Image& small = signature.colour;
     Image out(width, height);

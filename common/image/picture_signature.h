@@ -30,6 +30,13 @@ double signature_distance(const PictureSignature& a, const PictureSignature& b);
 // its signature at all.
 bool signature_matches(const PictureSignature& picture, const PictureSignature& mistake, const PictureSignature& golden);
 
+// Two mistakes made together, guessed from their pictures alone (no picture of them together is shipped): each block's
+// change from the golden added (a highlight and a darker ambient), or, for the colour, the two ratios to the golden
+// multiplied (a band's colour times the shading). Throws gsv::Error where the sizes differ.
+enum class Composition { Added, Multiplied };
+PictureSignature composed_signature(const PictureSignature& first, const PictureSignature& second, const PictureSignature& golden,
+                                    Composition how);
+
 // The colour thumbnail scaled up to width x height (bilinear) to be shown beside full-size pictures.
 Image signature_picture(const PictureSignature& signature, int width, int height);
 

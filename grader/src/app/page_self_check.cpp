@@ -122,6 +122,7 @@ void diagnose(Session& s, const LabCases& lab, GradeReport& report, const std::m
         r.mistake = mistake.says;
         r.mistake_todo = mistake.todo;
         r.mistake_sheet = mistake.sheet;
+        if (found.drawn_together.count(r.name)) continue;  // two mistakes drew it together: no one picture of it
         const Drawn& d = drawn.at(r.name);
         MistakePanel panel{shipped_picture(shipped, m->second, r.name, d.actual.width, d.actual.height),
                            "looks like a known mistake in " + mistake.todo + ": " + mistake.says + " (its picture, reduced)"};

@@ -3,6 +3,7 @@
 #include "common/app/known_mistake_pictures.h"
 
 #include <algorithm>
+#include <optional>
 
 namespace gsv {
 
@@ -63,6 +64,179 @@ LabDiagnosis name_mistakes(const std::string& lab, const std::vector<std::string
     }
     for (const std::string& name : failing)
         if (!explained.count(name)) d.unexplained.push_back(name);
+    return d;
+}
+
+std::vector<MistakePair> consistent_pairs(const std::vector<std::string>& left, const std::vector<std::string>& failing,
+                                          const std::vector<KnownMistake>& mistakes,
+                                          const std::vector<std::set<std::string>>& explains,
+                                          const std::vector<std::set<std::string>>& fails, const std::vector<std::size_t>& named,
+                                          const TogetherCheck& check) {
+    const std::set<std::string> is_left(left.begin(), left.end()), failed(failing.begin(), failing.end());
+    // A second: its picture explains a case left, or (where pictures drawn together can be told) every case left it
+    // fails is one failed.
+    const auto may_second = [&](std::size_t m) {
+        if (std::any_of(left.begin(), left.end(), [&](const std::string& c) { return explains[m].count(c) > 0; })) return true;
+        return check && std::any_of(fails[m].begin(), fails[m].end(), [&](const std::string& c) { return is_left.count(c) > 0; }) &&
+               std::all_of(fails[m].begin(), fails[m].end(), [&](const std::string& c) { return failed.count(c) > 0; });
+    };
+    const auto is_named = [&](std::size_t m) { return std::find(named.begin(), named.end(), m) != named.end(); };
+    std::vector<std::size_t> firsts, seconds;
+    for (std::size_t m = 0; m < mistakes.size(); ++m) {
+        if (is_named(m)) firsts.push_back(m);
+        else if (mistakes[m].not_started) continue;  // a TODO not started is told by its source (tell_not_started), not paired
+        else if (may_second(m)) seconds.push_back(m);
+    }
+    if (named.empty()) firsts = seconds;
+    std::vector<MistakePair> pairs;
+    for (const std::size_t a : firsts)
+        for (const std::size_t b : seconds) {
+            if (a == b || mistakes[a].todo == mistakes[b].todo || (named.empty() && b < a)) continue;
+            MistakePair p{a, b, {}, {}, {}, 0};
+            bool consistent = true, shows_first = !named.empty(), shows_second = false;
+            for (const std::string& c : left) {
+                if (named.empty() && explains[a].count(c)) p.by_first.push_back(c);
+                else if (explains[b].count(c)) p.by_second.push_back(c);
+                else if (fails[a].count(c) && fails[b].count(c)) p.together.push_back(c);
+                else consistent = false;
+            }
+            if (!consistent) continue;
+            for (const std::string& c : p.together) {
+                if (!check) break;
+                const TogetherEvidence e = check(a, b, c);
+                p.together_matched += e.matches;
+                shows_first = shows_first || (e.matches && e.shows_first);
+                shows_second = shows_second || (e.matches && e.shows_second);
+            }
+            // As for one mistake (name_mistakes): pictures must explain at least half the failures left, not a case or two.
+            const std::size_t by_pictures = p.by_first.size() + p.by_second.size() + p.together_matched;
+            if ((shows_first || !p.by_first.empty()) && (shows_second || !p.by_second.empty()) && by_pictures * 2 >= left.size())
+                pairs.push_back(std::move(p));
+        }
+    std::stable_sort(pairs.begin(), pairs.end(), [](const MistakePair& x, const MistakePair& y) {
+        const std::size_t px = x.by_first.size() + x.by_second.size() + x.together_matched,
+                          py = y.by_first.size() + y.by_second.size() + y.together_matched;
+        return px != py ? px > py : x.together.size() < y.together.size();
+    });
+    return pairs;
+}
+
+void add_pair(LabDiagnosis& d, const MistakePair& pair, bool first_is_new, const std::vector<KnownMistake>& mistakes,
+              const std::vector<std::set<std::string>>& explains, const std::vector<std::set<std::string>>& fails) {
+    std::set<std::string> already;
+    for (const MistakeFound& f : d.found) already.insert(f.names.begin(), f.names.end());
+    const auto found = [&](std::size_t m, std::vector<std::string> cases, bool with_earlier) {
+        MistakeFound f{mistakes[m].todo, mistakes[m].says, mistakes[m].sheet, {}, std::move(cases), with_earlier};
+        for (std::size_t t = 0; t <= mistakes.size(); ++t)  // m itself first: its picture is the one shown
+            if (const std::size_t i = t == 0 ? m : t - 1; (t == 0 || (i != m && explains[i] == explains[m] && fails[i] == fails[m])) &&
+                                                          !already.count(mistakes[i].name)) {
+                f.names.push_back(mistakes[i].name);
+                already.insert(mistakes[i].name);
+            }
+        return f;
+    };
+    if (first_is_new) d.found.push_back(found(pair.first, pair.by_first, false));
+    std::vector<std::string> second = pair.by_second;
+    second.insert(second.end(), pair.together.begin(), pair.together.end());
+    d.found.push_back(found(pair.second, second, true));
+    std::set<std::string> explained(pair.by_first.begin(), pair.by_first.end());
+    explained.insert(second.begin(), second.end());
+    d.unexplained.erase(std::remove_if(d.unexplained.begin(), d.unexplained.end(), [&](const std::string& c) { return explained.count(c) > 0; }),
+                        d.unexplained.end());
+}
+
+namespace {
+
+// A second mistake whose own picture shows nowhere: where every failure left is a case a mistake named also fails, the
+// second's picture there is drawn over by the first's. It is named only where it alone fits: the mistakes (not in a
+// TODO named) whose pictures fail every case left and no case the student did not fail, the one failing fewest;
+// none where two in different TODOs fit as well.
+std::optional<std::size_t> hidden_second(const std::vector<std::string>& left, const std::vector<std::string>& failing,
+                                         const std::vector<KnownMistake>& mistakes, const std::vector<std::set<std::string>>& fails,
+                                         const std::vector<std::size_t>& named) {
+    const std::set<std::string> failed(failing.begin(), failing.end());
+    const auto in_named_todo = [&](std::size_t m) {
+        return std::any_of(named.begin(), named.end(), [&](std::size_t n) { return mistakes[n].todo == mistakes[m].todo; });
+    };
+    for (const std::string& c : left)
+        if (std::none_of(named.begin(), named.end(), [&](std::size_t n) { return fails[n].count(c) > 0; })) return std::nullopt;
+    std::optional<std::size_t> best;
+    bool ambiguous = false;
+    for (std::size_t m = 0; m < mistakes.size(); ++m) {
+        if (in_named_todo(m) || fails[m].empty() || mistakes[m].not_started) continue;
+        if (!std::all_of(fails[m].begin(), fails[m].end(), [&](const std::string& c) { return failed.count(c) > 0; })) continue;
+        if (!std::all_of(left.begin(), left.end(), [&](const std::string& c) { return fails[m].count(c) > 0; })) continue;
+        if (!best || fails[m].size() < fails[*best].size()) {
+            best = m;
+            ambiguous = false;
+        } else if (fails[m].size() == fails[*best].size() && mistakes[m].todo != mistakes[*best].todo) {
+            ambiguous = true;
+        }
+    }
+    return ambiguous ? std::nullopt : best;
+}
+
+// A second mistake beneath the one named, where every failure is explained: on the cases both fail the student's
+// picture is the two's together (`check`) and, on one at least, shows the second beyond the first alone; the cases
+// only it fails its own picture explains. Named only where one TODO's mistakes fit best; the cases it shows on move to it.
+void second_beneath(LabDiagnosis& d, const std::vector<std::string>& failing, const std::vector<KnownMistake>& mistakes,
+                    const std::vector<std::set<std::string>>& explains, const std::vector<std::set<std::string>>& fails,
+                    const std::vector<std::size_t>& named, const TogetherCheck& check) {
+    const std::set<std::string> failed(failing.begin(), failing.end());
+    const std::size_t first = named.front();
+    std::optional<std::size_t> best;
+    std::vector<std::string> best_shows;
+    bool ambiguous = false;
+    for (std::size_t m = 0; m < mistakes.size(); ++m) {
+        if (fails[m].empty() || mistakes[m].not_started ||
+            std::any_of(named.begin(), named.end(), [&](std::size_t n) { return mistakes[n].todo == mistakes[m].todo; }))
+            continue;
+        std::vector<std::string> shows;
+        bool fits = true;
+        for (const std::string& c : fails[m]) {
+            if (!failed.count(c)) fits = false;
+            else if (!fails[first].count(c)) fits = fits && explains[m].count(c) > 0;
+            else if (const TogetherEvidence e = check(first, m, c); !e.matches) fits = false;
+            else if (e.shows_second) shows.push_back(c);
+            if (!fits) break;
+        }
+        if (!fits || shows.empty()) continue;
+        if (!best || shows.size() > best_shows.size()) {
+            best = m;
+            best_shows = shows;
+            ambiguous = false;
+        } else if (shows.size() == best_shows.size() && mistakes[m].todo != mistakes[*best].todo) {
+            ambiguous = true;
+        }
+    }
+    if (!best || ambiguous) return;
+    const std::set<std::string> moved(best_shows.begin(), best_shows.end());
+    for (MistakeFound& f : d.found)
+        f.cases.erase(std::remove_if(f.cases.begin(), f.cases.end(), [&](const std::string& c) { return moved.count(c) > 0; }), f.cases.end());
+    add_pair(d, MistakePair{first, *best, {}, {}, best_shows, best_shows.size()}, false, mistakes, explains, fails);
+}
+
+}  // namespace
+
+LabDiagnosis name_mistakes_and_pairs(const std::string& lab, const std::vector<std::string>& failing,
+                                     const std::vector<KnownMistake>& mistakes, const std::vector<std::set<std::string>>& explains,
+                                     const std::vector<std::set<std::string>>& fails, const TogetherCheck& check) {
+    LabDiagnosis d = name_mistakes(lab, failing, mistakes, explains);
+    std::vector<std::size_t> named;
+    for (const MistakeFound& f : d.found)
+        for (const std::string& n : f.names)
+            for (std::size_t m = 0; m < mistakes.size(); ++m)
+                if (mistakes[m].name == n) named.push_back(m);
+    if (d.unexplained.empty()) {
+        if (check && !named.empty()) second_beneath(d, failing, mistakes, explains, fails, named, check);
+        return d;
+    }
+    const std::vector<MistakePair> pairs = consistent_pairs(d.unexplained, failing, mistakes, explains, fails, named, check);
+    if (!pairs.empty()) {
+        add_pair(d, pairs.front(), named.empty(), mistakes, explains, fails);
+    } else if (const auto hidden = hidden_second(d.unexplained, failing, mistakes, fails, named)) {
+        add_pair(d, MistakePair{named.front(), *hidden, {}, {}, d.unexplained}, false, mistakes, explains, fails);
+    }
     return d;
 }
 

@@ -5,6 +5,7 @@
 #include "grader/src/judge/grade_result.h"
 
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <set>
 #include <string>
@@ -23,6 +24,42 @@ LabDiagnosis rank_mistakes(const std::string& lab, const std::vector<std::string
 // none named explains are unexplained.
 LabDiagnosis name_mistakes(const std::string& lab, const std::vector<std::string>& failing, const std::vector<KnownMistake>& mistakes,
                            const std::vector<std::set<std::string>>& explains);
+
+// Two mistakes in two TODOs where none alone explains half the failures (where both touch a case, neither's picture
+// alone is what the student drew). A pair is consistent with the failures `left` where each of them is a case one of
+// the two explains by its picture, or a case both fail alone (`fails[m]`: the cases m's own picture fails); each of the
+// two explains one case by its picture at least, and they sit in different TODOs. Where `named` is not empty, the
+// pair's first is one of those (already reported) and only its second is new. Best first: the most cases explained by
+// pictures, then the fewest drawn together, then the lists' order.
+// Where a case both fail is drawn together, what can be told of it without drawing them (`check`, where given: the
+// self-check guesses the picture from the two shipped ones): whether the student's picture is the two's together, and
+// whether it shows each of them beyond the other alone. That is evidence of a mistake whose own picture explains no
+// case by itself (its cases all touched by the other too).
+struct TogetherEvidence {
+    bool matches = false, shows_first = false, shows_second = false;
+};
+using TogetherCheck = std::function<TogetherEvidence(std::size_t first, std::size_t second, const std::string& case_name)>;
+struct MistakePair {
+    std::size_t first = 0, second = 0;
+    std::vector<std::string> by_first, by_second, together;  // the cases of `left` each explains; those both fail
+    std::size_t together_matched = 0;                        // cases drawn together that `check` says are the two's
+};
+// `failing`: every case the student failed (a second found through `check` fails no other).
+std::vector<MistakePair> consistent_pairs(const std::vector<std::string>& left, const std::vector<std::string>& failing,
+                                          const std::vector<KnownMistake>& mistakes,
+                                          const std::vector<std::set<std::string>>& explains,
+                                          const std::vector<std::set<std::string>>& fails, const std::vector<std::size_t>& named,
+                                          const TogetherCheck& check = {});
+
+// The pair as reported: its first (where new) with its twins (same pictures, same failing cases), then its second and
+// its twins with the cases drawn together, marked as made together with the mistakes above.
+void add_pair(LabDiagnosis& d, const MistakePair& pair, bool first_is_new, const std::vector<KnownMistake>& mistakes,
+              const std::vector<std::set<std::string>>& explains, const std::vector<std::set<std::string>>& fails);
+
+// name_mistakes, then, where failures are left, the best consistent pair (completing the mistakes named, or two new).
+LabDiagnosis name_mistakes_and_pairs(const std::string& lab, const std::vector<std::string>& failing,
+                                     const std::vector<KnownMistake>& mistakes, const std::vector<std::set<std::string>>& explains,
+                                     const std::vector<std::set<std::string>>& fails, const TogetherCheck& check = {});
 
 // A TODO not started (its pictures the starter's) is said so, not named as a mistake. Where a mistake or another TODO's
 // starter draws the same on these cases (a pass-through starter leaves out what the mistake leaves out), the student's

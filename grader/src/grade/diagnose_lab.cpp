@@ -8,6 +8,7 @@
 #include "grader/src/judge/needs.h"
 
 #include <algorithm>
+#include <optional>
 
 namespace fs = std::filesystem;
 
@@ -56,6 +57,7 @@ void mark_explained(GradingSession& s, const LabCases& lab, CaseResult& r, const
     r.mistake = found.says;
     r.mistake_todo = found.todo;
     r.mistake_sheet = found.sheet;
+    if (picture.empty()) return;  // drawn by two mistakes together: no one picture of it
     const fs::path png = s.out / lab.lab / r.name / "mistake.png";
     write_png(png, picture);
     r.mistake_png = fs::relative(png, s.out).generic_string();
@@ -100,13 +102,50 @@ bool shipped_diagnosis(GradingSession& s, const LabCases& lab, const LabRenders&
     for (const MistakeFound& f : found.diagnosis.found)
         for (const std::string& name : f.cases)
             mark_explained(s, lab, row_of(s, renders.failed, name), f,
-                           shipped_picture(shipped, found.mistake_of_case.at(name), name, lab.width, lab.height));
+                           found.drawn_together.count(name)
+                               ? Image{}
+                               : shipped_picture(shipped, found.mistake_of_case.at(name), name, lab.width, lab.height));
     // The TODOs whose cases were not done, then those a starter's picture explains.
     for (const std::string& t : found.diagnosis.not_started)
         if (std::find(d.not_started.begin(), d.not_started.end(), t) == d.not_started.end()) d.not_started.push_back(t);
     found.diagnosis.not_started = std::move(d.not_started);
     d = std::move(found.diagnosis);
     return true;
+}
+
+// The best pair consistent with the failures left (ranking.h, consistent_pairs) whose two mistakes, made together, draw
+// every one of them as the student did and pass what the student passed; its pictures kept. Only the first few pairs
+// are made: each costs a render of the cases left.
+std::optional<MistakePair> verified_pair(GradingSession& s, MistakePictures& pictures, const LabCases& lab, const KnownMistakes& known,
+                                         const std::vector<const FailedRender*>& left, const std::vector<PassedRender>& passed,
+                                         const std::vector<std::set<std::string>>& explains,
+                                         const std::vector<std::set<std::string>>& fails,
+                                         std::map<std::pair<std::size_t, std::string>, Image>& pictures_of) {
+    constexpr std::size_t kPairsMade = 3;
+    std::vector<const GradeCase*> cases;
+    std::vector<std::string> names;
+    for (const FailedRender* f : left) {
+        cases.push_back(f->c);
+        names.push_back(f->c->name);
+    }
+    const std::vector<MistakePair> pairs = consistent_pairs(names, names, known.mistakes, explains, fails, {});
+    for (std::size_t p = 0; p < pairs.size() && p < kPairsMade; ++p) {
+        const std::vector<std::size_t> made{pairs[p].first, pairs[p].second};
+        std::vector<LabRun> runs;
+        try {
+            runs = pictures.render(lab, known, made, cases);
+        } catch (const std::exception&) {
+            continue;  // the two edits cannot be made together
+        }
+        bool all = true;
+        for (std::size_t i = 0; i < left.size() && all; ++i)
+            all = student_matches(lab, *left[i]->c, left[i]->student, runs[i]) && mistake_fails(lab, *left[i]->c, runs[i], left[i]->expected, s.kit);
+        if (!all || !agrees_with_passes(s, pictures, lab, known, made, passed)) continue;
+        for (std::size_t i = 0; i < left.size(); ++i)
+            if (!explains[pairs[p].first].count(names[i])) pictures_of[{pairs[p].second, names[i]}] = *runs[i].image;
+        return pairs[p];
+    }
+    return std::nullopt;
 }
 
 }  // namespace
@@ -162,7 +201,7 @@ void diagnose_lab(GradingSession& s, MistakePictures& pictures, const LabCases& 
                 left_cases.push_back(f->c);
                 left_names.push_back(f->c->name);
             }
-            std::vector<std::set<std::string>> explains(known.mistakes.size());
+            std::vector<std::set<std::string>> explains(known.mistakes.size()), fails(known.mistakes.size());
             for (std::size_t m = 0; m < known.mistakes.size(); ++m) {
                 if (std::find(named.begin(), named.end(), m) != named.end()) continue;
                 std::vector<std::size_t> made = named;
@@ -175,10 +214,11 @@ void diagnose_lab(GradingSession& s, MistakePictures& pictures, const LabCases& 
                     continue;  // later rounds: mistakes that cannot be made together with those named
                 }
                 std::set<std::string> explained;
-                for (std::size_t i = 0; i < left.size(); ++i)
-                    if (student_matches(lab, *left[i]->c, left[i]->student, runs[i]) &&
-                        mistake_fails(lab, *left[i]->c, runs[i], left[i]->expected, s.kit))
-                        explained.insert(left[i]->c->name);
+                for (std::size_t i = 0; i < left.size(); ++i) {
+                    if (!mistake_fails(lab, *left[i]->c, runs[i], left[i]->expected, s.kit)) continue;
+                    fails[m].insert(left[i]->c->name);
+                    if (student_matches(lab, *left[i]->c, left[i]->student, runs[i])) explained.insert(left[i]->c->name);
+                }
                 if (explained.empty()) continue;
                 // It must also agree with what the student got right: a case they passed, it passes too.
                 if (!agrees_with_passes(s, pictures, lab, known, made, renders.passed)) continue;
@@ -199,6 +239,17 @@ void diagnose_lab(GradingSession& s, MistakePictures& pictures, const LabCases& 
                 f.with_earlier = round > 0;
                 named.push_back(index_of(known, f.names.front()));
                 d.found.push_back(std::move(f));
+            }
+            if (newly.empty() && round == 0) {
+                // None alone explains half: two mistakes in two TODOs, each drawing the cases only it touches, made
+                // together to see the cases both touch.
+                if (const auto pair = verified_pair(s, pictures, lab, known, left, renders.passed, explains, fails, pictures_of)) {
+                    add_pair(d, *pair, true, known.mistakes, explains, fails);
+                    named.push_back(pair->first);
+                    named.push_back(pair->second);
+                    left.clear();
+                }
+                break;
             }
             if (newly.empty()) break;
             std::vector<const FailedRender*> still;
