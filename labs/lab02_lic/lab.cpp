@@ -40,6 +40,9 @@ public:
         p.add_choice("input", "noise", {"noise", "photo"}, "what LIC smears: white noise, or a photograph");
         p.add_int("length", 25, 0, 200, "steps each way along the streamline")
             .accuracy_knob({"1", "2", "5", "10", "25", "50", "100"});
+        p.add_choice("streaks", "both", {"both", "forward"},
+                     "streamlines followed both ways (a centred kernel), or forward only: one-sided streaks, the first loop alone")
+            .at_compile_time();
         p.add_choice("step", "euler", {"euler", "midpoint"}, "first-order (Euler) or second-order (midpoint) steps")
             .at_compile_time()
             .series();

@@ -24,6 +24,8 @@ void main() {
     // TODO(L02-T2): the same backwards. Bailey's listing steps forward in this second loop as
     // well, so every streak is one-sided: half the kernel counted twice.
     st = vTexCoord;
+#ifndef STREAKS_FORWARD
+#endif
 
     fColor = vec4(sum / count, 1.0);
 }

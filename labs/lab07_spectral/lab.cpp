@@ -37,8 +37,11 @@ public:
             .at_compile_time()
             .accuracy_knob({"1", "2", "3", "4", "6", "8", "12", "16"});
         p.add_choice("node_set", "gll", {"gll", "equispaced"}, "Gauss-Lobatto-Legendre or equispaced nodes").series();
-        p.add_choice("evaluation", "full", {"full", "corners"},
-                     "the polynomial per fragment, or the bilinear blend of each element's corner values").at_compile_time();
+        p.add_choice("evaluation", "full", {"full", "corners", "basis"},
+                     "the polynomial per fragment, the bilinear blend of each element's corner values, or one basis "
+                     "function l_k(xi) in grey across every element").at_compile_time();
+        p.add_int("basis_index", 1, 0, 16, "k: the basis function drawn (evaluation=basis), clamped to the degree")
+            .applies_when("evaluation", {"basis"});
         p.add_int("subdivisions", 6, 1, 64, "quads per element side, to follow curved elements (the field is per fragment)");
         p.add_float("time", 0, 0, 6.2832, "the field's time: play it in the window").with_step(0.05).animated();
         p.add_bool("auto_range", true, "colour range from the smallest to the largest node value");

@@ -33,6 +33,7 @@ void main() {
     // TODO(L02-T2): the same backwards. Bailey's listing steps forward in this second loop as
     // well, so every streak is one-sided: half the kernel counted twice.
     st = vTexCoord;
+#ifndef STREAKS_FORWARD
 //@solution L02-T2
     for (int i = 0; i < uLength; ++i) {
         st = advance(st, -1.0, texel);
@@ -42,6 +43,7 @@ void main() {
     }
 //@starter
 //@end
+#endif
 
     fColor = vec4(sum / count, 1.0);
 }

@@ -43,6 +43,9 @@ public:
         p.add_effect("mipmaps", false, "mipmapped heights: zoomed out, far samples average instead of alias");
         p.add_int("mip_level", -1, -1, 10, "with mipmaps: -1 lets the hardware pick the level, k reads level k").applies_when("mipmaps", {"on"});
         p.add_bool("heights8", false, "heights rounded to 256 levels, as an 8-bit texture would store them");
+        p.add_choice("shading", "lit", {"lit", "slopes"},
+                     "lit by the normal and coloured by height, or the slope itself as a colour (east red, north green)")
+            .at_compile_time();
         p.add_choice("coloring", "levels", {"levels", "plain"}, "sea, green, brown and snow by height, or one colour")
             .at_compile_time();
         p.add_float("tree_line", 0.35, 0, 1, "where green turns brown, as a fraction of the land's height range").applies_when("coloring", {"levels"});

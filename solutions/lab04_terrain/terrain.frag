@@ -10,8 +10,15 @@ in vec2 vTexCoord;
 out vec4 fColor;
 
 void main() {
+#ifdef SHADING_SLOPES
+    // The slope itself, before any normal or light: what L04-T1 computes, east-rising red and north-rising green
+    // (times the exaggeration), both 0.5 where the ground is level.
+    vec2 slope = uExaggeration * terrainSlope(vTexCoord);
+    fColor = vec4(0.5 + 0.5 * clamp(slope, -1.0, 1.0), 0.5, 1.0);
+#else
     vec3 n = terrainNormal(vTexCoord);
     float h = texture(uHeights, vTexCoord).r;
     float diffuse = max(dot(n, normalize(uLightDirection)), 0.0);
     fColor = vec4(heightColor(h) * (0.22 + 0.78 * diffuse), 1.0);
+#endif
 }
