@@ -45,6 +45,12 @@ public:
         p.add_choice("time_wrap", "repeat", {"repeat", "clamp"}, "a periodic flow wraps; any other stops at the last slice")
             .at_compile_time();
         p.add_float("time", 3.3f, 0, 10, "the playhead over one period").with_step(0.1).animated();
+        p.add_choice("playhead", "time", {"time", "slice"},
+                     "the slice axis from the playhead's time, or a position on it set directly (slice)")
+            .at_compile_time();
+        p.add_float("slice", 0, 0, 4095, "s, the position on the slice axis in slice units (playhead=slice), at most T - 1")
+            .with_step(0.25)
+            .applies_when("playhead", {"slice"});
         p.add_int("length", 20, 0, 200, "LIC steps each way");
         p.add_int("grid", 256, 16, 1024, "flow texels across (the domain is twice as wide as high)");
         p.add_float("speed", 1.0, 0, 4, "largest speed, in flow texels per step").with_step(0.1);

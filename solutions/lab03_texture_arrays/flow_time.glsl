@@ -84,8 +84,16 @@ vec2 flowInSlice(vec2 st, int k) {
 #endif
 }
 
+#ifdef PLAYHEAD_SLICE
+uniform float uSlice;  // s set directly: the slices looked up without the playhead's time (L03-T2)
+#endif
+
 vec2 flowAt(vec2 st) {
+#ifdef PLAYHEAD_SLICE
+    float s = clamp(uSlice, 0.0, float(SLICES - 1));
+#else
     float s = sliceCoordinate(uTime);
+#endif
 #if defined(BLEND_LINEAR) && defined(STORAGE_VOLUME)
     // The 3D texture's filter interpolates in time for free: one lookup between two slice centres
     // (the same filter that bleeds when a single slice is wanted).
