@@ -118,6 +118,7 @@ async function starterPage(context, lab) {
   // A starter may paint the whole picture magenta (nothing done yet): drawn, if not yet a picture.
   check(!pixels.black, lab + ' first frame is drawn (' + (pixels.flat ? 'one colour: the starter\'s' : 'a picture') + ')');
   await page.screenshot({ path: path.join(out, lab + '-page.png'), fullPage: true });
+  await editorTabs(page, lab);
   // The starter's self-check draws every case; once (with --native, against gsv-grade's table) is enough: its
   // not-done colour is the same on every rasterizer.
   if (!args.native) {
@@ -134,6 +135,26 @@ async function starterPage(context, lab) {
   }
   check(problems.length === 0, lab + ' no console error' + (problems.length ? ': ' + problems.join('; ') : ''));
   await page.close();
+}
+
+// The editor's tabs: each file with a TODO names its TODO ids on its tab; a compute shader (the page has none) is
+// marked as not compiled here; the editor opens on a file with a TODO that the page compiles.
+async function editorTabs(page, lab) {
+  const tabs = await page.evaluate(() => window.gsvEditor.files().map((f) => ({
+    name: f.name, todos: (f.starter.match(/TODO\((L\d\d-T\d+)\)/g) || []).map((t) => t.slice(5, -1)),
+    tab: f.tab.textContent, todoClass: f.tab.classList.contains('todo'), notCompiled: f.tab.classList.contains('not-compiled'),
+    selected: f.tab.getAttribute('aria-selected') === 'true' })));
+  const withTodo = tabs.filter((t) => t.todos.length);
+  const named = withTodo.every((t) => t.todoClass && t.todos.every((id) => t.tab.includes(id)));
+  const unmarked = tabs.filter((t) => !t.todos.length && t.todoClass);
+  check(withTodo.length > 0 && named && unmarked.length === 0,
+        lab + ' editor: the ' + withTodo.length + ' of ' + tabs.length + ' tabs with a TODO name it (' +
+        withTodo.map((t) => t.tab).join(', ') + ')');
+  const comp = tabs.filter((t) => /\.comp$/.test(t.name));
+  check(comp.every((t) => t.notCompiled) && tabs.filter((t) => t.notCompiled).length === comp.length,
+        lab + ' editor: ' + (comp.length ? comp.map((t) => t.name).join(', ') + ' marked as not compiled in the page' : 'no compute shader to mark'));
+  const open = tabs.find((t) => t.selected);
+  check(open && open.todos.length > 0 && !open.notCompiled, lab + ' editor: opens on ' + (open ? open.name : 'nothing') + ', a file with a TODO the page compiles');
 }
 
 async function solutionPage(context, lab) {
@@ -161,7 +182,7 @@ async function oneTodoUndone(context, lab, todo) {
   const shaders = fs.readdirSync(dir).filter((n) => /\.(vert|frag|glsl|comp)$/.test(n));
   await page.setInputFiles('#open', shaders.map((n) => path.join(dir, n)));
   await page.waitForFunction(() => /^Opened/.test(document.getElementById('status').textContent));
-  await page.waitForTimeout(800);  // the editor's 300 ms pause, then the rebuild
+  await page.waitForTimeout(800);  // opened files rebuild at once; then a frame drawn from them
   const result = await selfCheck(page);
   const lost = result.results.filter((r) => r.status !== 'passed').map((r) => r.name + '(' + r.todo + ')');
   check(result.results.some((r) => r.todo === todo && r.status !== 'passed') &&
@@ -213,7 +234,7 @@ async function oneTodoAtATime(context, lab) {
     await page.evaluate(() => { document.getElementById('status').textContent = ''; });
     await page.setInputFiles('#open', shaders.map((n) => path.join(dir, n)));
     await page.waitForFunction(() => /^Opened/.test(document.getElementById('status').textContent));
-    await page.waitForTimeout(800);  // the editor's 300 ms pause, then the rebuild
+    await page.waitForTimeout(800);  // opened files rebuild at once; then a frame drawn from them
     for (const name of names) {
       const result = await page.evaluate((n) => window.gsvSelfCheck.run(n), name);
       const r = (result.results || [])[0];
@@ -248,7 +269,7 @@ async function knownMistake(context, lab, name) {
   const { page } = await openPage(context, args.base + '/solution-pages/' + lab + '/index.html');
   await page.setInputFiles('#open', shaders.map((n) => path.join(dir, n)));
   await page.waitForFunction(() => /^Opened/.test(document.getElementById('status').textContent));
-  await page.waitForTimeout(800);  // the editor's 300 ms pause, then the rebuild
+  await page.waitForTimeout(800);  // opened files rebuild at once; then a frame drawn from them
   const result = await selfCheck(page);
   const named = result.results.filter((r) => r.mistake === mistake.says);
   check(named.length > 0 && named.every((r) => r.mistake_todo === mistake.todo && r.mistake_picture),
@@ -282,6 +303,13 @@ async function editor(context, lab) {
   lines.splice(at + 1, 0, '    this is not GLSL;');
   const broken = lines.join('\n');
   await page.evaluate(([name, text]) => { window.gsvEditor.show(name); window.gsvEditor.files().find((f) => f.name === name).doc.setValue(text); }, [file, broken]);
+  // Not rebuilt while the student may still be typing; Ctrl+Enter rebuilds at once.
+  const whileTyping = await page.evaluate(() => document.getElementById('shader-error').textContent);
+  await page.click('#code .CodeMirror');
+  await page.keyboard.press('Control+Enter');
+  const onShortcut = await page.evaluate(() => document.getElementById('shader-error').textContent);
+  check(whileTyping === '' && onShortcut !== '', lab + ' editor: an edit is not rebuilt mid-typing, and Ctrl+Enter rebuilds it at once' +
+        (whileTyping !== '' ? ' (it was rebuilt at once)' : onShortcut === '' ? ' (Ctrl+Enter did not rebuild)' : ''));
   await page.waitForFunction(() => document.getElementById('shader-error').textContent !== '', null, { timeout: 10000 });
   const shown = await page.evaluate(() => document.getElementById('shader-error').textContent);
   const expectedLine = at + 2;
@@ -291,6 +319,19 @@ async function editor(context, lab) {
   await page.waitForTimeout(200);
   check((await canvasPixels(page)).url === before, lab + ' the broken edit keeps the last picture');
   await page.screenshot({ path: path.join(out, lab + '-broken-edit.png'), fullPage: true });
+  // Fixed by hand after lines were typed above it: the error's mark goes with the error, on no line.
+  const stale = await page.evaluate((name) => {
+    const f = window.gsvEditor.files().find((g) => g.name === name);
+    f.doc.replaceRange('// a note\n// another\n', { line: 0, ch: 0 });
+    const bad = f.doc.getValue().split('\n').findIndex((l) => /this is not GLSL/.test(l));
+    f.doc.replaceRange('    // was not GLSL', { line: bad, ch: 0 }, { line: bad, ch: f.doc.getLine(bad).length });
+    window.gsvEditor.rebuildNow();
+    const marked = [];
+    for (let i = 0; i < f.doc.lineCount(); ++i) if (/error-line/.test(f.doc.lineInfo(i).bgClass || '')) marked.push(i + 1);
+    return { error: document.getElementById('shader-error').textContent, marked };
+  }, file);
+  check(stale.error === '' && stale.marked.length === 0, lab + ' editor: fixed, no line stays marked' +
+        (stale.marked.length ? ' (lines ' + stale.marked.join(', ') + ' still marked)' : '') + (stale.error ? ' (error: ' + stale.error.slice(0, 80) + ')' : ''));
   // The fix: a comment added, so the edit differs from the reference and is kept.
   const fixed = original.replace(/void main\(\) \{/, 'void main() { // edited in the page');
   await page.evaluate(([name, text]) => window.gsvEditor.files().find((f) => f.name === name).doc.setValue(text), [file, fixed]);

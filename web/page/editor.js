@@ -1,11 +1,18 @@
 // The student's shaders in the page: a tab per GLSL file of the lab's folder (Debian's CodeMirror 5, its C-like mode's
 // GLSL), each edit written over the file in the page's memory file system and every program rebuilt from it, as the
 // window's hot reload does on a save: a broken edit shows its error at the student's file and line, and the last good
-// program keeps drawing. Edits are kept in the browser's storage; download gives the lab's folder as gsv-grade takes it.
+// program keeps drawing. It rebuilds on Ctrl+Enter (Cmd+Enter) at once, and by itself after a pause long enough not to
+// catch a line half typed. A tab names the TODOs its file holds; a file the page never compiles (a compute shader:
+// WebGL 2 has none) says so and is not the one the editor opens on. Edits are kept in the browser's storage; download
+// gives the lab's folder as gsv-grade takes it.
 'use strict';
 window.gsvEditor = (function () {
   const $ = (id) => document.getElementById(id);
   const shaderFile = /\.(vert|frag|glsl|comp)$/;
+  // A pause this long after the last keystroke rebuilds: at 300 ms a half-typed line flashed an error.
+  const kPauseMs = 1500;
+  // Compute shaders: the page is WebGL 2 (OpenGL ES 3.0), which has none; the lab takes its ES path there.
+  const notCompiledHere = (name) => /\.comp$/.test(name);
   const files = [];  // {name, path, starter, doc, tab}
   let labDir = '', folderName = '', current = null, onResult = null, editor = null, timer = 0, storageOk = true;
   const pending = new Set();
@@ -64,6 +71,7 @@ window.gsvEditor = (function () {
         Module.FS.writeFile(path, file.text);
         restored++;
       }
+      file.applied = file.text;  // what the page's files hold
       files.push(file);
     }
     return restored;
@@ -80,28 +88,48 @@ window.gsvEditor = (function () {
   function open(description, resultCallback) {
     onResult = resultCallback;
     const tabs = $('tabs');
-    editor = CodeMirror($('code'), { lineNumbers: true, indentUnit: 4, mode: 'x-shader/x-fragment' });
+    editor = CodeMirror($('code'), { lineNumbers: true, indentUnit: 4, mode: 'x-shader/x-fragment',
+                                     extraKeys: { 'Ctrl-Enter': rebuildNow, 'Cmd-Enter': rebuildNow } });
     for (const f of files) {
       f.doc = CodeMirror.Doc(f.text, /\.vert$/.test(f.name) ? 'x-shader/x-vertex' : 'x-shader/x-fragment');
       f.tab = document.createElement('button');
       f.tab.type = 'button';
       f.tab.role = 'tab';
       f.tab.textContent = f.name;
+      // The TODO ids the starter's file holds, on its tab (lab 06 has 23 files, six with TODOs).
+      f.todos = Array.from(new Set((f.starter.match(/TODO\((L\d\d-T\d+)\)/g) || []).map((t) => t.slice(5, -1))));
+      if (f.todos.length) {
+        f.tab.classList.add('todo');
+        f.tab.append(' ', Object.assign(document.createElement('span'), { className: 'todo-ids', textContent: f.todos.join(' ') }));
+      }
+      if (notCompiledHere(f.name)) {
+        f.tab.classList.add('not-compiled');
+        f.tab.title = 'Not compiled in this page: WebGL 2 has no compute shaders, so the page takes the lab\'s other path. ' +
+                      'This file runs in the desktop build.';
+      }
       f.tab.addEventListener('click', () => show(f));
       tabs.append(f.tab);
       f.doc.on('change', () => {
         f.text = f.doc.getValue();
         f.tab.classList.toggle('edited', f.text !== f.starter);
+        store(f);  // kept at once: a reload within the pause keeps the edit
+        if (f.text === f.applied) return;  // already in the page (an opened file: CodeMirror tells a detached doc's change late)
         pending.add(f);
         clearTimeout(timer);
-        timer = setTimeout(applyPending, 300);
+        timer = setTimeout(applyPending, kPauseMs);
       });
       f.tab.classList.toggle('edited', f.text !== f.starter);
     }
-    if (files.length) show(files[0]);
+    // The first file with a TODO that the page compiles; else the first the page compiles.
+    const first = files.find((f) => f.todos.length && !notCompiledHere(f.name)) || files.find((f) => !notCompiledHere(f.name)) || files[0];
+    if (first) show(first);
     $('download').addEventListener('click', download);
     $('open').addEventListener('change', (e) => openFiles(Array.from(e.target.files)).then(() => { e.target.value = ''; }));
-    $('revert').addEventListener('click', () => current && current.doc.setValue(current.starter));
+    $('revert').addEventListener('click', () => {
+      if (!current) return;
+      current.doc.setValue(current.starter);
+      rebuildNow();
+    });
     // Edits made before a reload that do not build: the lab started from the starter, so say why now.
     if (files.some((f) => f.text !== f.starter)) reload();
   }
@@ -110,6 +138,10 @@ window.gsvEditor = (function () {
     current = f;
     editor.swapDoc(f.doc);
     for (const g of files) g.tab.setAttribute('aria-selected', String(g === f));
+    $('not-compiled-note').textContent = notCompiledHere(f.name)
+      ? f.name + ' is not compiled in this page (WebGL 2 has no compute shaders): edit it here, download, and run it ' +
+        'in the desktop build; the page draws with the lab\'s other files.'
+      : '';
     markError();
   }
 
@@ -117,6 +149,7 @@ window.gsvEditor = (function () {
   function applyPending() {
     for (const f of pending) {
       Module.FS.writeFile(f.path, f.text);
+      f.applied = f.text;
       store(f);
     }
     pending.clear();
@@ -134,18 +167,18 @@ window.gsvEditor = (function () {
     page().changed('');
   }
 
-  // The line the error names, in the tab of the file it names.
+  // The line the error names, in the tab of the file it names. Kept by its line handle, not its number: lines typed
+  // above it move it, and a mark removed by number stayed on the moved line after the fix.
   function markError() {
     for (const f of files) {
-      if (f.marked !== undefined) f.doc.removeLineClass(f.marked, 'background', 'error-line');
-      f.marked = undefined;
+      if (f.marked) f.doc.removeLineClass(f.marked, 'background', 'error-line');
+      f.marked = null;
     }
     const m = /([\w./-]+\.(?:vert|frag|glsl|comp)):(\d+)/.exec(lastError);
     if (!m) return;
     const f = files.find((g) => m[1].endsWith('/' + g.name) || m[1] === g.name);
     if (!f) return;
-    f.marked = Math.max(0, Number(m[2]) - 1);
-    f.doc.addLineClass(f.marked, 'background', 'error-line');
+    f.marked = f.doc.addLineClass(Math.min(Math.max(0, Number(m[2]) - 1), f.doc.lineCount() - 1), 'background', 'error-line');
   }
 
   function saveAll() {
@@ -178,6 +211,10 @@ window.gsvEditor = (function () {
       const f = files.find((g) => g.name === name);
       if (!f) return false;
       f.doc.setValue(text);
+      // Taken now, not on the doc's change event, which CodeMirror fires late for a tab not shown.
+      f.text = text;
+      f.tab.classList.toggle('edited', f.text !== f.starter);
+      pending.add(f);
       loaded.push(name);
       return true;
     };
@@ -200,6 +237,8 @@ window.gsvEditor = (function () {
         refused.push(file.name);
       }
     }
+    // Files opened are not typing: rebuilt at once, as one.
+    if (loaded.length) rebuildNow();
     const names = files.map((f) => f.name).join(', ');
     if (refused.length)
       page().say('Not opened: ' + refused.join(', ') + ' — this page takes ' + folderName + '\'s shader files (' + names +
@@ -208,6 +247,11 @@ window.gsvEditor = (function () {
     return { loaded, refused };
   }
 
-  return { restoreIntoFiles, writeStarterFiles, writeEditedFiles, open, saveAll, download, openFiles,
+  function rebuildNow() {
+    clearTimeout(timer);
+    applyPending();
+  }
+
+  return { restoreIntoFiles, writeStarterFiles, writeEditedFiles, open, saveAll, download, openFiles, rebuildNow,
            files: () => files, show: (name) => show(files.find((f) => f.name === name)) };
 })();
