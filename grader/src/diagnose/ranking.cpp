@@ -73,8 +73,8 @@ std::vector<MistakePair> consistent_pairs(const std::vector<std::string>& left, 
                                           const std::vector<std::set<std::string>>& fails, const std::vector<std::size_t>& named,
                                           const TogetherCheck& check) {
     const std::set<std::string> is_left(left.begin(), left.end()), failed(failing.begin(), failing.end());
-    // A second: its picture explains a case left, or (where pictures drawn together can be told) every case left it
-    // fails is one failed.
+    // A second: its picture explains a case left, or (where pictures drawn together can be told) it fails a case left
+    // and fails no case the student passed.
     const auto may_second = [&](std::size_t m) {
         if (std::any_of(left.begin(), left.end(), [&](const std::string& c) { return explains[m].count(c) > 0; })) return true;
         return check && std::any_of(fails[m].begin(), fails[m].end(), [&](const std::string& c) { return is_left.count(c) > 0; }) &&
