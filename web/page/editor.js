@@ -110,9 +110,7 @@ window.gsvEditor = (function () {
       f.tab.addEventListener('click', () => show(f));
       tabs.append(f.tab);
       f.doc.on('change', () => {
-        f.text = f.doc.getValue();
-        f.tab.classList.toggle('edited', f.text !== f.starter);
-        store(f);  // kept at once: a reload within the pause keeps the edit
+        edited(f, f.doc.getValue());
         if (f.text === f.applied) return;  // already in the page (an opened file: CodeMirror tells a detached doc's change late)
         pending.add(f);
         clearTimeout(timer);
@@ -134,6 +132,14 @@ window.gsvEditor = (function () {
     if (files.some((f) => f.text !== f.starter)) reload();
   }
 
+  // A file's new text: its tab marked where it differs from the starter, and kept at once (a reload within the
+  // rebuild's pause keeps the edit).
+  function edited(f, text) {
+    f.text = text;
+    f.tab.classList.toggle('edited', f.text !== f.starter);
+    store(f);
+  }
+
   function show(f) {
     current = f;
     editor.swapDoc(f.doc);
@@ -149,8 +155,7 @@ window.gsvEditor = (function () {
   function applyPending() {
     for (const f of pending) {
       Module.FS.writeFile(f.path, f.text);
-      f.applied = f.text;
-      store(f);
+      f.applied = f.text;  // stored when it was edited
     }
     pending.clear();
     reload();
@@ -212,8 +217,7 @@ window.gsvEditor = (function () {
       if (!f) return false;
       f.doc.setValue(text);
       // Taken now, not on the doc's change event, which CodeMirror fires late for a tab not shown.
-      f.text = text;
-      f.tab.classList.toggle('edited', f.text !== f.starter);
+      edited(f, text);
       pending.add(f);
       loaded.push(name);
       return true;

@@ -3,6 +3,7 @@
 #include "common/app/known_mistake_pictures.h"
 
 #include <algorithm>
+#include <map>
 #include <optional>
 
 namespace gsv {
@@ -126,13 +127,11 @@ void add_pair(LabDiagnosis& d, const MistakePair& pair, bool first_is_new, const
     std::set<std::string> already;
     for (const MistakeFound& f : d.found) already.insert(f.names.begin(), f.names.end());
     const auto found = [&](std::size_t m, std::vector<std::string> cases, bool with_earlier) {
-        MistakeFound f{mistakes[m].todo, mistakes[m].says, mistakes[m].sheet, {}, std::move(cases), with_earlier};
-        for (std::size_t t = 0; t <= mistakes.size(); ++t)  // m itself first: its picture is the one shown
-            if (const std::size_t i = t == 0 ? m : t - 1; (t == 0 || (i != m && explains[i] == explains[m] && fails[i] == fails[m])) &&
-                                                          !already.count(mistakes[i].name)) {
+        MistakeFound f{mistakes[m].todo, mistakes[m].says, mistakes[m].sheet, {mistakes[m].name}, std::move(cases), with_earlier};
+        already.insert(mistakes[m].name);  // m itself first: its picture is the one shown; then its twins
+        for (std::size_t i = 0; i < mistakes.size(); ++i)
+            if (explains[i] == explains[m] && fails[i] == fails[m] && already.insert(mistakes[i].name).second)
                 f.names.push_back(mistakes[i].name);
-                already.insert(mistakes[i].name);
-            }
         return f;
     };
     if (first_is_new) d.found.push_back(found(pair.first, pair.by_first, false));
@@ -147,6 +146,35 @@ void add_pair(LabDiagnosis& d, const MistakePair& pair, bool first_is_new, const
 
 namespace {
 
+// A second for the mistakes `named`: outside their TODOs, no TODO not started, and its picture fails something and
+// nothing the student passed (`failed`: the cases the student failed).
+bool may_be_second(std::size_t m, const std::vector<KnownMistake>& mistakes, const std::vector<std::set<std::string>>& fails,
+                   const std::vector<std::size_t>& named, const std::set<std::string>& failed) {
+    if (fails[m].empty() || mistakes[m].not_started) return false;
+    if (std::any_of(named.begin(), named.end(), [&](std::size_t n) { return mistakes[n].todo == mistakes[m].todo; })) return false;
+    return std::all_of(fails[m].begin(), fails[m].end(), [&](const std::string& c) { return failed.count(c) > 0; });
+}
+
+// The one candidate that scores highest; none where two in different TODOs score alike (which to name is a guess).
+class OneBest {
+public:
+    void offer(std::size_t m, long score, const std::vector<KnownMistake>& mistakes) {
+        if (!best_ || score > score_) {
+            best_ = m;
+            score_ = score;
+            ambiguous_ = false;
+        } else if (score == score_ && mistakes[m].todo != mistakes[*best_].todo) {
+            ambiguous_ = true;
+        }
+    }
+    std::optional<std::size_t> get() const { return ambiguous_ ? std::nullopt : best_; }
+
+private:
+    std::optional<std::size_t> best_;
+    long score_ = 0;
+    bool ambiguous_ = false;
+};
+
 // A second mistake whose own picture shows nowhere: where every failure left is a case a mistake named also fails, the
 // second's picture there is drawn over by the first's. It is named only where it alone fits: the mistakes (not in a
 // TODO named) whose pictures fail every case left and no case the student did not fail, the one failing fewest;
@@ -155,25 +183,15 @@ std::optional<std::size_t> hidden_second(const std::vector<std::string>& left, c
                                          const std::vector<KnownMistake>& mistakes, const std::vector<std::set<std::string>>& fails,
                                          const std::vector<std::size_t>& named) {
     const std::set<std::string> failed(failing.begin(), failing.end());
-    const auto in_named_todo = [&](std::size_t m) {
-        return std::any_of(named.begin(), named.end(), [&](std::size_t n) { return mistakes[n].todo == mistakes[m].todo; });
-    };
     for (const std::string& c : left)
         if (std::none_of(named.begin(), named.end(), [&](std::size_t n) { return fails[n].count(c) > 0; })) return std::nullopt;
-    std::optional<std::size_t> best;
-    bool ambiguous = false;
+    OneBest best;
     for (std::size_t m = 0; m < mistakes.size(); ++m) {
-        if (in_named_todo(m) || fails[m].empty() || mistakes[m].not_started) continue;
-        if (!std::all_of(fails[m].begin(), fails[m].end(), [&](const std::string& c) { return failed.count(c) > 0; })) continue;
+        if (!may_be_second(m, mistakes, fails, named, failed)) continue;
         if (!std::all_of(left.begin(), left.end(), [&](const std::string& c) { return fails[m].count(c) > 0; })) continue;
-        if (!best || fails[m].size() < fails[*best].size()) {
-            best = m;
-            ambiguous = false;
-        } else if (fails[m].size() == fails[*best].size() && mistakes[m].todo != mistakes[*best].todo) {
-            ambiguous = true;
-        }
+        best.offer(m, -static_cast<long>(fails[m].size()), mistakes);  // the one failing fewest
     }
-    return ambiguous ? std::nullopt : best;
+    return best.get();
 }
 
 // A second mistake beneath the one named, where every failure is explained: on the cases both fail the student's
@@ -184,36 +202,29 @@ void second_beneath(LabDiagnosis& d, const std::vector<std::string>& failing, co
                     const std::vector<std::size_t>& named, const TogetherCheck& check) {
     const std::set<std::string> failed(failing.begin(), failing.end());
     const std::size_t first = named.front();
-    std::optional<std::size_t> best;
-    std::vector<std::string> best_shows;
-    bool ambiguous = false;
+    std::map<std::size_t, std::vector<std::string>> shows;  // a candidate -> the cases it shows on
+    OneBest best;
     for (std::size_t m = 0; m < mistakes.size(); ++m) {
-        if (fails[m].empty() || mistakes[m].not_started ||
-            std::any_of(named.begin(), named.end(), [&](std::size_t n) { return mistakes[n].todo == mistakes[m].todo; }))
-            continue;
-        std::vector<std::string> shows;
+        if (!may_be_second(m, mistakes, fails, named, failed)) continue;
+        std::vector<std::string> on;
         bool fits = true;
         for (const std::string& c : fails[m]) {
-            if (!failed.count(c)) fits = false;
-            else if (!fails[first].count(c)) fits = fits && explains[m].count(c) > 0;
+            if (!fails[first].count(c)) fits = explains[m].count(c) > 0;
             else if (const TogetherEvidence e = check(first, m, c); !e.matches) fits = false;
-            else if (e.shows_second) shows.push_back(c);
+            else if (e.shows_second) on.push_back(c);
             if (!fits) break;
         }
-        if (!fits || shows.empty()) continue;
-        if (!best || shows.size() > best_shows.size()) {
-            best = m;
-            best_shows = shows;
-            ambiguous = false;
-        } else if (shows.size() == best_shows.size() && mistakes[m].todo != mistakes[*best].todo) {
-            ambiguous = true;
-        }
+        if (!fits || on.empty()) continue;
+        best.offer(m, static_cast<long>(on.size()), mistakes);
+        shows[m] = std::move(on);
     }
-    if (!best || ambiguous) return;
+    const std::optional<std::size_t> second = best.get();
+    if (!second) return;
+    const std::vector<std::string>& best_shows = shows.at(*second);
     const std::set<std::string> moved(best_shows.begin(), best_shows.end());
     for (MistakeFound& f : d.found)
         f.cases.erase(std::remove_if(f.cases.begin(), f.cases.end(), [&](const std::string& c) { return moved.count(c) > 0; }), f.cases.end());
-    add_pair(d, MistakePair{first, *best, {}, {}, best_shows, best_shows.size()}, false, mistakes, explains, fails);
+    add_pair(d, MistakePair{first, *second, {}, {}, best_shows, best_shows.size()}, false, mistakes, explains, fails);
 }
 
 }  // namespace

@@ -37,10 +37,12 @@ ShippedDiagnosis diagnose_shipped(const KnownMistakePictures& shipped, const std
         const PictureSignature* first = shipped_signature(shipped, a, c);
         const PictureSignature* second = shipped_signature(shipped, b, c);
         if (it == yours_and_golden.end() || !first || !second) return e;
-        const auto& [yours, golden] = it->second;
-        if (yours.colour.width != golden.colour.width || first->colour.width != golden.colour.width ||
-            yours.colour.height != golden.colour.height || first->colour.height != golden.colour.height)
-            return e;
+        const PictureSignature& yours = it->second.first;
+        const PictureSignature& golden = it->second.second;
+        const auto same_size = [&](const PictureSignature* p) {
+            return p->colour.width == golden.colour.width && p->colour.height == golden.colour.height;
+        };
+        if (!same_size(first) || !same_size(second)) return e;  // shipped at another size: nothing to compose
         for (const Composition how : {Composition::Added, Composition::Multiplied}) {
             const PictureSignature both = composed_signature(*first, *second, golden, how);
             if (!signature_matches(yours, both, golden)) continue;
