@@ -89,7 +89,9 @@ uniform float uSlice;  // s set directly: the slices looked up without the playh
 #endif
 
 vec2 flowAt(vec2 st) {
-#ifdef PLAYHEAD_SLICE
+#if defined(PLAYHEAD_SLICE) && defined(TIME_WRAP_REPEAT)
+    float s = mod(uSlice, float(SLICES));  // past the last slice a periodic axis blends into slice 0
+#elif defined(PLAYHEAD_SLICE)
     float s = clamp(uSlice, 0.0, float(SLICES - 1));
 #else
     float s = sliceCoordinate(uTime);

@@ -48,7 +48,7 @@ public:
         p.add_choice("playhead", "time", {"time", "slice"},
                      "the slice axis from the playhead's time, or a position on it set directly (slice)")
             .at_compile_time();
-        p.add_float("slice", 0, 0, 4095, "s, the position on the slice axis in slice units (playhead=slice), at most T - 1")
+        p.add_float("slice", 0, 0, 4095, "s, the position on the slice axis in slice units (playhead=slice): in [0, T) on a periodic axis, at most T - 1 on a clamped one")
             .with_step(0.25)
             .applies_when("playhead", {"slice"});
         p.add_int("length", 20, 0, 200, "LIC steps each way");
