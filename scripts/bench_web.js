@@ -35,7 +35,7 @@ function nativeMs(lab, caseName, size) {
     const cases = JSON.parse(fs.readFileSync(path.join(kit, 'grader/cases', lab + '.json'), 'utf8'));
     const caseName = cases.cases[0].name, size = cases.size;
     const page = await browser.newPage();
-    await page.goto(base + '/solution-pages/' + lab + '/index.html?case=' + caseName);
+    await page.goto(base + '/lecturer/' + lab + '/index.html?case=' + caseName);
     await page.waitForFunction(() => window.gsvPage && (window.gsvPage.frames > 0 || window.gsvPage.failed), null, { timeout: 120000 });
     const first = await page.evaluate(() => window.gsvPage.firstFrameMs);
     const ratios = [], pageTimes = [], nativeTimes = [];

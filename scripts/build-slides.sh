@@ -4,12 +4,22 @@
 # Chromium is installed, prints each to BUILD/slides/<deck>.pdf.
 # First every figure the decks name under figures/ is made by the reference solutions and their sweeps, in
 # BUILD/slides/figures: nothing in a deck is drawn by hand or committed, except the grader's golden images,
-# which the solutions render too. Usage: scripts/build-slides.sh [BUILD]   (default: build)
+# which the solutions render too. Beside the decks, BUILD/slides/index.html lists them (the web site's "Slides" link).
+# Usage: scripts/build-slides.sh [--quick] [BUILD [OUT]]   (default: build, BUILD/slides)
+#   --quick   every sweep at 64x64 with one timed frame (scripts/sweeps.sh): the slides test's decks, built in
+#             minutes, whose sweep figures are the real ones' shape but not numbers worth showing
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
+if [ "${1:-}" = --quick ]; then
+  export GSV_SWEEPS_QUICK=1
+  shift
+fi
+case "${1:-}" in -*) echo "build-slides: unknown option '$1' (expected --quick)" >&2; exit 2 ;; esac
 build="$(cd "${1:-$root/build}" && pwd)"
 bin="$build/bin"
-out="$build/slides"
+out="${2:-$build/slides}"
+mkdir -p "$out"
+out="$(cd "$out" && pwd)"
 figures="$out/figures"
 
 for tool in pandoc gnuplot; do
@@ -55,4 +65,7 @@ for deck in "$root"/slides/*.md; do
     status=1
   fi
 done
+# The decks' index, linking each deck and the PDFs that were printed.
+"$root/scripts/deck-index.sh" "$out"
+echo "build-slides: wrote $out/index.html"
 exit $status

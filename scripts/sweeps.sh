@@ -4,12 +4,16 @@
 #   run_sweeps BIN_DIR OUT_DIR all       those and the decks' other sweeps (lab05-rotation, lab06-shaders, ...)
 # A failing sweep prints its log and exits the caller.
 
+# GSV_SWEEPS_QUICK=1 (the slides test's): every sweep at 64x64, one timed frame and no warm-up, after the sweep's own
+# options (the last --size wins): the same figures and tables from the same code, their numbers not worth reading.
 sweep_one() {  # sweep_one BIN_DIR OUT_DIR NAME LAB [options...]
   local bin="$1" dir="$2/$3" lab="$4"
   shift 4
+  local quick=()
+  [ "${GSV_SWEEPS_QUICK:-0}" = 1 ] && quick=(--size 64x64 --frames 1 --warmup 0)
   echo "sweep: $(basename "$dir")" >&2
   mkdir -p "$dir"
-  "$bin/$lab" sweep --size 192x192 --frames 3 --warmup 1 --out-dir "$dir" "$@" >"$dir.log" 2>&1 ||
+  "$bin/$lab" sweep --size 192x192 --frames 3 --warmup 1 --out-dir "$dir" "$@" ${quick[@]+"${quick[@]}"} >"$dir.log" 2>&1 ||
     { cat "$dir.log" >&2; exit 1; }
 }
 

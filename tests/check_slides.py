@@ -164,6 +164,19 @@ def check_sources(source_dir, built_dir):
     return failures
 
 
+def check_index(built_dir, decks):
+    """The decks' index names every deck, and each of its links is a file beside it."""
+    index = os.path.join(built_dir, "index.html")
+    if not os.path.exists(index):
+        return [f"no {index} was built"]
+    with open(index, encoding="utf-8") as f:
+        links = re.findall(r'href="([^"]+)"', f.read())
+    failures = [f"index.html: '{link}' resolves to no file in {built_dir}" for link in links
+                if not link.startswith("data:") and not os.path.exists(os.path.join(built_dir, link))]
+    failures += [f"index.html: no link to {deck}.html" for deck in decks if deck + ".html" not in links]
+    return failures
+
+
 def check_deck(browser, path):
     failures = []
     deck = os.path.basename(path)
@@ -218,6 +231,7 @@ def main():
     source_dir, built_dir = sys.argv[1], sys.argv[2]
     failures = check_sources(source_dir, built_dir)
     decks = sorted(n[:-3] for n in os.listdir(source_dir) if n.endswith(".md"))
+    failures += check_index(built_dir, decks)
     chromium = shutil.which("chromium") or shutil.which("chromium-browser") or shutil.which("google-chrome")
     if not chromium:
         print("check_slides: no chromium to open the decks with", file=sys.stderr)
