@@ -67,8 +67,10 @@ endif()
 # Each lab's page: <id>.js, <id>.wasm and <id>.data, the files the lab reads preloaded at the paths the native kit
 # has them (the lab's folder, shaders/, data/, its case file and golden images), under /kit, the kit's root there.
 # The site gets the student's copy (labs/, the starters: no answer is shipped); the reference solutions are built
-# beside it in build-web/solution-pages/ for the tests only.
+# beside it in build-web/lecturer/, the lecturer's site (every page says it is never to be published to students),
+# which the tests use too.
 set(GSV_WEB_SITE ${CMAKE_BINARY_DIR}/site)
+set(GSV_WEB_LECTURER ${CMAKE_BINARY_DIR}/lecturer)
 # FULL_ES3: glMapBufferRange for writing (lab 05 writes its particles the seed's way), which WebGL 2 lacks.
 set(GSV_WEB_LINK_FLAGS -fexceptions -lembind -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2 -sFULL_ES3=1 -sALLOW_MEMORY_GROWTH=1
     -sFORCE_FILESYSTEM=1 -sENVIRONMENT=web -sINVOKE_RUN=0 --profiling-funcs "-sEXPORTED_RUNTIME_METHODS=[FS,callMain]")
@@ -105,7 +107,7 @@ function(gsv_add_web_lab id dir)
     else()
       set(src solutions/${dir})
       set(target ${id}_solution_web)
-      set(out ${CMAKE_BINARY_DIR}/solution-pages/${id})
+      set(out ${GSV_WEB_LECTURER}/${id})
     endif()
     file(GLOB lab_sources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${src}/*.cpp)
     if(NOT lab_sources)
@@ -141,13 +143,24 @@ endforeach()
 # pages' JavaScript and CSS (web/page/), and the editor and zip code from Debian and npm, copied as they come.
 find_path(GSV_CODEMIRROR_DIR lib/codemirror.js PATHS /usr/share/javascript/codemirror NO_DEFAULT_PATH NO_CMAKE_FIND_ROOT_PATH)
 find_path(GSV_JSZIP_DIR jszip.min.js PATHS ${PROJECT_SOURCE_DIR}/web/node_modules/jszip/dist NO_DEFAULT_PATH NO_CMAKE_FIND_ROOT_PATH)
+find_path(GSV_MARKED_DIR marked.min.js PATHS ${PROJECT_SOURCE_DIR}/web/node_modules/marked NO_DEFAULT_PATH NO_CMAKE_FIND_ROOT_PATH)
 if(NOT GSV_CODEMIRROR_DIR)
   message(FATAL_ERROR "the web pages' editor is Debian's CodeMirror: apt-get install libjs-codemirror (scripts/kit web does)")
 endif()
 if(NOT GSV_JSZIP_DIR)
   message(FATAL_ERROR "the web pages' download and open use JSZip from npm: npm ci --prefix web (scripts/kit web does)")
 endif()
+if(NOT GSV_MARKED_DIR)
+  message(FATAL_ERROR "the web pages' lab sheet is rendered by marked from npm: npm ci --prefix web (scripts/kit web does)")
+endif()
 
+# The lecturer's pages say, on each, what they are: the answers to every TODO. The student edition has no solutions/,
+# so no lecturer's site.
+set(GSV_WEB_HAS_LECTURER OFF)
+if(EXISTS ${PROJECT_SOURCE_DIR}/solutions)
+  set(GSV_WEB_HAS_LECTURER ON)
+endif()
+set(GSV_LECTURER_NOTE "<p class=\"lecturer-note\" role=\"note\">The lecturer's site: the reference solutions, to show in lectures. Never publish it where students can reach it: it holds the answer to every TODO (the students' site is build-web/site/).</p>")
 set(GSV_WEB_INDEX_ENTRIES "")
 foreach(lab IN LISTS GSV_LAB_LIST)
   string(REPLACE ":" ";" lab_pair ${lab})
@@ -159,22 +172,35 @@ foreach(lab IN LISTS GSV_LAB_LIST)
   string(SUBSTRING ${id} 3 2 number)
   file(GLOB deck RELATIVE ${PROJECT_SOURCE_DIR}/slides ${PROJECT_SOURCE_DIR}/slides/${number}-*.md)
   string(REGEX REPLACE "\\.md$" "" GSV_LAB_DECK "${deck}")
+  set(GSV_SITE_NOTE "")
   configure_file(${PROJECT_SOURCE_DIR}/web/lab.html.in ${GSV_WEB_SITE}/${id}/index.html @ONLY)
-  configure_file(${PROJECT_SOURCE_DIR}/web/lab.html.in ${CMAKE_BINARY_DIR}/solution-pages/${id}/index.html @ONLY)
+  # The lab sheet beside the editor (web/page/sheet.js): the student's in the site, the solution's in the lecturer's.
+  configure_file(${PROJECT_SOURCE_DIR}/labs/${dir}/README.md ${GSV_WEB_SITE}/${id}/README.md COPYONLY)
   file(READ ${PROJECT_SOURCE_DIR}/grader/cases/${id}.json cases_json)
   string(JSON first_case GET "${cases_json}" cases 0 name)
   configure_file(${PROJECT_SOURCE_DIR}/grader/golden/${id}/${first_case}.png ${GSV_WEB_SITE}/${id}/picture.png COPYONLY)
+  if(GSV_WEB_HAS_LECTURER)
+    set(GSV_SITE_NOTE "${GSV_LECTURER_NOTE}")
+    configure_file(${PROJECT_SOURCE_DIR}/web/lab.html.in ${GSV_WEB_LECTURER}/${id}/index.html @ONLY)
+    configure_file(${PROJECT_SOURCE_DIR}/solutions/${dir}/README.md ${GSV_WEB_LECTURER}/${id}/README.md COPYONLY)
+    configure_file(${PROJECT_SOURCE_DIR}/grader/golden/${id}/${first_case}.png ${GSV_WEB_LECTURER}/${id}/picture.png COPYONLY)
+  endif()
   string(APPEND GSV_WEB_INDEX_ENTRIES
          "<a href=\"${id}/index.html\"><img src=\"${id}/picture.png\" alt=\"${id}'s case ${first_case}\"><strong>${GSV_LAB_TITLE}</strong></a>\n")
 endforeach()
+set(GSV_SITE_NOTE "")
 configure_file(${PROJECT_SOURCE_DIR}/web/index.html.in ${GSV_WEB_SITE}/index.html @ONLY)
+if(GSV_WEB_HAS_LECTURER)
+  set(GSV_SITE_NOTE "${GSV_LECTURER_NOTE}")
+  configure_file(${PROJECT_SOURCE_DIR}/web/index.html.in ${GSV_WEB_LECTURER}/index.html @ONLY)
+endif()
 
 add_custom_target(web_site ALL
   COMMAND ${CMAKE_COMMAND} -E copy_directory ${PROJECT_SOURCE_DIR}/web/page ${GSV_WEB_SITE}/page
-  COMMAND ${CMAKE_COMMAND} -E copy_directory ${PROJECT_SOURCE_DIR}/web/page ${CMAKE_BINARY_DIR}/solution-pages/page
+  COMMAND ${CMAKE_COMMAND} -E copy_directory ${PROJECT_SOURCE_DIR}/web/page ${GSV_WEB_LECTURER}/page
   COMMAND ${CMAKE_COMMAND} -E make_directory ${GSV_WEB_SITE}/vendor/codemirror
   COMMAND ${CMAKE_COMMAND} -E copy ${GSV_CODEMIRROR_DIR}/lib/codemirror.js ${GSV_CODEMIRROR_DIR}/lib/codemirror.css
           ${GSV_CODEMIRROR_DIR}/mode/clike/clike.js ${GSV_WEB_SITE}/vendor/codemirror/
-  COMMAND ${CMAKE_COMMAND} -E copy ${GSV_JSZIP_DIR}/jszip.min.js ${GSV_WEB_SITE}/vendor/
-  COMMAND ${CMAKE_COMMAND} -E copy_directory ${GSV_WEB_SITE}/vendor ${CMAKE_BINARY_DIR}/solution-pages/vendor
+  COMMAND ${CMAKE_COMMAND} -E copy ${GSV_JSZIP_DIR}/jszip.min.js ${GSV_MARKED_DIR}/marked.min.js ${GSV_WEB_SITE}/vendor/
+  COMMAND ${CMAKE_COMMAND} -E copy_directory ${GSV_WEB_SITE}/vendor ${GSV_WEB_LECTURER}/vendor
   COMMENT "the web pages' scripts, styles and editor into ${GSV_WEB_SITE}")

@@ -16,9 +16,12 @@
 #ifdef __EMSCRIPTEN__
 #include <emscripten.h>
 #include <emscripten/bind.h>
+#include <emscripten/html5.h>
 #endif
 
 #include <cstdio>
+#include <new>
+#include <string>
 
 namespace gsv {
 
@@ -62,6 +65,21 @@ std::string guarded(F&& what) {
     }
 }
 
+// The page's memory (WebAssembly's, at most 2 GiB) cannot hold what the values ask for: a refusal like a GL limit's,
+// naming the values that differ from the last ones that drew; the page goes back to those.
+std::string out_of_memory(WebPage& p) {
+    std::string asked;
+    const Params& now = p.session->params;
+    for (std::size_t i = 0; i < now.specs().size(); ++i)
+        if (now.text_at(i) != p.last_good.text_at(i))
+            asked += (asked.empty() ? "" : " ") + now.specs()[i].qualified_name() + "=" + now.text_at(i);
+    p.session->params = p.last_good;
+    if (auto error = p.session->sync_params()) std::fprintf(stderr, "%s\n", error->c_str());
+    return (asked.empty() ? std::string("these values") : asked) +
+           ": more memory than the page can hold (WebAssembly's); the last values that drew are back (the desktop build "
+           "holds more)";
+}
+
 // A value the lab refuses (a GL limit, a missing file) must not end the page: say why and go back to the last values
 // that drew, as the window does.
 void sync_or_refuse(WebPage& p) {
@@ -71,6 +89,8 @@ void sync_or_refuse(WebPage& p) {
         p.session->params = p.last_good;
         if (auto error = p.session->sync_params()) std::fprintf(stderr, "%s\n", error->c_str());
         throw;
+    } catch (const std::bad_alloc&) {
+        throw Error(out_of_memory(p));
     }
 }
 
@@ -186,12 +206,30 @@ double web_draw() {
         glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
         glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
         return ms;
+    } catch (const std::bad_alloc&) {
+        p.status = out_of_memory(p);
+        return -1;
     } catch (const std::exception& e) {
         p.status = e.what();
         s.params = p.last_good;
         guarded([&] { sync_or_refuse(p); });
         return -1;
     }
+}
+
+// The picture at another size: the page's full-screen view draws at the screen's size, and back at the lab's on
+// leaving it. The lab draws at the frame's size, as in a resized window; the canvas's drawing buffer follows.
+std::string web_resize(int width, int height) {
+    return guarded([&] {
+        Session& s = *the_page().session;
+        constexpr int kLargest = 8192;
+        if (width < 16 || height < 16 || width > kLargest || height > kLargest)
+            throw Error("a picture of " + std::to_string(width) + "x" + std::to_string(height) + " is outside 16x16 to " +
+                        std::to_string(kLargest) + "x" + std::to_string(kLargest));
+        s.options.width = width;
+        s.options.height = height;
+        emscripten_set_canvas_element_size("#canvas", width, height);
+    });
 }
 
 std::string web_status() { return page ? page->status : ""; }
@@ -206,6 +244,7 @@ EMSCRIPTEN_BINDINGS(gsv_web_page) {
     emscripten::function("reloadShaders", &web_reload_shaders);
     emscripten::function("draw", &web_draw);
     emscripten::function("status", &web_status);
+    emscripten::function("resize", &web_resize);
 }
 
 #endif

@@ -119,6 +119,7 @@ async function starterPage(context, lab) {
   check(!pixels.black, lab + ' first frame is drawn (' + (pixels.flat ? 'one colour: the starter\'s' : 'a picture') + ')');
   await page.screenshot({ path: path.join(out, lab + '-page.png'), fullPage: true });
   await editorTabs(page, lab);
+  await desktopOnly(page, lab);
   // The starter's self-check draws every case; once (with --native, against gsv-grade's table) is enough: its
   // not-done colour is the same on every rasterizer.
   if (!args.native) {
@@ -135,6 +136,21 @@ async function starterPage(context, lab) {
   }
   check(problems.length === 0, lab + ' no console error' + (problems.length ? ': ' + problems.join('; ') : ''));
   await page.close();
+}
+
+// Cases past WebGL 2's ES 3.0 (lab 05's compute shaders) are named under the self-check with the points they hold, and
+// marked in the case list; a lab without them says nothing there.
+async function desktopOnly(page, lab) {
+  const cases = JSON.parse(fs.readFileSync(path.join(args.kit, 'grader/cases', lab + '.json'), 'utf8')).cases;
+  const desktop = cases.filter((c) => c.es && c.es !== '3.0');
+  const sum = (list) => list.reduce((s, c) => s + (c.points === undefined ? 1 : c.points), 0);
+  const seen = await page.evaluate(() => ({ note: document.getElementById('self-check-desktop').textContent,
+    marked: Array.from(document.getElementById('case').options).filter((o) => /desktop only/.test(o.textContent)).map((o) => o.value) }));
+  const ok = desktop.length
+    ? seen.note.startsWith(sum(desktop) + ' of ' + sum(cases) + ' points') && desktop.every((c) => seen.note.includes(c.name)) &&
+      seen.marked.join() === desktop.map((c) => c.name).join()
+    : seen.note === '' && seen.marked.length === 0;
+  check(ok, lab + ' desktop-only cases: ' + (desktop.length ? seen.note : 'none, and none said'));
 }
 
 // The editor's tabs: each file with a TODO names its TODO ids on its tab; a compute shader (the page has none) is
@@ -158,7 +174,7 @@ async function editorTabs(page, lab) {
 }
 
 async function solutionPage(context, lab) {
-  const { page, problems, state } = await openPage(context, args.base + '/solution-pages/' + lab + '/index.html');
+  const { page, problems, state } = await openPage(context, args.base + '/lecturer/' + lab + '/index.html');
   check(!state.failed, lab + ' reference page starts' + (state.failed ? ': ' + state.failed : ''));
   check(!(await canvasPixels(page)).flat, lab + ' reference page draws a picture, not one flat colour');
   let result = await selfCheck(page);
@@ -174,11 +190,97 @@ async function solutionPage(context, lab) {
   await page.close();
 }
 
+// The page a student works in, at 1280x800: the sheet's TODO table above the editor (an id opens the file that holds
+// it), the picture in view beside the editor, one TODO's self-check a case at a time with its progress and its points
+// on the TODO's row, and the compare slider (yours left of it, the golden right).
+async function studentsPage(context, lab) {
+  const { page, problems } = await openPage(context, args.base + '/site/' + lab + '/index.html');
+  await page.setViewportSize({ width: 1280, height: 800 });
+  await page.waitForFunction(() => document.querySelectorAll('#todo-table tr[data-todo]').length > 0, null, { timeout: 10000 });
+  const rows = await page.evaluate(() => Array.from(document.querySelectorAll('#todo-table tr[data-todo]')).map((r) => r.dataset.todo));
+  const cases = JSON.parse(fs.readFileSync(path.join(args.kit, 'grader/cases', lab + '.json'), 'utf8')).cases;
+  const caseTodos = [...new Set(cases.map((c) => c.todo))];
+  check(caseTodos.every((t) => rows.includes(t)), lab + ' sheet: the TODO table above the editor has a row for each TODO the cases check (' + rows.join(', ') + ')');
+  const sheetTables = await page.evaluate(() => document.querySelectorAll('#sheet-text table').length);
+  check(sheetTables > 0, lab + ' sheet: the lab sheet is there, rendered (' + sheetTables + ' tables)');
+  const last = rows[rows.length - 1];
+  await page.click('#todo-table tr[data-todo="' + last + '"] a');
+  const opened = await page.evaluate((id) => {
+    const f = window.gsvEditor.files().find((g) => g.tab.getAttribute('aria-selected') === 'true');
+    return f && f.todos.includes(id) ? f.name : null;
+  }, last);
+  check(!!opened, lab + ' sheet: ' + last + ' in the TODO table opens ' + (opened || 'no file that holds it'));
+  // The editor's last line on screen, and the picture too.
+  await page.evaluate(() => document.getElementById('code').scrollIntoView({ block: 'end' }));
+  const box = await page.evaluate(() => {
+    const r = document.getElementById('canvas').getBoundingClientRect();
+    return { top: Math.round(r.top), bottom: Math.round(r.bottom), width: Math.round(r.width), height: window.innerHeight };
+  });
+  await page.screenshot({ path: path.join(out, lab + '-student-1280x800.png') });
+  check(box.width > 0 && box.top >= 0 && box.bottom <= box.height, lab + ' at 1280x800, editing: the picture in view (its top ' +
+        box.top + ', its bottom ' + box.bottom + ' of ' + box.height + ' px)');
+  // One TODO's self-check, a case at a time: the status line says each step.
+  const todo = rows[0];
+  const todoCases = cases.filter((c) => c.todo === todo && (c.visibility || 'public') === 'public').map((c) => c.name);
+  await page.evaluate(() => {
+    window.statusLines = [];
+    new MutationObserver(() => window.statusLines.push(document.getElementById('status').textContent))
+      .observe(document.getElementById('status'), { childList: true, characterData: true, subtree: true });
+  });
+  const result = await page.evaluate((id) => window.gsvSelfCheck.check(id).then((r) => ({
+    names: r.results.map((x) => x.name), score: r.score, max: r.max_score })), todo);
+  const steps = await page.evaluate((id) => window.statusLines.filter((l) => l.startsWith('Self-check of ' + id + ': ') && / of \d+ cases/.test(l)).length, todo);
+  const cell = await page.evaluate((id) => document.querySelector('#todo-table tr[data-todo="' + id + '"] .todo-result').textContent, todo);
+  check(result.names.join() === todoCases.join() && steps === todoCases.length && cell === result.score + ' / ' + result.max,
+        lab + ' self-check of ' + todo + ' alone: its ' + todoCases.length + ' cases (' + result.names.join(', ') + '), ' + steps +
+        ' steps said, ' + cell + ' on its row');
+  // The compare slider over the first graded case.
+  await page.evaluate((name) => window.gsvPage.pickCase(name), cases[0].name);
+  await page.click('#compare-button');
+  await page.evaluate(() => { const s = document.getElementById('compare-at'); s.value = '30'; s.dispatchEvent(new Event('input')); });
+  const cut = await page.evaluate(() => ({ shown: !document.getElementById('compare-slider').hidden,
+    clip: document.getElementById('overlay').style.clipPath, overlay: !document.getElementById('overlay').hidden }));
+  await page.screenshot({ path: path.join(out, lab + '-compare-slider.png') });
+  check(cut.shown && cut.overlay && /inset\(0(px)? 0(px)? 0(px)? 30%\)/.test(cut.clip), lab + ' compare: the golden cut at the slider (' + cut.clip + ')');
+  await page.click('#compare-button');
+  const composite = await page.evaluate(() => document.getElementById('overlay').classList.contains('composite') &&
+    getComputedStyle(document.getElementById('canvas')).display === 'none' && document.getElementById('compare-slider').hidden);
+  check(composite, lab + ' compare: then yours | golden | difference in the picture\'s place');
+  await page.click('#compare-button');
+  check(problems.length === 0, lab + ' student\'s page: no console error' + (problems.length ? ': ' + problems.join('; ') : ''));
+  await page.close();
+}
+
+// Lab 05's particle count: a slider in equal ratios (1 to 16,777,216), and at its top one line naming the value the page
+// cannot hold, the last values that drew back and drawing.
+async function particleLimit(context) {
+  const { page, problems } = await openPage(context, args.base + '/site/lab05/index.html');
+  const max = await page.evaluate(() => {
+    const input = document.getElementById('param-particles');
+    input.value = input.max;
+    input.dispatchEvent(new Event('input'));
+    return input.max;
+  });
+  // The particles are made at the next frame: its line is the refusal.
+  await page.waitForFunction(() => /more memory/.test(document.getElementById('status').textContent), null, { timeout: 30000 })
+    .catch(() => {});
+  const slider = { max, status: await page.evaluate(() => document.getElementById('status').textContent) };
+  const frames = await page.evaluate(() => window.gsvPage.frames);
+  await page.evaluate(() => window.gsvPage.changed(''));
+  await page.waitForFunction((n) => window.gsvPage.frames > n, frames, { timeout: 30000 }).catch(() => {});
+  const after = await page.evaluate(() => ({ frames: window.gsvPage.frames, states: Module.states() }));
+  const particles = JSON.parse(after.states).find((s) => s.name === 'particles').value;
+  check(/particles=16777216: more memory than the page can hold/.test(slider.status) && after.frames > frames && particles !== '16777216',
+        'lab05 at the particle slider\'s top (' + slider.max + ' steps): "' + slider.status + '", then drawing with ' + particles + ' particles');
+  check(problems.length === 0, 'lab05 particle limit: no console error' + (problems.length ? ': ' + problems.join('; ') : ''));
+  await page.close();
+}
+
 // One TODO undone in the reference loses that TODO's cases and no other.
 async function oneTodoUndone(context, lab, todo) {
   const dir = path.join(out, 'undone-' + todo);
   execFileSync(path.join(args.bin, 'gsv-make-starters'), ['--undone', todo, '--to', dir]);
-  const { page } = await openPage(context, args.base + '/solution-pages/' + lab + '/index.html');
+  const { page } = await openPage(context, args.base + '/lecturer/' + lab + '/index.html');
   const shaders = fs.readdirSync(dir).filter((n) => /\.(vert|frag|glsl|comp)$/.test(n));
   await page.setInputFiles('#open', shaders.map((n) => path.join(dir, n)));
   await page.waitForFunction(() => /^Opened/.test(document.getElementById('status').textContent));
@@ -224,7 +326,7 @@ async function oneTodoAtATime(context, lab) {
   let checked = 0;
   for (const [done, names] of groups) {
     const starterCpp = [...cppTodos].some((t) => !done.split(',').includes(t));
-    const url = args.base + (starterCpp ? '/site/' + lab + '/index.html' : '/solution-pages/' + lab + '/index.html');
+    const url = args.base + (starterCpp ? '/site/' + lab + '/index.html' : '/lecturer/' + lab + '/index.html');
     if (!pages.has(url)) pages.set(url, (await openPage(context, url)).page);
     const page = pages.get(url);
     const dir = path.join(out, 'done-' + lab + '-' + done.replace(/,/g, '+'));
@@ -266,7 +368,7 @@ async function knownMistake(context, lab, name) {
     if (n === mistake.file) text = text.replace(mistake.find, mistake.replace);
     fs.writeFileSync(path.join(dir, n), text);
   }
-  const { page } = await openPage(context, args.base + '/solution-pages/' + lab + '/index.html');
+  const { page } = await openPage(context, args.base + '/lecturer/' + lab + '/index.html');
   await page.setInputFiles('#open', shaders.map((n) => path.join(dir, n)));
   await page.waitForFunction(() => /^Opened/.test(document.getElementById('status').textContent));
   await page.waitForTimeout(800);  // opened files rebuild at once; then a frame drawn from them
@@ -291,7 +393,7 @@ async function knownMistake(context, lab, name) {
 
 // The editor: a broken edit, its fix, a reload, and the download graded by gsv-grade.
 async function editor(context, lab) {
-  const { page } = await openPage(context, args.base + '/solution-pages/' + lab + '/index.html');
+  const { page } = await openPage(context, args.base + '/lecturer/' + lab + '/index.html');
   await page.evaluate(() => localStorage.clear());
   const before = (await canvasPixels(page)).url;
   // A fragment shader the student writes in (one with a TODO), so the picture depends on it.
@@ -434,28 +536,91 @@ async function faults(context, browser) {
   await refusing.close();
 }
 
-// A deck beside its live lab (the decks are there where the slides test or scripts/kit slides built them).
-async function deckWithLiveLab(context) {
-  const deck = path.resolve(args.site, 'site/slides/01-gooch.html');
-  if (!fs.existsSync(deck)) {
-    console.log('     ' + args.rasterizer + ': no deck in site/slides (the slides test, or scripts/kit slides, builds them): the deck screenshot is skipped');
+// A deck beside its live lab (the decks are there where the slides test or scripts/kit slides built them): on the
+// students' site the starter, on the lecturer's the solution, which draws a picture, not the starter's flat colour.
+async function deckWithLiveLab(context, site) {
+  const deck = path.resolve(args.site, site + '/slides/01-gooch.html');
+  if (/not built yet/.test(fs.readFileSync(deck, 'utf8').slice(0, 2000))) {
+    console.log('     ' + args.rasterizer + ': deck 01 not built (the slides test, or scripts/kit slides, builds it): the deck screenshot is skipped');
     return;
   }
   const page = await context.newPage();
-  await page.setViewportSize({ width: 1024, height: 768 });
-  await page.goto(args.base + '/site/slides/01-gooch.html');
+  await page.setViewportSize(site === 'lecturer' ? { width: 1920, height: 1080 } : { width: 1024, height: 768 });
+  await page.goto(args.base + '/' + site + '/slides/01-gooch.html');
   const last = await page.evaluate(() => document.querySelectorAll('body > section').length);
-  await page.goto(args.base + '/site/slides/01-gooch.html#' + last);
+  await page.goto(args.base + '/' + site + '/slides/01-gooch.html#' + last);
   await page.waitForTimeout(1500);  // dzslides' transition
   const frame = page.frames().find((f) => /lab01\/index\.html/.test(f.url()));
   if (frame) await frame.waitForFunction(() => window.gsvPage && (window.gsvPage.frames > 0 || window.gsvPage.failed), null, { timeout: 60000 });
-  check(!!frame, 'the lab 01 deck\'s last slide holds the live lab');
+  check(!!frame && frame.url().includes('/' + site + '/'), 'the lab 01 deck\'s last slide on ' + site + '/ holds its live lab' + (frame ? ' (' + frame.url().replace(args.base, '') + ')' : ''));
+  if (frame && site === 'lecturer') {
+    const pixels = await canvasPixels(frame);
+    check(!pixels.flat, 'the lecturer\'s deck runs the solution: a picture, not one flat colour');
+  }
   await page.waitForTimeout(500);
-  await page.screenshot({ path: path.join(out, 'deck-01-live-lab.png') });
+  await page.screenshot({ path: path.join(out, 'deck-01-live-lab-' + site + '.png') });
   await page.close();
 }
 
+// The lecturer's site: every page says it holds the answers (the students' pages do not); a picture goes full screen
+// at the screen's size and comes back at the lab's.
+async function lecturerSite(context) {
+  const student = await context.newPage();
+  await student.goto(args.base + '/site/lab01/index.html');
+  const studentNote = await student.evaluate(() => document.querySelectorAll('.lecturer-note').length);
+  await student.close();
+  const { page, problems } = await openPage(context, args.base + '/lecturer/lab01/index.html');
+  await page.setViewportSize({ width: 1920, height: 1080 });
+  const note = await page.evaluate(() => (document.querySelector('.lecturer-note') || {}).textContent || '');
+  check(/Never publish/.test(note) && studentNote === 0, 'the lecturer\'s pages say they hold the answers, the students\' do not: ' + note);
+  const own = await page.evaluate(() => [window.gsvPage.description.width, window.gsvPage.description.height]);
+  await page.click('#fullscreen-button');
+  await page.waitForFunction(() => /^full screen/.test(document.getElementById('status').textContent), null, { timeout: 10000 })
+    .catch(() => {});
+  await page.waitForTimeout(500);
+  const full = await page.evaluate(() => ({ width: document.getElementById('canvas').width, height: document.getElementById('canvas').height,
+    screen: [Math.round(window.innerWidth * devicePixelRatio), Math.round(window.innerHeight * devicePixelRatio)],
+    status: document.getElementById('status').textContent }));
+  await page.screenshot({ path: path.join(out, 'lecturer-lab01-full-screen.png') });
+  const pixels = await canvasPixels(page);
+  check(full.width === full.screen[0] && full.height === full.screen[1] && !pixels.flat,
+        'full screen: the solution drawn at ' + full.width + 'x' + full.height + ' for a ' + full.screen.join('x') + ' screen (' + full.status + ')');
+  await page.evaluate(() => document.exitFullscreen());
+  await page.waitForTimeout(500);
+  const back = await page.evaluate(() => [document.getElementById('canvas').width, document.getElementById('canvas').height]);
+  check(back.join() === own.join(), 'leaving full screen: the picture at the lab\'s ' + own.join('x') + ' again (' + back.join('x') + ')');
+  check(problems.length === 0, 'lecturer\'s page: no console error' + (problems.length ? ': ' + problems.join('; ') : ''));
+  await page.close();
+}
+
+// Every link and every image, script and style on the site's pages answers (the index, each lab's page, the decks'
+// index and each deck's page or its "not built yet" page), followed from the index; a deck's own images are inline.
+async function linksAnswer(site) {
+  const seen = new Set();
+  const queue = [args.base + '/' + site + '/index.html'];
+  const broken = [];
+  while (queue.length) {
+    const url = queue.shift();
+    if (seen.has(url)) continue;
+    seen.add(url);
+    const reply = await fetch(url);
+    if (!reply.ok) { broken.push(url.replace(args.base, '') + ' (' + reply.status + ')'); continue; }
+    if (!/\.html$/.test(new URL(url).pathname)) continue;
+    const html = await reply.text();
+    for (const m of html.matchAll(/(?:href|src)="([^"#]+)(?:#[^"]*)?"/g)) {
+      if (/^(data:|mailto:|javascript:)/.test(m[1])) continue;
+      const next = new URL(m[1], url);
+      if (next.origin === new URL(args.base).origin && next.pathname.startsWith('/' + site + '/')) queue.push(next.href);
+    }
+  }
+  check(broken.length === 0, 'every link on ' + site + '/ answers (' + seen.size + ' followed)' + (broken.length ? ': ' + broken.join(', ') : ''));
+}
+
 (async () => {
+  if (args.editor) {
+    await linksAnswer('site');
+    await linksAnswer('lecturer');
+  }
   const browser = await chromium.launch({
     executablePath: process.env.GSV_CHROMIUM || '/usr/bin/chromium', headless: true,
     args: ['--no-sandbox', ...rasterizers[args.rasterizer]],
@@ -484,12 +649,16 @@ async function deckWithLiveLab(context) {
   if (args.editor) {
     const t0 = Date.now();
     try {
+      await studentsPage(context, 'lab01');
+      await particleLimit(context);
       await oneTodoUndone(context, 'lab01', 'L01-T4');
       await knownMistake(context, 'lab01', 'the normal left in the model\'s space');
       for (const lab of labs) await oneTodoAtATime(context, lab);
       await editor(context, 'lab01');
       await faults(context, browser);
-      await deckWithLiveLab(context);
+      await deckWithLiveLab(context, 'site');
+      await deckWithLiveLab(context, 'lecturer');
+      await lecturerSite(context);
     } catch (e) {
       check(false, 'editor: ' + e.message.split('\n')[0]);
     }

@@ -4,7 +4,8 @@
 #                                       beside the other tests: it compiles and times nothing
 #   check_web.sh pages KIT_ROOT BUILD   that build served on 127.0.0.1 and checked in headless Chromium, on Mesa's
 #                                       llvmpipe through ANGLE (under Xvfb) and on SwiftShader (check_pages.js says
-#                                       what is checked), alone: it times first frames. Screenshots of every page land
+#                                       what is checked), beside the other tests (first frames are printed, not
+#                                       judged). Screenshots of every page land
 #                                       in BUILD/web-test/<rasterizer>/.
 # The test's build is the shipped one (scripts/kit web, build-web/) at -O1 instead of -O3, compiled and linked: the
 # same sources, flags and WebGL calls, without Binaryen's -O3 passes, which took 60-130 s a page to link here (-O1: 8 s);
@@ -55,12 +56,12 @@ out="$build/web-test"
 rm -rf "$out"
 mkdir -p "$out"
 
-# The decks beside the pages, where the slides test (or scripts/kit slides) built them: one gets a screenshot with its
-# live lab.
-if ls "$build"/slides/*.html >/dev/null 2>&1; then
-  mkdir -p "$web/site/slides"
-  cp "$build"/slides/*.html "$web/site/slides/"
-fi
+# The decks beside the pages, where the slides test built them (its quick decks), else scripts/kit slides: one gets a
+# screenshot with its live lab; a deck built by neither is a page saying how to build it.
+slides="$build/slides-test"
+[ -f "$slides/index.html" ] || slides="$build/slides"
+"$root/scripts/site-slides.sh" "$web/site" "$slides"
+"$root/scripts/site-slides.sh" "$web/lecturer" "$slides"
 
 # A free port on 127.0.0.1 for the server, a free display for Xvfb.
 port=$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')

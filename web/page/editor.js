@@ -153,6 +153,11 @@ window.gsvEditor = (function () {
 
   // Every file changed since the last rebuild is written, then one rebuild: an opened folder lands as a whole.
   function applyPending() {
+    if (window.gsvPage && window.gsvPage.checking) {  // not halfway through a self-check: after it
+      clearTimeout(timer);
+      timer = setTimeout(applyPending, 200);
+      return;
+    }
     for (const f of pending) {
       Module.FS.writeFile(f.path, f.text);
       f.applied = f.text;  // stored when it was edited

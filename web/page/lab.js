@@ -133,6 +133,11 @@
   let lastTime = 0;
   function loop(time) {
     if (page.lost) return;
+    if (page.checking) {  // the self-check draws its cases between frames (self_check.js): the page waits for it
+      lastTime = 0;
+      requestAnimationFrame(loop);
+      return;
+    }
     if (page.playing) {
       const error = Module.play(lastTime ? (time - lastTime) / 1000 : 0);
       if (error) say(error, 'warning');
@@ -211,7 +216,12 @@
     }
     const input = document.createElement('input');
     if (p.kind === 'bool') input.type = 'checkbox';
-    else if (p.kind === 'float' || p.kind === 'int') {
+    else if (logScale(p)) {
+      input.type = 'range';  // the slider's position, 0 to kLogSteps; the value is min * (max / min)^(position / kLogSteps)
+      input.min = 0;
+      input.max = kLogSteps;
+      input.step = 1;
+    } else if (p.kind === 'float' || p.kind === 'int') {
       input.type = 'range';
       input.min = p.min;
       input.max = p.max;
@@ -220,8 +230,16 @@
     return input;
   }
 
+  // A whole number over several orders of magnitude (lab 05's 1 to 16,777,216 particles: 131,072 a pixel on a linear
+  // slider) moves in equal ratios, not equal steps.
+  const kLogSteps = 1000;
+  function logScale(p) { return p.kind === 'int' && p.min >= 1 && p.max / p.min >= 1000; }
+  function fromPosition(p, position) { return Math.round(p.min * Math.pow(p.max / p.min, position / kLogSteps)); }
+  function toPosition(p, value) { return Math.round(kLogSteps * Math.log(value / p.min) / Math.log(p.max / p.min)); }
+
   function readInput(p, input) {
     if (p.kind === 'bool') return input.checked ? 'on' : 'off';
+    if (logScale(p)) return String(fromPosition(p, Number(input.value)));
     return input.value;
   }
 
@@ -230,7 +248,8 @@
       const c = controls.get(s.name);
       if (!c) continue;
       if (c.spec.kind === 'bool') c.input.checked = s.value === 'on';
-      else if (document.activeElement !== c.input || c.spec.kind === 'choice') c.input.value = s.value;
+      else if (document.activeElement !== c.input || c.spec.kind === 'choice')
+        c.input.value = logScale(c.spec) ? toPosition(c.spec, Number(s.value)) : s.value;
       c.value.textContent = c.spec.kind === 'bool' ? '' : s.value;
       // Greyed with the window's reason: what would enable it.
       c.input.disabled = !!s.inactive;
@@ -266,8 +285,32 @@
   page.pickCase = (name) => pickCase(page.description.cases.findIndex((c) => c.name === name));
 
   // ---- Keys and the mouse, as the window has them ----
+  // Full screen (F, or the button): the picture at the screen's own size in device pixels, drawn by the lab at that
+  // size; on leaving, the lab's size (or ?size=) again.
+  function fullScreen() {
+    if (document.fullscreenElement) document.exitFullscreen();
+    else $('picture').requestFullscreen().catch((e) => say('Full screen refused by the browser: ' + e.message, 'warning'));
+  }
+
+  function sizeToScreen() {
+    const canvas = $('canvas');
+    const full = document.fullscreenElement === $('picture');
+    const width = full ? Math.round(window.innerWidth * devicePixelRatio) : page.description.width;
+    const height = full ? Math.round(window.innerHeight * devicePixelRatio) : page.description.height;
+    const error = Module.resize(width, height);
+    canvas.style.width = full ? '100vw' : width + 'px';
+    canvas.style.height = full ? '100vh' : height + 'px';
+    changed(error);
+    if (!error) say(full ? 'full screen: the picture at ' + width + 'x' + height + ' (F or Esc leaves)' : page.description.title + ' on ' + page.description.gl);
+  }
+  page.fullScreen = fullScreen;
+
   function bindKeysAndMouse() {
     const canvas = $('canvas');
+    $('fullscreen-button').addEventListener('click', fullScreen);
+    document.addEventListener('fullscreenchange', sizeToScreen);
+    $('compare-at').addEventListener('input', cutOverlay);
+    $('compare-button').addEventListener('click', nextView);
     let drag = null;
     canvas.addEventListener('pointerdown', (e) => {
       drag = { x: e.clientX, y: e.clientY };
@@ -291,6 +334,7 @@
       const key = e.key.length === 1 ? e.key.toUpperCase() : e.key;
       if (key === 'C') pickCase((page.caseIndex + 1) % page.description.cases.length);
       else if (key === 'V') nextView();
+      else if (key === 'F') fullScreen();
       else if (key === 'S') savePicture();
       else if (key === 'U') document.body.classList.toggle('panel-hidden');
       else if (key === ' ') togglePlay();
@@ -321,16 +365,27 @@
 
   // V: yours, then the current case's golden image, then yours | golden | difference (the self-check's compare view).
   function nextView() {
+    if (page.checking) {
+      say('The self-check is drawing its cases: compare after it', 'warning');
+      return;
+    }
     const views = ['yours', 'golden', 'compare'];
     page.view = views[(views.indexOf(page.view) + 1) % views.length];
     showView();
   }
 
+  // golden: the golden image over yours, cut where the slider is (yours on its left, the golden on its right); compare:
+  // the composite in the picture's place.
   function showView() {
     const overlay = $('overlay');
     const c = page.description.cases[page.caseIndex];
+    const slider = $('compare-slider');
+    overlay.classList.toggle('composite', page.view === 'compare');
+    $('canvas').classList.toggle('under-composite', page.view === 'compare');
     if (page.view === 'yours' || !c || !c.todo || !window.gsvSelfCheck) {
       overlay.hidden = true;
+      slider.hidden = true;
+      $('canvas').classList.remove('under-composite');
       if (page.view !== 'yours') say('V compares a graded case with its golden image: pick one with C first', 'warning');
       page.view = 'yours';
       return;
@@ -338,7 +393,15 @@
     const url = page.view === 'golden' ? window.gsvSelfCheck.goldenUrl(c.name) : window.gsvSelfCheck.compareUrl(c.name);
     overlay.src = url;
     overlay.hidden = false;
-    say('view: ' + (page.view === 'golden' ? 'the golden image of ' + c.name : 'yours | golden | difference, ' + c.name));
+    slider.hidden = page.view !== 'golden';
+    cutOverlay();
+    say('view: ' + (page.view === 'golden' ? 'yours left of the slider, the golden image of ' + c.name + ' right of it'
+                                          : 'yours | golden | difference, ' + c.name));
+  }
+
+  function cutOverlay() {
+    const at = Number($('compare-at').value);
+    $('overlay').style.clipPath = page.view === 'golden' ? 'inset(0 0 0 ' + at + '%)' : '';
   }
 
   // ---- A lost WebGL context: restored where the browser gives it back, else one line; the edits are kept ----

@@ -23,6 +23,8 @@
 #include <filesystem>
 #include <map>
 #include <set>
+#include <string>
+#include <vector>
 
 namespace gsv {
 namespace {
@@ -162,53 +164,146 @@ Json result_json(const CaseResult& r) {
     return j;
 }
 
-// Runs every public case (or the one named: compare's view of it); the page's own values are put back afterwards.
-// Returns {"table": ..., "score": ..., "max_score": ..., "results": [...]}.
-std::string self_check(const std::string& only) {
-    Session* session = nullptr;
+// A self-check under way: the page checks one case a call (selfCheckStep), drawing between them, so a long check shows
+// its progress and never holds the page for more than a case.
+struct PendingCheck {
+    LabCases lab;
+    std::vector<const GradeCase*> todo;  // the cases to check, in the case file's order
+    std::size_t next = 0;
+    GradeReport report;
+    std::map<std::string, Drawn> drawn;
+    Params before;
+    bool active = false;
+};
+
+PendingCheck& pending() {
+    static PendingCheck check;  // the page's one self-check, beside its one session
+    return check;
+}
+
+std::string error_json(const std::string& what) {
+    Json out = Json::object();
+    out["error"] = what;
+    return out.dump(0);
+}
+
+// Starts a self-check of the public cases `only` selects: all (""), one case by name (compare's view of it) or a TODO's
+// cases by its id ("L01-T2"). Returns {"cases": [names]} or {"error": ...} (an id or name the case file does not have).
+std::string self_check_start(const std::string& only) {
+    PendingCheck& p = pending();
     try {
-        session = &web_session();
-    } catch (const std::exception& e) {
+        Session& s = web_session();
+        if (p.active) {  // a check the page left unfinished: the page's own values back first
+            s.params = p.before;
+            s.sync_params();
+        }
+        p = PendingCheck{};
+        p.lab = load_lab_cases(s.case_file());
+        for (const auto& c : p.lab.cases)
+            if (c.visibility == "public" && (only.empty() || c.name == only || c.todo == only)) p.todo.push_back(&c);
+        if (p.todo.empty()) return error_json("no public case is named or checks '" + only + "' in " + s.case_file().string());
+        p.report.submission = "this page";
+        p.report.mode = "self-check";
+        p.report.profile = "es";
+        p.report.sandbox = "none needed: your own code, in your own browser";
+        p.before = s.params;
+        p.active = true;
         Json out = Json::object();
-        out["error"] = e.what();
+        Json names = Json::array();
+        for (const GradeCase* c : p.todo) names.push_back(c->name);
+        out["cases"] = names;
         return out.dump(0);
+    } catch (const std::exception& e) {
+        p.active = false;
+        return error_json(e.what());
     }
-    Session& s = *session;
-    const Params before = s.params;
+}
+
+// Checks the next case. Returns {"done": n, "total": m, "name": the case just checked, "passed": bool}.
+std::string self_check_step() {
+    PendingCheck& p = pending();
+    if (!p.active) return error_json("no self-check is under way");
+    Json out = Json::object();
+    if (p.next < p.todo.size()) {
+        const GradeCase& c = *p.todo[p.next++];
+        p.report.results.push_back(check_case(web_session(), p.lab, c, p.drawn));
+        out["name"] = c.name;
+        out["passed"] = p.report.results.back().status == CaseStatus::Passed;
+    }
+    out["done"] = static_cast<int>(p.next);
+    out["total"] = static_cast<int>(p.todo.size());
+    return out.dump(0);
+}
+
+// Ends the check: the known mistakes and the needed TODOs worked out over the cases checked, the page's own values put
+// back. Returns {"table": ..., "score": ..., "max_score": ..., "results": [...]}.
+std::string self_check_finish() {
+    PendingCheck& p = pending();
+    if (!p.active) return error_json("no self-check is under way");
+    p.active = false;
+    Session& s = web_session();
     try {
-        const LabCases lab = load_lab_cases(s.case_file());
-        GradeReport report;
-        report.submission = "this page";
-        report.mode = "self-check";
-        report.profile = "es";
-        report.sandbox = "none needed: your own code, in your own browser";
-        std::map<std::string, Drawn> drawn;
-        for (const auto& c : lab.cases)
-            if (c.visibility == "public" && (only.empty() || c.name == only)) report.results.push_back(check_case(s, lab, c, drawn));
         // Before the needs: a failure a known mistake explains is put on the mistake's TODO (grader/src/judge/needs.h).
-        diagnose(s, lab, report, drawn);
-        blame_needed_todos(lab, report.results, 0);
-        s.params = before;
+        diagnose(s, p.lab, p.report, p.drawn);
+        blame_needed_todos(p.lab, p.report.results, 0);
+        s.params = p.before;
         if (auto error = s.sync_params()) throw Error(*error);
         Json out = Json::object();
-        out["table"] = score_table(report);
-        out["score"] = report.score();
-        out["max_score"] = report.max_score();
+        out["table"] = score_table(p.report);
+        out["score"] = p.report.score();
+        out["max_score"] = p.report.max_score();
         Json results = Json::array();
-        for (const auto& r : report.results) results.push_back(result_json(r));
+        for (const auto& r : p.report.results) results.push_back(result_json(r));
         out["results"] = results;
         return out.dump(0);
     } catch (const std::exception& e) {
-        s.params = before;
+        s.params = p.before;
         s.sync_params();
-        Json out = Json::object();
-        out["error"] = e.what();
-        return out.dump(0);
+        return error_json(e.what());
     }
+}
+
+// The public cases as the page's self-check takes them: {"cases": [{"name", "todo", "points", "desktop_only", "es"}]}
+// (desktop_only: the case needs more than WebGL 2's ES 3.0, so the page cannot earn its points).
+std::string self_check_cases() {
+    try {
+        Session& s = web_session();
+        const LabCases lab = load_lab_cases(s.case_file());
+        Json cases = Json::array();
+        for (const auto& c : lab.cases) {
+            if (c.visibility != "public") continue;
+            Json j = Json::object();
+            j["name"] = c.name;
+            j["todo"] = c.todo;
+            j["points"] = c.points;
+            j["desktop_only"] = !fits_webgl2(c);
+            j["es"] = c.es_version ? c.es_version->str() : std::string("3.0");
+            cases.push_back(j);
+        }
+        Json out = Json::object();
+        out["cases"] = cases;
+        return out.dump(0);
+    } catch (const std::exception& e) {
+        return error_json(e.what());
+    }
+}
+
+// The whole check in one call: every public case, one by name, or a TODO's.
+std::string self_check(const std::string& only) {
+    const std::string started = self_check_start(only);
+    if (parse_json(started, "the self-check's start").contains("error")) return started;
+    while (pending().next < pending().todo.size()) self_check_step();
+    return self_check_finish();
 }
 
 }  // namespace
 
-EMSCRIPTEN_BINDINGS(gsv_page_self_check) { emscripten::function("selfCheck", &self_check); }
+EMSCRIPTEN_BINDINGS(gsv_page_self_check) {
+    emscripten::function("selfCheck", &self_check);
+    emscripten::function("selfCheckStart", &self_check_start);
+    emscripten::function("selfCheckStep", &self_check_step);
+    emscripten::function("selfCheckFinish", &self_check_finish);
+    emscripten::function("selfCheckCases", &self_check_cases);
+}
 
 }  // namespace gsv
