@@ -118,16 +118,16 @@ function(gsv_add_web_lab id dir)
       list(REMOVE_ITEM lab_sources ${PROJECT_SOURCE_DIR}/${src}/${name})
     endforeach()
     file(GLOB_RECURSE preloaded CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${src}/* ${PROJECT_SOURCE_DIR}/shaders/*
-         ${PROJECT_SOURCE_DIR}/data/* ${PROJECT_SOURCE_DIR}/grader/golden/${id}/*)
+         ${PROJECT_SOURCE_DIR}/grader/golden/${id}/*)
     add_executable(${target} ${lab_sources} ${shared_objects} ${GSV_WEB_PAGE_SOURCES})
     target_link_libraries(${target} PRIVATE gsv_support ${GSV_WEB_PAGE_LIBRARIES})
     target_compile_definitions(${target} PRIVATE GSV_LAB_DIR="${src}" GSV_LAB_VARIANT="${variant}")
     set(preload)
-    foreach(path ${src} shaders data grader/cases/${id}.json grader/golden/${id})
+    # data/ and the font are the shared package's (below), not each lab's.
+    foreach(path ${src} shaders grader/cases/${id}.json grader/golden/${id})
       # SHELL: keeps each option with its value (CMake removes repeated options otherwise).
       list(APPEND preload "SHELL:--preload-file ${PROJECT_SOURCE_DIR}/${path}@/kit/${path}")
     endforeach()
-    list(APPEND preload "SHELL:--preload-file ${GSV_WEB_FONT}@${GSV_WEB_FONT}")
     target_link_options(${target} PRIVATE ${GSV_WEB_LINK_FLAGS} ${preload})
     set_target_properties(${target} PROPERTIES OUTPUT_NAME ${id} SUFFIX ".js" RUNTIME_OUTPUT_DIRECTORY ${out}
                           LINK_DEPENDS "${preloaded};${PROJECT_SOURCE_DIR}/grader/cases/${id}.json")
@@ -138,6 +138,28 @@ foreach(lab IN LISTS GSV_LAB_LIST)
   string(REPLACE ":" ";" lab_pair ${lab})
   gsv_add_web_lab(${lab_pair})
 endforeach()
+
+# What every lab shares, data/ (flows, meshes, terrain, volumes, a photo: 2.9 MiB) and the panel's font, is one package
+# at shared/, which every page loads before its lab (web/page/lab.js): fetched once and kept by the browser's cache
+# across the labs' pages, not again inside each lab's own package (its folder, the shaders, its cases and goldens).
+find_file(GSV_FILE_PACKAGER file_packager.py PATHS /usr/share/emscripten/tools ${EMSCRIPTEN_ROOT_PATH}/tools
+          NO_DEFAULT_PATH NO_CMAKE_FIND_ROOT_PATH)
+if(NOT GSV_FILE_PACKAGER)
+  message(FATAL_ERROR "the web pages' shared data package needs Emscripten's tools/file_packager.py (apt-get install emscripten)")
+endif()
+find_package(Python3 REQUIRED COMPONENTS Interpreter)
+file(GLOB_RECURSE shared_data CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/data/*)
+set(GSV_WEB_SHARED ${GSV_WEB_SITE}/shared/shared-data.data ${GSV_WEB_SITE}/shared/shared-data.js)
+add_custom_command(OUTPUT ${GSV_WEB_SHARED}
+  COMMAND ${CMAKE_COMMAND} -E make_directory ${GSV_WEB_SITE}/shared
+  COMMAND ${Python3_EXECUTABLE} ${GSV_FILE_PACKAGER} shared-data.data --preload ${PROJECT_SOURCE_DIR}/data@/kit/data
+          ${GSV_WEB_FONT}@${GSV_WEB_FONT} --js-output=shared-data.js
+  DEPENDS ${shared_data} ${GSV_WEB_FONT}
+  WORKING_DIRECTORY ${GSV_WEB_SITE}/shared
+  COMMENT "the labs' shared data package into ${GSV_WEB_SITE}/shared")
+file(MAKE_DIRECTORY ${GSV_WEB_SITE}/shared)
+add_custom_target(web_shared_data ALL DEPENDS ${GSV_WEB_SHARED}
+  COMMAND ${CMAKE_COMMAND} -E copy_directory ${GSV_WEB_SITE}/shared ${GSV_WEB_LECTURER}/shared)
 
 # The site: an index (each lab with a picture, its first case's golden image, and its title), a page per lab, the
 # pages' JavaScript and CSS (web/page/), and the editor and zip code from Debian and npm, copied as they come.

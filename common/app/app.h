@@ -138,6 +138,15 @@ public:
     // A target's depth buffer, width * height values in [0, 1], row 0 = top, in every profile (common/app/depth_readback.h).
     std::vector<float> read_depth(const Framebuffer& target) { return depth_readback_.read(*this, target); }
 
+    // An interactive frame that did only part of what its values ask (lab 05 catches its simulation up a few steps a
+    // frame): the page, which draws only on a change, draws again until the lab stops asking (the window draws on).
+    void ask_for_another_frame() { another_frame_ = true; }
+    bool take_another_frame_request() {
+        const bool asked = another_frame_;
+        another_frame_ = false;
+        return asked;
+    }
+
 private:
     Context& context_;
     Params& params_;
@@ -145,6 +154,7 @@ private:
     Profile profile_;
     ShaderLibrary shaders_;
     DepthReadback depth_readback_;
+    bool another_frame_ = false;
 };
 
 // Declares the camera parameters (camera_yaw, camera_pitch, camera_distance) that window mode drives with

@@ -44,6 +44,7 @@ struct WebPage {
     Params last_good;     // the last values that drew: a refused value goes back to them
     std::string status;   // the last error, one line, for the page
     double start = 0;
+    bool draw_again = false;  // the last frame did part of its work (LabKit::ask_for_another_frame)
 };
 
 WebPage* page = nullptr;
@@ -197,6 +198,7 @@ double web_draw() {
         wait_for_gpu(p.picture.id());
         const double t0 = now_seconds();
         s.render_frame(Frame{width, height, t0 - p.start, true});
+        p.draw_again = s.kit->take_another_frame_request();
         wait_for_gpu(p.picture.id());
         const double ms = 1000.0 * (now_seconds() - t0);
         check_gl_error("drawing the frame");
@@ -234,6 +236,8 @@ std::string web_resize(int width, int height) {
 
 std::string web_status() { return page ? page->status : ""; }
 
+bool web_draw_again() { return page && page->draw_again; }
+
 EMSCRIPTEN_BINDINGS(gsv_web_page) {
     emscripten::function("describe", &web_describe);
     emscripten::function("states", &web_states);
@@ -245,6 +249,7 @@ EMSCRIPTEN_BINDINGS(gsv_web_page) {
     emscripten::function("draw", &web_draw);
     emscripten::function("status", &web_status);
     emscripten::function("resize", &web_resize);
+    emscripten::function("drawAgain", &web_draw_again);
 }
 
 #endif

@@ -192,6 +192,7 @@ private:
         if (frame.interactive) steps = std::min(steps, kMaxStepsPerFrame);
         stepper(kit).run(steps, p.get_float("time_step"));
         done_ += steps;
+        if (done_ < target) kit.ask_for_another_frame();  // the picture is behind its time: the page draws on
     }
 
     static std::vector<float> flatten(const std::vector<glm::vec4>& v) {

@@ -120,6 +120,7 @@ async function starterPage(context, lab) {
   await page.screenshot({ path: path.join(out, lab + '-page.png'), fullPage: true });
   await editorTabs(page, lab);
   await desktopOnly(page, lab);
+  await pageWeight(page, lab);
   // The starter's self-check draws every case; once (with --native, against gsv-grade's table) is enough: its
   // not-done colour is the same on every rasterizer.
   if (!args.native) {
@@ -136,6 +137,28 @@ async function starterPage(context, lab) {
   }
   check(problems.length === 0, lab + ' no console error' + (problems.length ? ': ' + problems.join('; ') : ''));
   await page.close();
+}
+
+// The page's weight as the browser fetched it from scripts/serve.py (gzip), against the files' own sizes: every file
+// the page and its lab loaded, the shared ones (the editor, the pages' scripts) counted too.
+// The labs' shared data package (data/ and the font) comes whole to the first page only; later pages keep it (a 304).
+let sharedFetched = false;
+async function pageWeight(page, lab) {
+  const w = await page.evaluate(() => {
+    const entries = [...performance.getEntriesByType('navigation'), ...performance.getEntriesByType('resource')];
+    const wasm = entries.find((e) => /\.wasm$/.test(e.name));
+    const shared = entries.find((e) => /shared-data\.data$/.test(e.name));
+    return { files: entries.length, sent: entries.reduce((s, e) => s + e.transferSize, 0),
+             size: entries.reduce((s, e) => s + e.decodedBodySize, 0),
+             wasmSent: wasm ? wasm.encodedBodySize : 0, wasmSize: wasm ? wasm.decodedBodySize : 0,
+             sharedSent: shared ? shared.transferSize : -1, sharedSize: shared ? shared.decodedBodySize : 0 };
+  });
+  const mib = (n) => (n / 1048576).toFixed(2) + ' MiB';
+  const sharedOk = w.sharedSize > 0 && (sharedFetched ? w.sharedSent < 16384 : w.sharedSent > 0);
+  check(w.wasmSize > 0 && w.wasmSent < w.wasmSize && sharedOk, lab + ' page weight: ' + mib(w.size) + ' in ' + w.files + ' files, ' +
+        mib(w.sent) + ' sent compressed (its WebAssembly ' + mib(w.wasmSize) + ', ' + mib(w.wasmSent) + ' sent; the shared data ' +
+        mib(w.sharedSize) + ', ' + (w.sharedSent < 16384 ? 'kept from an earlier page' : mib(w.sharedSent) + ' sent') + ')');
+  sharedFetched = true;
 }
 
 // Cases past WebGL 2's ES 3.0 (lab 05's compute shaders) are named under the self-check with the points they hold, and
@@ -255,6 +278,12 @@ async function studentsPage(context, lab) {
 // cannot hold, the last values that drew back and drawing.
 async function particleLimit(context) {
   const { page, problems } = await openPage(context, args.base + '/site/lab05/index.html');
+  // Its defaults (t = 2, h = 0.05) are 40 steps, and a frame takes at most 32: the page draws on until the picture is
+  // at its time, with nothing else changed.
+  await page.waitForFunction(() => !Module.drawAgain(), null, { timeout: 20000 }).catch(() => {});
+  const caught = await page.evaluate(() => ({ frames: window.gsvPage.frames, behind: Module.drawAgain() }));
+  check(caught.frames >= 2 && !caught.behind, 'lab05 draws on to its time by itself: ' + caught.frames + ' frames, ' +
+        (caught.behind ? 'still behind' : 'at its time'));
   const max = await page.evaluate(() => {
     const input = document.getElementById('param-particles');
     input.value = input.max;

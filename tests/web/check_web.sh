@@ -65,7 +65,7 @@ slides="$build/slides-test"
 
 # A free port on 127.0.0.1 for the server, a free display for Xvfb.
 port=$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
-python3 -m http.server "$port" --bind 127.0.0.1 --directory "$web" >"$out/server.log" 2>&1 &
+python3 "$root/scripts/serve.py" "$web" "$port" >"$out/server.log" 2>&1 &
 server=$!
 display=:$(( 200 + RANDOM % 500 ))
 Xvfb "$display" -screen 0 1280x1024x24 -nolisten tcp >"$out/xvfb.log" 2>&1 &

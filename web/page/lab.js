@@ -64,12 +64,19 @@
       }
     },
     onRuntimeInitialized: () => start(),
+    // data/ and the font come in the labs' shared package (cmake/web.cmake), one folder up, cached across the labs.
+    locateFile: (file, prefix) => (file === 'shared-data.data' ? '../shared/' + file : prefix + file),
     onAbort: (what) => say('The lab stopped: ' + what + ' (reload the page; your edits are kept).', 'error'),
   };
-  const script = document.createElement('script');
-  script.src = lab + '.js';
-  script.onerror = () => say('Could not load ' + script.src + ': is the page served from its built folder?', 'error');
-  document.body.appendChild(script);
+  // The shared package's loader first (it queues its fetch for the lab's start), then the lab.
+  const load = (src, next) => {
+    const script = document.createElement('script');
+    script.src = src;
+    script.onload = next;
+    script.onerror = () => say('Could not load ' + script.src + ': is the page served from its built folder?', 'error');
+    document.body.appendChild(script);
+  };
+  load('../shared/shared-data.js', () => load(lab + '.js', null));
 
   // The lab's size (the case file's "size"), so the picture is the one its cases and golden images have.
   function labSize(root) {
@@ -149,6 +156,7 @@
       page.dirty = false;
       const ms = Module.draw();
       if (ms >= 0) {
+        if (Module.drawAgain()) page.dirty = true;  // the lab's picture is behind its values (lab 05's steps)
         page.frames++;
         if (page.frames === 1) page.firstFrameMs = performance.now();  // since navigation began
         page.lastFrameMs = ms;
