@@ -586,6 +586,14 @@ async function deckWithLiveLab(context, site) {
     const pixels = await canvasPixels(frame);
     check(!pixels.flat, 'the lecturer\'s deck runs the solution: a picture, not one flat colour');
   }
+  if (frame) {
+    // The slide's page is embedded: the picture, larger than the lab's size, and its parameters, no editor.
+    const shown = await frame.evaluate(() => ({ editor: getComputedStyle(document.getElementById('editor')).display,
+      panel: getComputedStyle(document.getElementById('panel')).display, width: document.getElementById('canvas').width,
+      own: window.gsvPage.description.width }));
+    check(/[?&]embed/.test(frame.url()) && shown.editor === 'none' && shown.panel !== 'none' && shown.width > shown.own,
+          'the slide on ' + site + '/ embeds the picture (' + shown.width + ' px wide, the lab\'s ' + shown.own + ') and its parameters, no editor');
+  }
   await page.waitForTimeout(500);
   await page.screenshot({ path: path.join(out, 'deck-01-live-lab-' + site + '.png') });
   await page.close();

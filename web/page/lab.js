@@ -125,6 +125,7 @@
     const canvas = $('canvas');
     canvas.style.width = description.width + 'px';
     canvas.style.height = description.height + 'px';
+    if (embedded) fitToView();
     buildControls(description.params);
     buildCases(description.cases);
     bindKeysAndMouse();
@@ -293,6 +294,21 @@
   page.pickCase = (name) => pickCase(page.description.cases.findIndex((c) => c.name === name));
 
   // ---- Keys and the mouse, as the window has them ----
+  // ?embed (a deck's live slide): the picture and its parameters only, the picture drawn as large as its place allows
+  // in the lab's proportions.
+  const embedded = query.has('embed');
+  if (embedded) document.body.classList.add('embedded');
+  function fitToView() {
+    const d = page.description;
+    const room = $('view').clientWidth, tall = window.innerHeight - 80;
+    const scale = Math.max(1, Math.min(room / d.width, tall / d.height));
+    const width = Math.round(d.width * scale), height = Math.round(d.height * scale);
+    const error = Module.resize(width, height);
+    $('canvas').style.width = width + 'px';
+    $('canvas').style.height = height + 'px';
+    changed(error);
+  }
+
   // Full screen (F, or the button): the picture at the screen's own size in device pixels, drawn by the lab at that
   // size; on leaving, the lab's size (or ?size=) again.
   function fullScreen() {
