@@ -146,6 +146,11 @@ TEST_CASE("cases: a malformed spec or case file names the file and what is wrong
     CHECK(test::gsv_error_message([&] { load_lab_cases(es_case("es-desktop.json", "4.1")); })
               .find("es-desktop.json: case 'a': \"es\": GL version '4.1' is out of range [3.0, 3.2] for the es profile") !=
           std::string::npos);
+    // The page's opening case must be one of the file's cases.
+    const auto page_case = dir.write("page.json", R"({"lab": "lab01", "size": "8x8", "page_case": "b", )" + tolerance +
+                                                      R"(, "cases": [{"name": "a", "todo": "L01-T1", "settings": []}]})");
+    CHECK(test::gsv_error_message([&] { load_lab_cases(page_case); })
+              .find("page.json: \"page_case\" is 'b', which is not one of its cases") != std::string::npos);
 
     // Through grade(): a broken case file and a lab with no cases stop the run with one clear line.
     GradeOptions options;

@@ -277,7 +277,12 @@ async function studentsPage(context, lab) {
 // Lab 05's particle count: a slider in equal ratios (1 to 16,777,216), and at its top one line naming the value the page
 // cannot hold, the last values that drew back and drawing.
 async function particleLimit(context) {
-  const { page, problems } = await openPage(context, args.base + '/site/lab05/index.html');
+  const { page, problems, ms } = await openPage(context, args.base + '/site/lab05/index.html');
+  // With no case asked for, the page opens on the case file's "page_case" (abc: 65,536 particles, not the million).
+  const opened = await page.evaluate(() => ({ select: document.getElementById('case').value,
+    particles: JSON.parse(Module.states()).find((s) => s.name === 'particles').value }));
+  check(opened.select === 'abc' && opened.particles === '65536', 'lab05 opens on its page case: ' + opened.select + ', ' +
+        opened.particles + ' particles, its first frame in ' + ms + ' ms');
   // Its defaults (t = 2, h = 0.05) are 40 steps, and a frame takes at most 32: the page draws on until the picture is
   // at its time, with nothing else changed.
   await page.waitForFunction(() => !Module.drawAgain(), null, { timeout: 20000 }).catch(() => {});

@@ -78,13 +78,14 @@
   };
   load('../shared/shared-data.js', () => load(lab + '.js', null));
 
-  // The lab's size (the case file's "size"), so the picture is the one its cases and golden images have.
-  function labSize(root) {
+  // The lab's case file: its "size", so the picture is the one its cases and golden images have, and its "page_case",
+  // the case the page opens on where the address names none (lab 05's 65,536 particles: its default million take
+  // about 6 s to a first frame in a page on a CPU rasterizer).
+  function caseFile(root) {
     try {
-      const cases = JSON.parse(Module.FS.readFile(root + '/grader/cases/' + lab + '.json', { encoding: 'utf8' }));
-      return cases.size || '512x512';
+      return JSON.parse(Module.FS.readFile(root + '/grader/cases/' + lab + '.json', { encoding: 'utf8' }));
     } catch (e) {
-      return '512x512';
+      return {};
     }
   }
 
@@ -103,8 +104,10 @@
 
   function start() {
     const root = '/kit';
-    const args = ['web', '--size', query.get('size') || labSize(root)];
-    if (query.get('case')) args.push('--case', query.get('case'));
+    const cases = caseFile(root);
+    const args = ['web', '--size', query.get('size') || cases.size || '512x512'];
+    const opening = query.get('case') || cases.page_case;
+    if (opening) args.push('--case', opening);
     const before = page.log.length;
     const editor = window.gsvEditor;
     // The student's edits go in before the lab starts; a lab cannot start with a broken shader, so where they do not
@@ -127,7 +130,7 @@
     canvas.style.height = description.height + 'px';
     if (embedded) fitToView();
     buildControls(description.params);
-    buildCases(description.cases);
+    buildCases(description.cases, opening);
     bindKeysAndMouse();
     watchContext(canvas);
     page.ready = true;
@@ -269,12 +272,14 @@
   }
 
   // ---- Named cases ----
-  function buildCases(cases) {
+  function buildCases(cases, opening) {
     const select = $('case');
     for (const c of cases) select.append(new Option(c.name + (c.todo ? ' (' + c.todo + ')' : ' (demo)'), c.name));
     select.addEventListener('change', () => pickCase(select.selectedIndex - 1));
-    const initial = query.get('case');
-    if (initial) select.value = initial;
+    if (opening) {
+      select.value = opening;
+      page.caseIndex = cases.findIndex((c) => c.name === opening);
+    }
     describeCase();
   }
 

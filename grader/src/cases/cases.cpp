@@ -165,6 +165,12 @@ LabCases load_lab_cases(const std::filesystem::path& file) {
         check_case_arrays(lab, lab.cases.back(), file.string());
     }
     if (lab.cases.empty()) throw Error(file.string() + ": no cases");
+    // "page_case": the case the browser page opens on where none is asked for (web/page/lab.js): a graded case's name.
+    if (const Json* page_case = root.find("page_case")) {
+        const std::string name = page_case->as_string();
+        if (std::none_of(lab.cases.begin(), lab.cases.end(), [&](const GradeCase& c) { return c.name == name; }))
+            throw Error(file.string() + ": \"page_case\" is '" + name + "', which is not one of its cases");
+    }
     return lab;
 }
 
