@@ -5,6 +5,7 @@ Usage: serve.py DIR PORT   (scripts/kit serve, tests/web/check_web.sh)"""
 import email.utils
 import gzip
 import http.server
+import io
 import os
 import sys
 import threading
@@ -60,21 +61,7 @@ class Handler(http.server.SimpleHTTPRequestHandler):
         self.send_header("Last-Modified", self.date_time_string(int(stat.st_mtime)))
         self.send_header("Cache-Control", "no-cache")
         self.end_headers()
-        return _Bytes(body)
-
-
-class _Bytes:
-    """What send_head returns for copyfile: the compressed body."""
-
-    def __init__(self, data):
-        self.data = data
-
-    def read(self, n=-1):
-        data, self.data = (self.data, b"") if n < 0 else (self.data[:n], self.data[n:])
-        return data
-
-    def close(self):
-        pass
+        return io.BytesIO(body)
 
 
 def main():

@@ -176,23 +176,20 @@ std::string web_reload_shaders() {
 }
 
 // WebGL's finish() returns before Chromium's GPU process has run the commands (measured: LIC's 148 ms frame read as
-// 0.3 ms); reading a pixel back into the page's memory waits for every command before it.
-static void wait_for_gpu(GLuint framebuffer) {
-    glFinish();
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
-    glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
-    unsigned char pixel[4];
-    glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixel);
-}
-
-// wait_for_gpu for a target of either format: a float one is read as floats (WebGL 2 reads it no other way).
-static void wait_for_target(const Framebuffer& target) {
-    if (target.format() == ColorFormat::RGBA8) return wait_for_gpu(target.id());
+// 0.3 ms); reading a pixel of the target back into the page's memory waits for the drawing into it. A read-back of
+// another framebuffer does not: llvmpipe left the target's drawing queued (LIC's frames read 0.4 ms for 7.4 natively).
+// A float target is read as floats, the only way WebGL 2 reads it.
+static void wait_for_gpu(const Framebuffer& target) {
     glFinish();
     glBindFramebuffer(GL_READ_FRAMEBUFFER, target.id());
     glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
-    float pixel[4];
-    glReadPixels(0, 0, 1, 1, GL_RGBA, GL_FLOAT, pixel);
+    if (target.format() == ColorFormat::RGBA8) {
+        unsigned char pixel[4];
+        glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixel);
+    } else {
+        float pixel[4];
+        glReadPixels(0, 0, 1, 1, GL_RGBA, GL_FLOAT, pixel);
+    }
 }
 
 // One frame into the picture, copied onto the canvas. Returns its time in milliseconds, bracketed by waits for the GPU
@@ -205,11 +202,11 @@ double web_draw() {
     if (p.picture.width() != width || p.picture.height() != height) p.picture = Framebuffer(width, height, ColorFormat::RGBA8);
     try {
         p.picture.bind();
-        wait_for_gpu(p.picture.id());
+        wait_for_gpu(p.picture);
         const double t0 = now_seconds();
         s.render_frame(Frame{width, height, t0 - p.start, true});
         p.draw_again = s.kit->take_another_frame_request();
-        wait_for_gpu(p.picture.id());
+        wait_for_gpu(p.picture);
         const double ms = 1000.0 * (now_seconds() - t0);
         check_gl_error("drawing the frame");
         p.last_good = s.params;
@@ -254,15 +251,13 @@ double web_time_frames(int count) {
     Session& s = *p.session;
     const int width = s.options.width, height = s.options.height;
     try {
-        // The waits read a pixel of the target itself: a read-back of another framebuffer left llvmpipe's drawing into
-        // this one queued (LIC's frames read as 0.4 ms for 7.7 natively).
         Framebuffer target = frame_target(s, width, height);
         target.bind();
         s.render_frame(Frame{width, height, 0.0});
-        wait_for_target(target);
+        wait_for_gpu(target);
         const double t0 = now_seconds();
         for (int i = 0; i < count; ++i) s.render_frame(Frame{width, height, 0.0});
-        wait_for_target(target);
+        wait_for_gpu(target);
         const double ms = 1000.0 * (now_seconds() - t0) / count;
         check_gl_error("timing frames");
         return ms;

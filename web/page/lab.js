@@ -307,11 +307,16 @@
     const d = page.description;
     const room = $('view').clientWidth, tall = window.innerHeight - 80;
     const scale = Math.max(1, Math.min(room / d.width, tall / d.height));
-    const width = Math.round(d.width * scale), height = Math.round(d.height * scale);
+    return drawAt(Math.round(d.width * scale), Math.round(d.height * scale));
+  }
+
+  // The lab draws at width x height pixels, shown at that size in CSS pixels unless `shown` says otherwise.
+  function drawAt(width, height, shown) {
     const error = Module.resize(width, height);
-    $('canvas').style.width = width + 'px';
-    $('canvas').style.height = height + 'px';
+    $('canvas').style.width = shown ? shown[0] : width + 'px';
+    $('canvas').style.height = shown ? shown[1] : height + 'px';
     changed(error);
+    return error;
   }
 
   // Full screen (F, or the button): the picture at the screen's own size in device pixels, drawn by the lab at that
@@ -322,15 +327,13 @@
   }
 
   function sizeToScreen() {
-    const canvas = $('canvas');
-    const full = document.fullscreenElement === $('picture');
-    const width = full ? Math.round(window.innerWidth * devicePixelRatio) : page.description.width;
-    const height = full ? Math.round(window.innerHeight * devicePixelRatio) : page.description.height;
-    const error = Module.resize(width, height);
-    canvas.style.width = full ? '100vw' : width + 'px';
-    canvas.style.height = full ? '100vh' : height + 'px';
-    changed(error);
-    if (!error) say(full ? 'full screen: the picture at ' + width + 'x' + height + ' (F or Esc leaves)' : page.description.title + ' on ' + page.description.gl);
+    const d = page.description;
+    if (document.fullscreenElement !== $('picture')) {  // left: the lab's size, or a slide's fitted one
+      if (!(embedded ? fitToView() : drawAt(d.width, d.height))) say(d.title + ' on ' + d.gl);
+      return;
+    }
+    const width = Math.round(window.innerWidth * devicePixelRatio), height = Math.round(window.innerHeight * devicePixelRatio);
+    if (!drawAt(width, height, ['100vw', '100vh'])) say('full screen: the picture at ' + width + 'x' + height + ' (F or Esc leaves)');
   }
   page.fullScreen = fullScreen;
 

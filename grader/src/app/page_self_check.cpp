@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -188,8 +189,8 @@ std::string error_json(const std::string& what) {
 }
 
 // Starts a self-check of the public cases `only` selects: all (""), one case by name (compare's view of it) or a TODO's
-// cases by its id ("L01-T2"). Returns {"cases": [names]} or {"error": ...} (an id or name the case file does not have).
-std::string self_check_start(const std::string& only) {
+// cases by its id ("L01-T2"). Returns what is wrong where it cannot start (an id or name the case file does not have).
+std::optional<std::string> start_check(const std::string& only) {
     PendingCheck& p = pending();
     try {
         Session& s = web_session();
@@ -201,22 +202,28 @@ std::string self_check_start(const std::string& only) {
         p.lab = load_lab_cases(s.case_file());
         for (const auto& c : p.lab.cases)
             if (c.visibility == "public" && (only.empty() || c.name == only || c.todo == only)) p.todo.push_back(&c);
-        if (p.todo.empty()) return error_json("no public case is named or checks '" + only + "' in " + s.case_file().string());
+        if (p.todo.empty()) return "no public case is named or checks '" + only + "' in " + s.case_file().string();
         p.report.submission = "this page";
         p.report.mode = "self-check";
         p.report.profile = "es";
         p.report.sandbox = "none needed: your own code, in your own browser";
         p.before = s.params;
         p.active = true;
-        Json out = Json::object();
-        Json names = Json::array();
-        for (const GradeCase* c : p.todo) names.push_back(c->name);
-        out["cases"] = names;
-        return out.dump(0);
+        return std::nullopt;
     } catch (const std::exception& e) {
         p.active = false;
-        return error_json(e.what());
+        return std::string(e.what());
     }
+}
+
+// The page's start: {"cases": [names]} or {"error": ...}.
+std::string self_check_start(const std::string& only) {
+    if (const auto error = start_check(only)) return error_json(*error);
+    Json names = Json::array();
+    for (const GradeCase* c : pending().todo) names.push_back(c->name);
+    Json out = Json::object();
+    out["cases"] = names;
+    return out.dump(0);
 }
 
 // Checks the next case. Returns {"done": n, "total": m, "name": the case just checked, "passed": bool}.
@@ -290,8 +297,7 @@ std::string self_check_cases() {
 
 // The whole check in one call: every public case, one by name, or a TODO's.
 std::string self_check(const std::string& only) {
-    const std::string started = self_check_start(only);
-    if (parse_json(started, "the self-check's start").contains("error")) return started;
+    if (const auto error = start_check(only)) return error_json(*error);
     while (pending().next < pending().todo.size()) self_check_step();
     return self_check_finish();
 }
