@@ -101,6 +101,11 @@ void Session::open(Backend backend, int extra_width) {
     std::fprintf(stderr, "%s: %s\n", info.id.c_str(), context->describe().c_str());
     context->require(needs, needs_why);
     kit = std::make_unique<LabKit>(*context, params, *assets, options.profile);
+    for (const GlFeature* feature : gl_feature::kAll)
+        if (!kit->allows(*feature))
+            params.note_missing_feature(feature->name, std::string(feature->name) + ", which " +
+                                                           api_name(options.profile, first_version_with(*feature, options.profile)) +
+                                                           " has; this context is " + api_name(options.profile, kit->gl_version()));
     lab->setup(*kit);
     compiled_defines_ = param_defines(params);
 }

@@ -45,6 +45,7 @@ Json describe_params(const Params& params) {
         p["effect"] = spec.effect;
         p["animated"] = spec.animation_axis;
         p["knob"] = !spec.sweep_values.empty();
+        p["same_picture"] = spec.same_picture_why;
         p["value"] = params.text_at(&spec - params.specs().data());
         out.push_back(p);
     }

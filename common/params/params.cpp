@@ -391,12 +391,14 @@ std::string Params::describe() const {
             for (std::size_t k = 0; k < condition.values.size(); ++k) out << (k ? "|" : "") << condition.values[k];
         }
         out << "\n      " << s.help << "\n";
+        if (!s.same_picture_why.empty()) out << "      may draw the same picture: " << s.same_picture_why << "\n";
     }
     return out.str();
 }
 
-std::string Params::inactive_reason(const std::string& name) const {
-    for (const auto& condition : specs_[index_of(name)].applies_when_all) {
+// What would give `spec` an effect, from the other parameters' values only.
+std::string Params::unmet_condition(const ParamSpec& spec) const {
+    for (const auto& condition : spec.applies_when_all) {
         const std::string value = text_at(index_of(condition.param));
         if (std::find(condition.values.begin(), condition.values.end(), value) != condition.values.end()) continue;
         std::string wanted;
@@ -407,11 +409,27 @@ std::string Params::inactive_reason(const std::string& name) const {
     return {};
 }
 
+std::string Params::inactive_reason(const std::string& name) const {
+    const ParamSpec& spec = specs_[index_of(name)];
+    for (const auto& [feature, why] : missing_features_.why)
+        if (feature == spec.gl_feature) return "needs " + why;
+    return unmet_condition(spec);
+}
+
 bool Params::applies(const std::string& name) const { return inactive_reason(name).empty(); }
+
+void Params::note_missing_feature(const std::string& feature, const std::string& why) {
+    for (auto& [known, said] : missing_features_.why)
+        if (known == feature) {
+            said = why;
+            return;
+        }
+    missing_features_.why.emplace_back(feature, why);
+}
 
 void Params::check_applies(const std::vector<std::string>& names, const std::string& where) const {
     for (const auto& name : names) {
-        const std::string reason = inactive_reason(name);
+        const std::string reason = unmet_condition(specs_[index_of(name)]);  // a missing GL feature greys, never refuses
         if (!reason.empty())
             throw Error(where + name + "=" + text_at(index_of(name)) + " has no effect here: it " + reason);
     }

@@ -46,6 +46,13 @@ struct ParamSpec {
         std::vector<std::string> values;
     };
     std::vector<Condition> applies_when_all;
+    // The GL feature it acts through (its name in common/gl/gl_features.h): in a context without it (lab 05's local_size
+    // on OpenGL ES 3.0, where transform feedback takes no work groups) it is greyed with the reason, not refused, so a
+    // case that sets it grades alike everywhere.
+    std::string gl_feature;
+    // Why changing it may leave the picture as it was (it changes how, not what, or shows only under other values): said
+    // beside the control, so a student who moves it and sees nothing is told why, not left to guess.
+    std::string same_picture_why;
 
     std::string qualified_name() const { return scope.empty() ? name : scope + "." + name; }
 };
@@ -77,6 +84,10 @@ public:
     Param& animated();
     // Has an effect only while `param` is one of `values` ("field_file" only while field=file). Chainable: all hold.
     Param& applies_when(std::string param, std::vector<std::string> values);
+    // Has an effect only in a context with this GL feature (gsv::gl_feature::kCompute.name).
+    Param& acts_through(std::string gl_feature);
+    // Changing it may draw the same picture, and why ("the same slices from a 3D texture: the same picture, another cost").
+    Param& may_draw_the_same(std::string why);
 
 private:
     friend class Params;
@@ -203,6 +214,9 @@ public:
     // Throws gsv::Error for the first of `names` (parameters the user set) that has no effect under the current
     // values: "<where>field_file has no effect while field=rotation: it needs field=file".
     void check_applies(const std::vector<std::string>& names, const std::string& where) const;
+    // What the session's GL context lacks, said once it is made: a parameter that acts through it is greyed with `why`
+    // ("compute shaders and storage buffers, which OpenGL ES 3.1 has; this context is OpenGL ES 3.0").
+    void note_missing_feature(const std::string& feature, const std::string& why);
 
 private:
     template <class T>
@@ -218,6 +232,7 @@ private:
     Param<std::string> add_word(const std::string& name, ParamType type, const std::string& value, const std::string& help);
     std::size_t index_of(const std::string& name) const;  // throws listing the known parameters
     std::size_t find_index(const std::string& name) const;  // npos when none
+    std::string unmet_condition(const ParamSpec& spec) const;  // inactive_reason without the context's features
     std::size_t read_index(const std::string& name, ParamType type) const;  // index_of, type checked, noted as read
     void note_read(std::size_t index) const {
         if (read_log_.log) read_log_.log->push_back(index);
@@ -233,8 +248,17 @@ private:
         ReadLogSlot(const ReadLogSlot&) {}
         ReadLogSlot& operator=(const ReadLogSlot&) { return *this; }
     };
+    // The context's missing features belong to this object, as the read log does: assigning values (a lab's defaults, the
+    // last values that drew) keeps them.
+    struct MissingFeatures {
+        std::vector<std::pair<std::string, std::string>> why;  // feature name, what to say
+        MissingFeatures() = default;
+        MissingFeatures(const MissingFeatures&) = default;
+        MissingFeatures& operator=(const MissingFeatures&) { return *this; }
+    };
     std::vector<ParamSpec> specs_;
     std::vector<Value> values_;
+    MissingFeatures missing_features_;
     std::string scope_, owner_;  // while a ParamScope declares: where the declarations go
     mutable ReadLogSlot read_log_;
 };
@@ -363,6 +387,16 @@ Param<T>& Param<T>::animated() {
 template <class T>
 Param<T>& Param<T>::applies_when(std::string param, std::vector<std::string> values) {
     declaration().applies_when_all.push_back({std::move(param), std::move(values)});
+    return *this;
+}
+template <class T>
+Param<T>& Param<T>::may_draw_the_same(std::string why) {
+    declaration().same_picture_why = std::move(why);
+    return *this;
+}
+template <class T>
+Param<T>& Param<T>::acts_through(std::string gl_feature) {
+    declaration().gl_feature = std::move(gl_feature);
     return *this;
 }
 

@@ -156,7 +156,8 @@ private:
             if (selected) ImGui::PopStyleColor();
             if (!inactive.empty()) ImGui::EndDisabled();
             if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
-                const std::string tip = spec.help + (inactive.empty() ? "" : "\nno effect now: it " + inactive);
+                const std::string tip = spec.help + (spec.same_picture_why.empty() ? "" : "\nmay draw the same picture: " + spec.same_picture_why) +
+                                        (inactive.empty() ? "" : "\nno effect now: it " + inactive);
                 if (!tip.empty()) ImGui::SetTooltip("%s", tip.c_str());
             }
             if (ImGui::IsItemActivated()) state.selected = index;

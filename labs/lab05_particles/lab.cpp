@@ -55,7 +55,9 @@ public:
             .accuracy_knob({"0.4", "0.2", "0.1", "0.05", "0.025"});
         p.add_float("time", 2, 0, 20, "the simulated time shown: round(time / h) steps from the start").with_step(0.1).animated();
         p.add_int("particles", 1048576, 1, 16777216, "how many particles");
-        p.add_int("local_size", 128, 1, 1024, "invocations per work group").at_compile_time();
+        p.add_int("local_size", 128, 1, 1024, "invocations per work group")
+            .at_compile_time()
+            .acts_through(gsv::gl_feature::kCompute.name);  // transform feedback takes no work groups
         p.add_int("seed", 1, 0, 1000000, "where the particles start");
         p.add_float("gravity", 2, 0, 20, "the fountain's downward acceleration (field=gravity)").with_step(0.5).applies_when("field", {"gravity"});
         p.add_effect("color_by_speed", true, "colour each particle by its speed; off, the shader writes no colours");

@@ -46,7 +46,8 @@ public:
         p.param<float>("probe_radius").applies_when("probe", {"on"});
         p.param<std::string>("compositing").series();
         p.param<float>("samples_per_voxel").accuracy_knob({"0.25", "0.5", "1", "2", "4"});
-        p.add_bool("compare_shaders", false, "sweep: also time the uber-shader and the hand-written DVR");
+        p.add_bool("compare_shaders", false, "sweep: also time the uber-shader and the hand-written DVR")
+            .may_draw_the_same("it adds timings to a sweep; the picture is the chosen shader's");
         gsv::add_orbit_camera(p, 30, 25, framing_distance(), 0.1f);  // down to 0.1: inside the volume
     }
 

@@ -68,7 +68,10 @@ ProxySource::ProxySource() : LabProcessor("ProxySource") {
     add_output("geometry", gsv::PortType::Geometry);
     gsv::Params& p = params();
     clip_normal_ = p.add_vec3("clip_normal", {0.0f, 0.0f, 0.0f}, -1, 1, "a clipping plane's normal in texture space (0,0,0: none)");
-    clip_offset_ = p.add_float("clip_offset", 0, -1, 1, "keeps dot(n, t - centre) <= offset |n|").with_step(0.05).in_double();
+    clip_offset_ = p.add_float("clip_offset", 0, -1, 1, "keeps dot(n, t - centre) <= offset |n|")
+                       .with_step(0.05)
+                       .may_draw_the_same("with clip_normal 0,0,0 there is no plane to move")
+                       .in_double();
 }
 
 void ProxySource::process() {

@@ -41,9 +41,11 @@ public:
             .series();
         p.add_choice("storage", "array", {"array", "volume", "separate"},
                      "one 2D texture array, one 3D texture, or T separate 2D textures")
-            .at_compile_time();
+            .at_compile_time()
+            .may_draw_the_same("the same slices held another way: the same picture, at another cost");
         p.add_choice("time_wrap", "repeat", {"repeat", "clamp"}, "a periodic flow wraps; any other stops at the last slice")
-            .at_compile_time();
+            .at_compile_time()
+            .may_draw_the_same("the two differ only once the playhead is past the last slice");
         p.add_float("time", 3.3f, 0, 10, "the playhead over one period").with_step(0.1).animated();
         p.add_choice("playhead", "time", {"time", "slice"},
                      "the slice axis from the playhead's time, or a position on it set directly (slice)")

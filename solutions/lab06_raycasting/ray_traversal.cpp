@@ -20,7 +20,8 @@ RayTraversal::RayTraversal()
                                           "intensity as opacity, or the transfer function")),
       shading_(params().add_choice("shading", "phong", gsv::shading_names(raycast_modules()), "Phong needs a gradient")),
       shader_(params().add_choice("shader", "specialised", {"specialised", "uber", "handwritten"},
-                                  "only the chosen modules compiled; all of them chosen by uniforms; DVR written by hand")),
+                                  "only the chosen modules compiled; all of them chosen by uniforms; DVR written by hand")
+                  .may_draw_the_same("each draws the specialised shader's picture (the hand-written one DVR only), at its own cost")),
       transfer_function_name_(params().add_choice("transfer_function", "bands", kTransferFunctions, "the 1D transfer function")),
       rays_(params()),
       dvr_(params()),

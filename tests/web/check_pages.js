@@ -200,6 +200,7 @@ async function solutionPage(context, lab) {
   const { page, problems, state } = await openPage(context, args.base + '/lecturer/' + lab + '/index.html');
   check(!state.failed, lab + ' reference page starts' + (state.failed ? ': ' + state.failed : ''));
   check(!(await canvasPixels(page)).flat, lab + ' reference page draws a picture, not one flat colour');
+  if (args.editor) await everyControl(page, lab);
   let result = await selfCheck(page);
   fs.writeFileSync(path.join(out, lab + '-solution-table.txt'), result.table || result.error);
   await page.screenshot({ path: path.join(out, lab + '-reference-self-check.png'), fullPage: true });
@@ -211,6 +212,76 @@ async function solutionPage(context, lab) {
   for (const r of result.results) if (r.status !== 'passed' && r.status !== 'unsupported') check(false, lab + ' ' + r.name + ': ' + r.detail);
   check(problems.length === 0, lab + ' reference page: no console error' + (problems.length ? ': ' + problems.join('; ') : ''));
   await page.close();
+}
+
+// Every control of a lab's page either changes the picture or says why not: each in turn is set to another value (the
+// next choice, the other state, a quarter of its range away from either end), the page left to draw until it is at
+// rest, and the picture compared; a control greyed must carry its reason, and one whose change draws the same picture
+// must have said something on the status line. Each is then set back.
+async function everyControl(page, lab) {
+  const results = await page.evaluate(async () => {
+    const $ = (id) => document.getElementById(id);
+    const frame = () => new Promise((resolve) => requestAnimationFrame(resolve));
+    const atRest = async () => {
+      for (let i = 0; i < 2000 && (window.gsvPage.dirty || Module.drawAgain()); i++) await frame();
+      await frame();
+      await frame();
+    };
+    const picture = () => $('canvas').toDataURL();
+    const set = async (input, value) => {
+      if (input.type === 'checkbox') input.checked = value;
+      else input.value = value;
+      input.dispatchEvent(new Event(input.type === 'range' ? 'input' : 'change'));
+      await atRest();
+    };
+    const other = (input) => {
+      if (input.type === 'checkbox') return !input.checked;
+      if (input.tagName === 'SELECT') return input.options[(input.selectedIndex + 1) % input.options.length].value;
+      if (input.type === 'range') {
+        const min = Number(input.min), max = Number(input.max), v = Number(input.value);
+        const to = v > (min + max) / 2 ? min + 0.25 * (max - min) : min + 0.75 * (max - min);
+        return String(input.step === '1' ? Math.round(to) : to);
+      }
+      // A vec3 as "x,y,z": its components rotated (x,y,z -> y,z,x), or where they are all equal, 0.8 of each: either
+      // stays within a range that holds the value.
+      const xyz = input.value.split(',').map(Number);
+      if (xyz.length === 3 && xyz.every((x) => isFinite(x)))
+        return (xyz[0] === xyz[1] && xyz[1] === xyz[2] ? xyz.map((x) => (x ? 0.8 * x : 0.1)) : [xyz[1], xyz[2], xyz[0]]).join(',');
+      return null;  // a file by its path: there is no other file to offer it
+    };
+    await atRest();
+    const out = [];
+    for (const row of document.querySelectorAll('#controls .param')) {
+      const input = row.querySelector('input, select');
+      const why = row.querySelector('.why').textContent;
+      if (input.disabled) {
+        out.push({ name: input.name, greyed: true, why });
+        continue;
+      }
+      const was = input.type === 'checkbox' ? input.checked : input.value;
+      const to = other(input);
+      if (to === null) {
+        out.push({ name: input.name, skipped: 'a file path: ' + input.value });
+        continue;
+      }
+      const before = picture(), statusBefore = $('status').textContent;
+      await set(input, to);
+      const changed = picture() !== before;
+      const status = $('status').textContent;
+      out.push({ name: input.name, to: String(to), changed, said: status !== statusBefore ? status : '' });
+      await set(input, was);
+    }
+    return out;
+  });
+  const silent = results.filter((r) => (r.greyed && !r.why) || (!r.greyed && !r.skipped && !r.changed && !r.said));
+  const greyed = results.filter((r) => r.greyed).map((r) => r.name + ' (' + r.why + ')');
+  const said = results.filter((r) => !r.greyed && !r.changed && r.said).map((r) => r.name + '=' + r.to + ': ' + r.said);
+  check(silent.length === 0 && results.length > 0,
+        lab + ' every control changes the picture or says why not: ' + results.filter((r) => r.changed).length + ' of ' +
+        results.length + ' change it' + (greyed.length ? '; greyed: ' + greyed.join(', ') : '') +
+        (said.length ? '; said: ' + said.join('; ') : '') +
+        (silent.length ? '; SILENT: ' + silent.map((r) => r.name + (r.greyed ? ' (greyed, no reason)' : '=' + r.to)).join(', ') : ''));
+  return results;
 }
 
 // The page a student works in, at 1280x800: the sheet's TODO table above the editor (an id opens the file that holds

@@ -209,12 +209,17 @@
       row.append(label, input, value, note);
       const help = document.createElement('small');
       help.className = 'help';
-      help.textContent = p.help + (p.compile_time ? ' (compiled in)' : '') + (p.knob ? ' (the accuracy knob)' : '');
+      help.textContent = p.help + (p.compile_time ? ' (compiled in)' : '') + (p.knob ? ' (the accuracy knob)' : '') +
+          (p.same_picture ? '. May draw the same picture: ' + p.same_picture : '');
       row.append(help);
       form.append(row);
       controls.set(p.name, { spec: p, row, input, value, note });
       input.addEventListener(p.kind === 'float' || p.kind === 'int' ? 'input' : 'change', () => {
-        changed(Module.setParam(p.name, readInput(p, input)));
+        const value = readInput(p, input);
+        const error = Module.setParam(p.name, value);
+        changed(error);
+        // A change that may leave the picture as it was says why at once, so it is not taken for a change that failed.
+        if (!error && p.same_picture) say(p.name + '=' + value + ' may draw the same picture: ' + p.same_picture);
       });
     }
     refreshStates();
