@@ -6,6 +6,22 @@
 # not, so gzipped volumes are refused in the browser (support/volume/nifti_file.cpp says so in one line).
 include(${CMAKE_CURRENT_LIST_DIR}/labs.cmake)
 
+# What each lab's page reads beyond its own package (its folder, the shaders, its case file and golden images): the
+# folders of data/ that its code or its cases open (a fixed data_file, a file parameter's default, the public and
+# hidden cases' settings), each a package of its own in shared/ (below) that the browser fetches once and keeps for
+# every page that reads it. The page is told its list (data-packages in its HTML) and fetches only those
+# (web/page/lab.js). A folder read but not declared stops the page's lab at "cannot find data file"; the web test's
+# self-check draws every public case, so it would show.
+set(GSV_LAB_DATA_lab01 meshes)        # the teapot (model=teapot), read when the lab starts
+set(GSV_LAB_DATA_lab02 flows images)  # the photo (input=photo), read when the lab starts; field=file's .flow
+set(GSV_LAB_DATA_lab03 flows)         # field=file's vortex_street.flow
+set(GSV_LAB_DATA_lab04 terrain)       # terrain=jacksboro (the default) and topobathy
+set(GSV_LAB_DATA_lab05 "")            # its fields are formulas, or sampled into a texture by the lab
+set(GSV_LAB_DATA_lab06 volumes)       # volume=anatomical, and volume_file=volumes/marschner_lobb_thick_slices.nii
+set(GSV_LAB_DATA_lab07 "")            # its fields are polynomials made by the lab
+# What every page reads whatever its lab: the font of the self-check's comparison labels (compose_comparison).
+set(GSV_WEB_PAGE_PACKAGES font)
+
 # Header-only libraries from Debian's /usr/include, reached through links of their own: the whole of /usr/include
 # would put glibc's headers before Emscripten's libc.
 set(GSV_WEB_INCLUDE ${CMAKE_BINARY_DIR}/web-include)
@@ -65,7 +81,8 @@ if(NOT GSV_WEB_FONT)
 endif()
 
 # Each lab's page: <id>.js, <id>.wasm and <id>.data, the files the lab reads preloaded at the paths the native kit
-# has them (the lab's folder, shaders/, data/, its case file and golden images), under /kit, the kit's root there.
+# has them (the lab's folder, shaders/, its case file and golden images), under /kit, the kit's root there; what it
+# reads of data/ comes from the shared packages (below).
 # The site gets the student's copy (labs/, the starters: no answer is shipped); the reference solutions are built
 # beside it in build-web/lecturer/, the lecturer's site (every page says it is never to be published to students),
 # which the tests use too.
@@ -123,7 +140,7 @@ function(gsv_add_web_lab id dir)
     target_link_libraries(${target} PRIVATE gsv_support ${GSV_WEB_PAGE_LIBRARIES})
     target_compile_definitions(${target} PRIVATE GSV_LAB_DIR="${src}" GSV_LAB_VARIANT="${variant}")
     set(preload)
-    # data/ and the font are the shared package's (below), not each lab's.
+    # data/ and the font are the shared packages' (below), not each lab's.
     foreach(path ${src} shaders grader/cases/${id}.json grader/golden/${id})
       # SHELL: keeps each option with its value (CMake removes repeated options otherwise).
       list(APPEND preload "SHELL:--preload-file ${PROJECT_SOURCE_DIR}/${path}@/kit/${path}")
@@ -139,27 +156,58 @@ foreach(lab IN LISTS GSV_LAB_LIST)
   gsv_add_web_lab(${lab_pair})
 endforeach()
 
-# What every lab shares, data/ (flows, meshes, terrain, volumes, a photo: 2.9 MiB) and the panel's font, is one package
-# at shared/, which every page loads before its lab (web/page/lab.js): fetched once and kept by the browser's cache
-# across the labs' pages, not again inside each lab's own package (its folder, the shaders, its cases and goldens).
+# The packages the pages share, in shared/: one per folder of data/ (flows, meshes, terrain, volumes, images) and one
+# for the font, so that a page fetches only what its lab reads (GSV_LAB_DATA_<id>, above) and the browser's cache keeps
+# each for every later page that reads it, not again inside each lab's own package. data/README.md is in none: the
+# labs never open it. Each package is a .data file and the .js that fetches it and puts its files in the lab's file
+# system, at the paths the native kit has them.
 find_file(GSV_FILE_PACKAGER file_packager.py PATHS /usr/share/emscripten/tools ${EMSCRIPTEN_ROOT_PATH}/tools
           NO_DEFAULT_PATH NO_CMAKE_FIND_ROOT_PATH)
 if(NOT GSV_FILE_PACKAGER)
-  message(FATAL_ERROR "the web pages' shared data package needs Emscripten's tools/file_packager.py (apt-get install emscripten)")
+  message(FATAL_ERROR "the web pages' shared data packages need Emscripten's tools/file_packager.py (apt-get install emscripten)")
 endif()
 find_package(Python3 REQUIRED COMPONENTS Interpreter)
-file(GLOB_RECURSE shared_data CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/data/*)
-set(GSV_WEB_SHARED ${GSV_WEB_SITE}/shared/shared-data.data ${GSV_WEB_SITE}/shared/shared-data.js)
-add_custom_command(OUTPUT ${GSV_WEB_SHARED}
-  COMMAND ${CMAKE_COMMAND} -E make_directory ${GSV_WEB_SITE}/shared
-  COMMAND ${Python3_EXECUTABLE} ${GSV_FILE_PACKAGER} shared-data.data --preload ${PROJECT_SOURCE_DIR}/data@/kit/data
-          ${GSV_WEB_FONT}@${GSV_WEB_FONT} --js-output=shared-data.js
-  DEPENDS ${shared_data} ${GSV_WEB_FONT}
-  WORKING_DIRECTORY ${GSV_WEB_SITE}/shared
-  COMMENT "the labs' shared data package into ${GSV_WEB_SITE}/shared")
-file(MAKE_DIRECTORY ${GSV_WEB_SITE}/shared)
-add_custom_target(web_shared_data ALL DEPENDS ${GSV_WEB_SHARED}
-  COMMAND ${CMAKE_COMMAND} -E copy_directory ${GSV_WEB_SITE}/shared ${GSV_WEB_LECTURER}/shared)
+set(GSV_WEB_SHARED ${GSV_WEB_SITE}/shared)
+file(MAKE_DIRECTORY ${GSV_WEB_SHARED})
+set(GSV_WEB_PACKAGES)
+set(GSV_WEB_PACKAGE_FILES)
+# name: the package (shared/<name>.data and shared/<name>.js); preload: what it holds, as file_packager's
+# SOURCE@PATH; inputs: the files it is made from.
+function(gsv_add_web_package name preload inputs)
+  set(outputs ${GSV_WEB_SHARED}/${name}.data ${GSV_WEB_SHARED}/${name}.js)
+  add_custom_command(OUTPUT ${outputs}
+    COMMAND ${Python3_EXECUTABLE} ${GSV_FILE_PACKAGER} ${name}.data --preload ${preload} --js-output=${name}.js
+    DEPENDS ${inputs}
+    WORKING_DIRECTORY ${GSV_WEB_SHARED}
+    COMMENT "the pages' shared package ${name} into ${GSV_WEB_SHARED}")
+  set(GSV_WEB_PACKAGES ${GSV_WEB_PACKAGES} ${name} PARENT_SCOPE)
+  set(GSV_WEB_PACKAGE_FILES ${GSV_WEB_PACKAGE_FILES} ${outputs} PARENT_SCOPE)
+endfunction()
+file(GLOB data_entries LIST_DIRECTORIES true CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/data/*)
+foreach(entry ${data_entries})
+  if(IS_DIRECTORY ${entry})
+    get_filename_component(folder ${entry} NAME)
+    file(GLOB_RECURSE folder_files CONFIGURE_DEPENDS ${entry}/*)
+    gsv_add_web_package(${folder} ${entry}@/kit/data/${folder} "${folder_files}")
+  endif()
+endforeach()
+gsv_add_web_package(font ${GSV_WEB_FONT}@${GSV_WEB_FONT} ${GSV_WEB_FONT})
+# Each lab's list: declared, and of packages there are (a misspelt folder would be a page that never starts).
+foreach(lab IN LISTS GSV_LAB_LIST)
+  string(REPLACE ":" ";" lab_pair ${lab})
+  list(GET lab_pair 0 id)
+  if(NOT DEFINED GSV_LAB_DATA_${id})
+    message(FATAL_ERROR "${id} does not say which folders of data/ it reads: set GSV_LAB_DATA_${id} in cmake/web.cmake")
+  endif()
+  foreach(package ${GSV_LAB_DATA_${id}} ${GSV_WEB_PAGE_PACKAGES})
+    if(NOT package IN_LIST GSV_WEB_PACKAGES)
+      message(FATAL_ERROR "${id} reads the package '${package}', which is none of data/'s folders nor the font: "
+                          "${GSV_WEB_PACKAGES}")
+    endif()
+  endforeach()
+endforeach()
+add_custom_target(web_shared_data ALL DEPENDS ${GSV_WEB_PACKAGE_FILES}
+  COMMAND ${CMAKE_COMMAND} -E copy_directory ${GSV_WEB_SHARED} ${GSV_WEB_LECTURER}/shared)
 
 # The site: an index (each lab with a picture, its first case's golden image, and its title), a page per lab, the
 # pages' JavaScript and CSS (web/page/), and the editor and zip code from Debian and npm, copied as they come.
@@ -191,6 +239,8 @@ foreach(lab IN LISTS GSV_LAB_LIST)
   file(STRINGS ${PROJECT_SOURCE_DIR}/labs/${dir}/README.md title LIMIT_COUNT 1)
   string(REGEX REPLACE "^# *" "" GSV_LAB_TITLE "${title}")
   set(GSV_LAB_ID ${id})
+  set(packages ${GSV_LAB_DATA_${id}} ${GSV_WEB_PAGE_PACKAGES})
+  list(JOIN packages " " GSV_LAB_PACKAGES)
   string(SUBSTRING ${id} 3 2 number)
   file(GLOB deck RELATIVE ${PROJECT_SOURCE_DIR}/slides ${PROJECT_SOURCE_DIR}/slides/${number}-*.md)
   string(REGEX REPLACE "\\.md$" "" GSV_LAB_DECK "${deck}")

@@ -1,7 +1,7 @@
 #!/usr/bin/env node
-// The browser edition's speed (scripts/kit bench): per lab, the page's weight (its .js, .wasm and .data, and the labs'
-// shared data package), the time from navigation to the first frame of the page a student opens (the starter's), and
-// the reference solution's frame time in the page against the native binary's on the same machine and rasterizer
+// The browser edition's speed (scripts/kit bench): per lab, the page's weight (its .js, .wasm and .data, and the shared
+// data packages it reads: its folders of data/ and the font), the time from navigation to the first frame of the page
+// a student opens (the starter's), and the reference solution's frame time in the page against the native binary's on the same machine and rasterizer
 // (llvmpipe: through ANGLE in the page, through EGL natively), the lab's first case at its case size, in interleaved
 // rounds: the ratio's median and its lowest and highest round. Both do the same work a frame: render mode's frames
 // (lab 05 runs its steps from the start in each), into the float target where there is one. The page's frames are
@@ -32,12 +32,15 @@ function nativeMs(lab, caseName, size) {
 (async () => {
   const browser = await chromium.launch({ executablePath: '/usr/bin/chromium', headless: true,
     args: ['--no-sandbox', '--use-gl=angle', '--use-angle=gl', '--ignore-gpu-blocklist'] });
-  const shared = fs.statSync(path.join(buildWeb, 'site', 'shared', 'shared-data.data')).size;
-  console.log('the labs\' shared data package: ' + kib(shared) + ' KiB, fetched once for every page');
-  console.log('lab    weight KiB (js+wasm+data)  starter first frame ms  page ms/frame  native ms/frame  page/native (lowest, highest round)');
+  // Each shared package is fetched once, by the first page that reads it (the page's data-packages, cmake/web.cmake).
+  const packageKib = (name) => kib(fs.statSync(path.join(buildWeb, 'site', 'shared', name + '.data')).size);
+  console.log('lab    weight KiB (js+wasm+data)  starter first frame ms  page ms/frame  native ms/frame  ' +
+              'page/native (lowest, highest round)  shared packages KiB');
   for (const lab of labs) {
     const dir = path.join(buildWeb, 'site', lab);
     const weight = ['js', 'wasm', 'data'].map((e) => fs.statSync(path.join(dir, lab + '.' + e)).size);
+    const html = fs.readFileSync(path.join(dir, 'index.html'), 'utf8');
+    const packages = ((html.match(/data-packages="([^"]*)"/) || [])[1] || '').split(' ').filter((n) => n);
     const cases = JSON.parse(fs.readFileSync(path.join(kit, 'grader/cases', lab + '.json'), 'utf8'));
     const caseName = cases.cases[0].name, size = cases.size;
     // The first frame a student sees: the starter's page, in a fresh context (nothing cached).
@@ -66,7 +69,8 @@ function nativeMs(lab, caseName, size) {
     console.log(lab.padEnd(6) + ' ' + (kib(weight[0]) + '+' + kib(weight[1]) + '+' + kib(weight[2])).padEnd(26) +
                 String(Math.round(first)).padStart(22) + median(pageTimes).toFixed(1).padStart(15) +
                 median(nativeTimes).toFixed(1).padStart(17) + '   ' + median(ratios).toFixed(2) + ' (' +
-                Math.min(...ratios).toFixed(2) + ', ' + Math.max(...ratios).toFixed(2) + ')');
+                Math.min(...ratios).toFixed(2) + ', ' + Math.max(...ratios).toFixed(2) + ')   ' +
+                (packages.map((n) => n + ' ' + packageKib(n)).join(', ') || 'none'));
   }
   await browser.close();
 })();

@@ -31,8 +31,8 @@ class Handler(http.server.SimpleHTTPRequestHandler):
         if not accepts or os.path.isdir(path) or os.path.splitext(path)[1] not in COMPRESSED or not os.path.isfile(path):
             return super().send_head()
         stat = os.stat(path)
-        # A validator, so a browser keeps what it fetched (the labs' shared data package, fetched by every page) and
-        # asks again only whether it changed: a rebuilt site is seen at once, an unchanged file costs a 304.
+        # A validator, so a browser keeps what it fetched (the shared data packages, each fetched by every page that reads
+        # it) and asks again only whether it changed: a rebuilt site is seen at once, an unchanged file costs a 304.
         etag = '"%x-%x"' % (stat.st_mtime_ns, stat.st_size)
         since = self.headers.get("If-Modified-Since")
         try:

@@ -2,7 +2,7 @@
 // The browser edition in headless Chromium (README, "Kinds of test": web), one browser for every page of a rasterizer:
 //  - every lab's page (the starter, as the site ships it) loads with no console error and draws its first case; a
 //    screenshot of it is kept; with --native its self-check gives 0 points (once: the not-done colour is the same on
-//    every rasterizer);
+//    every rasterizer); it fetches the shared data packages it declares and no other, each sent once across the labs;
 //  - every lab's reference page draws every public case, each within its golden image's tolerance, printing the
 //    largest channel difference and the share of pixels over the tolerance; its self-check gives full marks;
 //  - with --editor: one TODO undone (gsv-make-starters --undone, opened in the editor) loses exactly that TODO's cases;
@@ -140,25 +140,46 @@ async function starterPage(context, lab) {
 }
 
 // The page's weight as the browser fetched it from scripts/serve.py (gzip), against the files' own sizes: every file
-// the page and its lab loaded, the shared ones (the editor, the pages' scripts) counted too.
-// The labs' shared data package (data/ and the font) comes whole to the first page only; later pages keep it (a 304).
-let sharedFetched = false;
+// the page and its lab loaded, the shared ones (the editor, the pages' scripts) counted too, and what a first visit to
+// it sends (each file's compressed body, as kept where it came back unchanged).
+// The shared data packages (a folder of data/ each, and the font: cmake/web.cmake) are fetched by the labs that
+// declare them (the page's data-packages) and by no other; one that an earlier lab's page fetched is asked for again
+// only to be told it is unchanged (a 304), not sent again.
+const packagesFetched = new Set();
 async function pageWeight(page, lab) {
   const w = await page.evaluate(() => {
     const entries = [...performance.getEntriesByType('navigation'), ...performance.getEntriesByType('resource')];
     const wasm = entries.find((e) => /\.wasm$/.test(e.name));
-    const shared = entries.find((e) => /shared-data\.data$/.test(e.name));
-    return { files: entries.length, sent: entries.reduce((s, e) => s + e.transferSize, 0),
+    const packages = entries.filter((e) => /\/shared\/[^/]+\.data$/.test(e.name)).map((e) => ({
+      name: e.name.replace(/^.*\/shared\/|\.data$/g, ''), sent: e.transferSize, size: e.decodedBodySize,
+      compressed: e.encodedBodySize }));
+    return { declared: (document.body.dataset.packages || '').split(' ').filter((n) => n), packages,
+             files: entries.length, sent: entries.reduce((s, e) => s + e.transferSize, 0),
              size: entries.reduce((s, e) => s + e.decodedBodySize, 0),
-             wasmSent: wasm ? wasm.encodedBodySize : 0, wasmSize: wasm ? wasm.decodedBodySize : 0,
-             sharedSent: shared ? shared.transferSize : -1, sharedSize: shared ? shared.decodedBodySize : 0 };
+             firstVisit: entries.reduce((s, e) => s + e.encodedBodySize, 0),
+             wasmSent: wasm ? wasm.encodedBodySize : 0, wasmSize: wasm ? wasm.decodedBodySize : 0 };
   });
   const mib = (n) => (n / 1048576).toFixed(2) + ' MiB';
-  const sharedOk = w.sharedSize > 0 && (sharedFetched ? w.sharedSent < 16384 : w.sharedSent > 0);
-  check(w.wasmSize > 0 && w.wasmSent < w.wasmSize && sharedOk, lab + ' page weight: ' + mib(w.size) + ' in ' + w.files + ' files, ' +
-        mib(w.sent) + ' sent compressed (its WebAssembly ' + mib(w.wasmSize) + ', ' + mib(w.wasmSent) + ' sent; the shared data ' +
-        mib(w.sharedSize) + ', ' + (w.sharedSent < 16384 ? 'kept from an earlier page' : mib(w.sharedSent) + ' sent') + ')');
-  sharedFetched = true;
+  check(w.wasmSize > 0 && w.wasmSent < w.wasmSize, lab + ' page weight: ' + mib(w.size) + ' in ' + w.files + ' files, ' +
+        mib(w.sent) + ' sent compressed (a first visit ' + mib(w.firstVisit) + '; its WebAssembly ' + mib(w.wasmSize) + ', ' +
+        mib(w.wasmSent) + ' sent)');
+  const loaded = w.packages.map((p) => p.name);
+  const undeclared = loaded.filter((n) => !w.declared.includes(n));
+  const missing = w.declared.filter((n) => !loaded.includes(n));
+  check(undeclared.length === 0 && missing.length === 0 && loaded.length === new Set(loaded).size,
+        lab + ' loads the data packages it declares (' + (w.declared.join(', ') || 'none') + ')' +
+        (undeclared.length ? ', and ' + undeclared.join(', ') + ', which it does not' : '') +
+        (missing.length ? '; not ' + missing.join(', ') : '') + (loaded.length > new Set(loaded).size ? '; one twice' : ''));
+  for (const p of w.packages) {
+    // A 304 sends its headers only (the entry's responseStatus is the kept response's 200 either way).
+    const revalidated = p.sent > 0 && p.sent < Math.min(16384, p.compressed);
+    const earlier = packagesFetched.has(p.name);
+    check(p.size > 0 && (earlier ? revalidated : !revalidated && p.sent > 0),
+          lab + ' data package ' + p.name + ': ' + mib(p.size) + ' (' + mib(p.compressed) + ' compressed), ' +
+          (revalidated ? 'kept from an earlier page (a 304: ' + p.sent + ' bytes)' : mib(p.sent) + ' sent') +
+          (earlier ? (revalidated ? '' : ': an earlier page fetched it already') : (revalidated ? ': no earlier page fetched it' : '')));
+    packagesFetched.add(p.name);
+  }
 }
 
 // Cases past WebGL 2's ES 3.0 (lab 05's compute shaders) are named under the self-check with the points they hold, and
@@ -588,6 +609,18 @@ async function faults(context, browser) {
   const glLine = await status(noGl);
   check(/no WebGL 2/.test(glLine), 'no WebGL 2 says: ' + glLine);
   await noGl.close();
+  // A shared package missing from the site (its data, then its loader): the page names the package and the file.
+  for (const file of ['meshes.data', 'meshes.js']) {
+    const missing = await context.newPage();
+    await missing.route('**/site/shared/' + file, (route) => route.fulfill({ status: 404, body: 'Not Found' }));
+    await missing.goto(args.base + '/site/lab01/index.html');
+    await missing.waitForFunction(() => window.gsvPage && (window.gsvPage.frames > 0 || window.gsvPage.failed), null, { timeout: 60000 })
+      .catch(() => {});
+    const missingLine = await status(missing);
+    check(/data package meshes/.test(missingLine) && missingLine.includes('/site/shared/' + file),
+          'without shared/' + file + ' lab01 says: ' + missingLine);
+    await missing.close();
+  }
   // A missing extension a lab needs: the ES refusal's words.
   // Lab 02 starts, and its frame is refused with the ES refusal's line (the page's status; no frame is drawn).
   const noLinear = await context.newPage();

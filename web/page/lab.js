@@ -46,6 +46,11 @@
     proto.getExtension = function (e) { return e === name ? null : get.call(this, e); };
   }
 
+  // The packages the lab reads besides its own (cmake/web.cmake: the folders of data/ it opens, and the font), each at
+  // ../shared/ where every page that reads it finds it, so the browser fetches it once across the labs' pages.
+  const packages = (document.body.dataset.packages || '').split(' ').filter((name) => name);
+  const sharedFiles = new Set(packages.map((name) => name + '.data'));
+
   window.Module = {
     canvas: $('canvas'),
     noInitialRun: true,
@@ -64,19 +69,38 @@
       }
     },
     onRuntimeInitialized: () => start(),
-    // data/ and the font come in the labs' shared package (cmake/web.cmake), one folder up, cached across the labs.
-    locateFile: (file, prefix) => (file === 'shared-data.data' ? '../shared/' + file : prefix + file),
+    locateFile: (file, prefix) => (sharedFiles.has(file) ? '../shared/' + file : prefix + file),
     onAbort: (what) => say('The lab stopped: ' + what + ' (reload the page; your edits are kept).', 'error'),
   };
-  // The shared package's loader first (it queues its fetch for the lab's start), then the lab.
-  const load = (src, next) => {
+  // Each package's loader starts its fetch and queues its files for the lab's start, so every one of them runs before
+  // the lab's own script, whose WebAssembly starts the lab once the files it waits for are in.
+  const load = (src, what, next) => {
     const script = document.createElement('script');
     script.src = src;
     script.onload = next;
-    script.onerror = () => say('Could not load ' + script.src + ': is the page served from its built folder?', 'error');
+    script.onerror = () => say('Could not load ' + what + ' (' + script.src + '): is the page served from its built folder?',
+                               'error');
     document.body.appendChild(script);
   };
-  load('../shared/shared-data.js', () => load(lab + '.js', null));
+  // A package's .data that does not come (not found, a network error) is thrown by Emscripten's loader from its
+  // request's callback, which the page cannot wrap; the lab would wait for it for ever. The message names the file.
+  window.addEventListener('error', (event) => {
+    const message = String(event.message || '');
+    const name = [...packages, lab].find((n) => new RegExp('(^|[/ ])' + n + '\\.data$').test(message));
+    if (!name || page.ready) return;
+    const file = new URL(Module.locateFile(name + '.data', ''), location.href).href;
+    const reason = /NetworkError/.test(message) ? 'a network error' : (message.match(/Error: (.+?) : /) || [])[1] || 'refused';
+    say(name === lab
+      ? 'Could not load the lab\'s own files, ' + file + ' (' + reason + '): is the page served from its built folder?'
+      : 'Could not load the data package ' + name + ', ' + file + ' (' + reason + '): ' + lab + ' cannot start without it; ' +
+        'is the site\'s shared/ folder complete?', 'error');
+  });
+  let loaders = packages.length;
+  const loadLab = () => load(lab + '.js', 'the lab', null);
+  if (!loaders) loadLab();
+  for (const name of packages) {
+    load('../shared/' + name + '.js', 'the loader of the data package ' + name, () => { if (--loaders === 0) loadLab(); });
+  }
 
   // The lab's case file: its "size", so the picture is the one its cases and golden images have, and its "page_case",
   // the case the page opens on where the address names none (lab 05's 65,536 particles: its default million take
