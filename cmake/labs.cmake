@@ -15,6 +15,43 @@ if(NOT DEFINED GSV_LAB_LIBRARY)
   set(GSV_LAB_LIBRARY gsv_support)  # the framework in common/ comes with it
 endif()
 
+# The lab's known C++ mistakes in one build, <id>_mistakes (tools/known_mistake_switch.cpp): the reference with each C++
+# TODO block switched at run time, so the grader's diagnosis renders each mistake's pictures with GSV_KNOWN_MISTAKE set
+# (grader/src/grade/mistake_pictures.cpp). Only where the instructor's lists are (tests/mutants/<id>.json, so not in the
+# student edition) and they hold C++ mistakes.
+function(gsv_add_lab_mistakes id dir)
+  set(list ${PROJECT_SOURCE_DIR}/tests/mutants/${id}.json)
+  if(NOT "solution" IN_LIST GSV_LAB_VARIANTS OR NOT EXISTS ${list} OR NOT EXISTS ${GSV_LABS_ROOT}/solutions/${dir})
+    return()
+  endif()
+  file(READ ${list} spec)
+  string(JSON count ERROR_VARIABLE none LENGTH "${spec}" cpp_mutants)
+  if(none OR count EQUAL 0)
+    return()
+  endif()
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${list})
+  file(GLOB solution_files CONFIGURE_DEPENDS ${GSV_LABS_ROOT}/solutions/${dir}/*)
+  set(out ${CMAKE_BINARY_DIR}/mistakes/${dir})
+  set(written ${out}/known_mistake_switch.cpp)
+  foreach(file IN LISTS solution_files)
+    get_filename_component(name ${file} NAME)
+    list(APPEND written ${out}/${name})
+  endforeach()
+  add_custom_command(OUTPUT ${written}
+    COMMAND gsv-make-starters --root ${PROJECT_SOURCE_DIR} --mistakes ${id} --to ${out}
+    DEPENDS gsv-make-starters ${solution_files} ${list}
+    COMMENT "${id}'s known C++ mistakes switched into ${out}")
+  set(sources ${written})
+  list(FILTER sources INCLUDE REGEX "\\.cpp$")
+  add_executable(${id}_mistakes ${sources})
+  target_link_libraries(${id}_mistakes PRIVATE ${GSV_LAB_LIBRARY})
+  target_compile_definitions(${id}_mistakes PRIVATE GSV_LAB_DIR="solutions/${dir}" GSV_LAB_VARIANT="solution")
+  set_target_properties(${id}_mistakes PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bin)
+  if(COMMAND gsv_warnings)
+    gsv_warnings(${id}_mistakes)
+  endif()
+endfunction()
+
 function(gsv_add_lab id dir)
   foreach(variant IN LISTS GSV_LAB_VARIANTS)
     if(variant STREQUAL "starter")
@@ -54,6 +91,7 @@ function(gsv_add_lab id dir)
       target_compile_definitions(${target} PRIVATE GSV_HAVE_REFERENCE=1)
     endif()
   endforeach()
+  gsv_add_lab_mistakes(${id} ${dir})
   set(GSV_LABS ${GSV_LABS} ${id} CACHE INTERNAL "")
   set(GSV_LAB_DIR_${id} ${dir} CACHE INTERNAL "")
 endfunction()

@@ -109,61 +109,22 @@ private:
     TempDir dir_;
 };
 
-// A TODO's block of C++ (//@solution ... //@starter ... //@end) becomes a choice made at run time, so that one
-// build holds the solution, the TODO left undone and each classic bug: $GSV_TEST_MUTANT picks (the grader passes
-// GSV_ variables on to student processes).
-inline std::string switch_cpp_blocks(const std::string& text, const std::string& file, const Json& cpp_mutants) {
-    std::istringstream in(text);
-    std::string out = "bool gsv_test_mutant_is(const char* name);\n", line, todo, solution, starter;
-    enum { Both, Solution, Starter } state = Both;
-    while (std::getline(in, line)) {
-        const auto marker = line.find_first_not_of(" \t");
-        const std::string t = marker == std::string::npos ? "" : line.substr(marker);
-        if (t.rfind("//@solution", 0) == 0) {
-            todo = t.substr(12);
-            solution.clear();
-            starter.clear();
-            state = Solution;
-        } else if (t == "//@starter") {
-            state = Starter;
-        } else if (t == "//@end") {
-            out += "if (gsv_test_mutant_is(\"" + todo + " left undone\")) {\n" + starter + "}";
-            for (const Json& m : cpp_mutants.as_array()) {
-                if (m.string_at("file") != file || m.string_at("todo") != todo) continue;
-                std::string bugged = solution;
-                const auto at = bugged.find(m.string_at("find"));
-                if (at == std::string::npos) FAIL("cpp mutant '" << m.string_at("name") << "': its find is not in " << todo << "'s block");
-                bugged.replace(at, m.string_at("find").size(), m.string_at("replace"));
-                out += " else if (gsv_test_mutant_is(\"" + m.string_at("name") + "\")) {\n" + bugged + "}";
-            }
-            out += " else {\n" + solution + "}\n";
-            state = Both;
-        } else if (state == Solution) {
-            solution += line + "\n";
-        } else if (state == Starter) {
-            starter += line.substr(line.find("//") + 2) + "\n";
-        } else {
-            out += line + "\n";
-        }
-    }
-    return out;
-}
-
 // A submission at `submission` whose labs/<lab_dir> is the reference with every C++ TODO block switched at run time
-// (switch_cpp_blocks), for the grader to build once: the build graded as it is is the solution, and with
-// GSV_TEST_MUTANT set, each C++ mutant.
+// (gsv::switch_cpp_blocks, tools/starter.h), for the grader to build once: the build graded as it is is the solution,
+// and with GSV_KNOWN_MISTAKE set (the grader passes GSV_ variables on to student processes), each C++ mutant.
 inline void write_switched_cpp_submission(const std::filesystem::path& submission, const std::string& lab_dir, const Json& cpp_mutants) {
+    std::vector<CppMistake> mistakes;
+    for (const Json& m : cpp_mutants.as_array())
+        mistakes.push_back({m.string_at("name"), m.string_at("todo"), m.string_at("file"), m.string_at("find"), m.string_at("replace")});
     const auto folder = submission / "labs" / lab_dir;
     std::filesystem::create_directories(folder.parent_path());
     std::filesystem::copy(source_root() / "solutions" / lab_dir, folder, std::filesystem::copy_options::recursive);
     for (const auto& e : std::filesystem::directory_iterator(folder))
         if (is_cpp_file(e.path().filename().string())) {
-            const std::string switched = switch_cpp_blocks(read_text(e.path()), e.path().filename().string(), cpp_mutants);
+            const std::string switched = switch_cpp_blocks(read_text(e.path()), e.path().filename().string(), mistakes);
             std::ofstream(e.path(), std::ios::binary) << switched;
         }
-    std::ofstream(folder / "mutant_switch.cpp")
-        << "#include <cstdlib>\n#include <cstring>\nbool gsv_test_mutant_is(const char* name) {\n"
-           "    const char* chosen = std::getenv(\"GSV_TEST_MUTANT\");\n    return chosen && std::strcmp(chosen, name) == 0;\n}\n";
+    std::ofstream(folder / "known_mistake_switch.cpp") << known_mistake_switch_source();
 }
 
 inline std::map<std::string, CaseResult> by_name(const GradeReport& report, const std::string& kind = "image") {

@@ -13,6 +13,7 @@
 #include <memory>
 
 using namespace gsv;
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -257,18 +258,51 @@ TEST_CASE("every C++ TODO: left undone or with a classic bug it loses points, li
         }
         for (const bool self_check : {true, false})
             for (const auto& [todo, name] : mutants) {
-                setenv("GSV_TEST_MUTANT", name.c_str(), 1);
+                setenv(kKnownMistakeVariable, name.c_str(), 1);
                 const Outcome o = grade_todo(options, todo, self_check, cache, lab + " C++ mutant '" + name + "'");
-                unsetenv("GSV_TEST_MUTANT");
+                unsetenv(kKnownMistakeVariable);
                 INFO(lab << " (" << (self_check ? "self-check" : "live") << ") C++ mutant '" << name << "' of " << todo << ":\n" << o.details);
                 CHECK(o.lost);
+                // Named where students see it, the self-check, from the pictures the kit ships (its _mistakes build made
+                // them): the mistake first, or its TODO not started.
+                if (!self_check) continue;
+                const std::string first = o.first_named.empty() ? "nothing" : o.first_named.front();
+                INFO("named first: " << first);
+                // Left undone here is not "not started": the switched source is not the starter's (checked below).
+                if (name != todo + " left undone")
+                    CHECK(std::find(o.first_named.begin(), o.first_named.end(), name) != o.first_named.end());
             }
+        // The C++ TODO as a student leaves it before starting (its starter code, in the kit's starter build) and every
+        // other TODO done: "not started" for that TODO, and no known mistake named in its place.
+        for (const auto& todo : cpp_todos) {
+            test::TempDir undone;
+            const fs::path root = undone.path("kit");
+            fs::create_directories(root / "labs");
+            fs::create_directory_symlink(test::source_root() / "shaders", root / "shaders");
+            fs::create_directory_symlink(test::source_root() / "data", root / "data");
+            fs::copy(test::source_root() / "solutions" / lab_dir, root / "labs" / lab_dir, fs::copy_options::recursive);
+            for (const auto& e : fs::directory_iterator(root / "labs" / lab_dir)) {
+                const std::string text = make_starter(test::read_text(e.path()), e.path().filename().string(), todo).text;
+                std::ofstream(e.path(), std::ios::binary | std::ios::trunc) << text;
+            }
+            fs::create_directories(undone.path("bin"));
+            fs::copy_file(test::bin_dir() / lab, undone.path("bin") / lab);  // its one C++ TODO is the starter's
+            GradeOptions left = test::instructor_options(lab, undone.path("out"));
+            left.student_bin_dir = undone.path("bin");
+            left.student_root = root;
+            const Outcome o = grade_todo(left, todo, true, cache, lab + " " + todo + " not started");
+            INFO(lab << ": " << todo << " not started, named first: " << (o.first_named.empty() ? "nothing" : o.first_named.front())
+                     << "\n" << o.details);
+            CHECK(o.lost);
+            CHECK(std::find(o.not_started.begin(), o.not_started.end(), todo) != o.not_started.end());
+            CHECK(o.first_named.empty());
+        }
         // Served equals alone (issue 39): a lab that keeps state in a `static` from one case to the next is graded on
         // every case as one process per case grades it, each of its public cases in the lab's order, live and in the
         // self-check; the served rows that passed only alone say so, and there must be some (else the variant proves
         // nothing).
         for (const Json& v : cpp_stateful.as_array()) {
-            setenv("GSV_TEST_MUTANT", v.string_at("name").c_str(), 1);
+            setenv(kKnownMistakeVariable, v.string_at("name").c_str(), 1);
             for (const bool self_check : {true, false}) {
                 GradeOptions served = options;
                 served.self_check = self_check;
@@ -286,7 +320,7 @@ TEST_CASE("every C++ TODO: left undone or with a classic bug it loses points, li
                 CHECK(per_lab.score() == per_lab.max_score());
                 CHECK(per_case.score() == per_case.max_score());
             }
-            unsetenv("GSV_TEST_MUTANT");
+            unsetenv(kKnownMistakeVariable);
         }
     }
 }

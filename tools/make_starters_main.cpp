@@ -24,6 +24,9 @@ constexpr const char* kUsage =
     "               (what the tests hand a lab to see that exactly that TODO's cases fail)\n"
     "  --done T1,T2 --to DIR    the reference's lab folder with every TODO but these left as the starter has it\n"
     "               (a student part way through: what a case that declares these as its needs must pass with)\n"
+    "  --mistakes LAB --to DIR  the reference's lab folder with each C++ TODO block switched at run time between the\n"
+    "               solution, the starter's and each known C++ mistake of tests/mutants/LAB.json (GSV_KNOWN_MISTAKE\n"
+    "               names one): the sources of the lab's _mistakes build, whose pictures diagnose C++ mistakes\n"
     "  --version    the kit's version\n";
 
 namespace fs = std::filesystem;
@@ -76,13 +79,14 @@ int write_only_done(const fs::path& root, const std::string& list, const fs::pat
 int main(int argc, char** argv) {
     bool write = false;
     const char* root = GSV_SOURCE_ROOT;
-    std::string undone, done, to;
+    std::string undone, done, mistakes, to;
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--write") == 0) write = true;
         else if (std::strcmp(argv[i], "--check") == 0) write = false;
         else if (std::strcmp(argv[i], "--root") == 0 && i + 1 < argc) root = argv[++i];
         else if (std::strcmp(argv[i], "--undone") == 0 && i + 1 < argc) undone = argv[++i];
         else if (std::strcmp(argv[i], "--done") == 0 && i + 1 < argc) done = argv[++i];
+        else if (std::strcmp(argv[i], "--mistakes") == 0 && i + 1 < argc) mistakes = argv[++i];
         else if (std::strcmp(argv[i], "--to") == 0 && i + 1 < argc) to = argv[++i];
         else if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0) {
             std::printf("%s", kUsage);
@@ -95,11 +99,18 @@ int main(int argc, char** argv) {
             return 2;
         }
     }
-    if ((undone.empty() && done.empty()) != to.empty() || (!undone.empty() && !done.empty())) {
-        std::fprintf(stderr, "gsv-make-starters: --undone TODO or --done T1,T2, and --to DIR, go together (see --help)\n");
+    if ((undone.empty() && done.empty() && mistakes.empty()) != to.empty() ||
+        (!undone.empty() + !done.empty() + !mistakes.empty()) > 1) {
+        std::fprintf(stderr, "gsv-make-starters: one of --undone TODO, --done T1,T2 or --mistakes LAB, and --to DIR, go together (see --help)\n");
         return 2;
     }
     try {
+        if (!mistakes.empty()) {
+            const int written = gsv::write_switched_lab(root, mistakes, to);
+            std::printf("%s: its C++ TODOs switched between the solution, the starter's and its known C++ mistakes, in %s (%d files)\n",
+                        mistakes.c_str(), to.c_str(), written);
+            return 0;
+        }
         if (!undone.empty()) return write_one_undone(root, undone, to);
         if (!done.empty()) return write_only_done(root, done, to);
         int stale = 0;

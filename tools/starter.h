@@ -28,6 +28,29 @@ StarterText make_starter(const std::string& solution_text, const std::string& fi
 // The reference with every TODO but those in `done` left as the starter has it: a student part way through the lab.
 StarterText make_partial_starter(const std::string& solution_text, const std::string& file_name, const std::set<std::string>& done);
 
+// A known mistake in C++ (tests/mutants/<lab>.json, "cpp_mutants"): `find` replaced in its TODO's solution block.
+struct CppMistake {
+    std::string name, todo, file, find, replace;
+};
+
+// The environment variable that picks, in a build of switch_cpp_blocks' sources, the mistake its C++ makes: a
+// CppMistake's name, or "<TODO> left undone"; unset or anything else, the solution.
+inline constexpr const char* kKnownMistakeVariable = "GSV_KNOWN_MISTAKE";
+
+// A solution file with each TODO's C++ block made a choice at run time (the solution, the starter's, and each of
+// `mistakes` in that block), so one build holds them all; they call known_mistake_is(), which
+// known_mistake_switch_source() defines. Throws gsv::Error naming a mistake whose find is not in its block.
+std::string switch_cpp_blocks(const std::string& solution_text, const std::string& file, const std::vector<CppMistake>& mistakes);
+std::string known_mistake_switch_source();
+
+// The lab's C++ mistakes in tests/mutants/<lab>.json (its "cpp_mutants", and with `stateful` its "cpp_stateful"
+// variants); none where the kit has no such file (the student edition).
+std::vector<CppMistake> cpp_mistakes(const std::filesystem::path& kit_root, const std::string& lab, bool stateful = false);
+
+// solutions/<lab_dir> with every C++ TODO block switched (switch_cpp_blocks), into `to`, with the switch's own source
+// (known_mistake_switch.cpp): what a lab's "_mistakes" build compiles (cmake/labs.cmake). Returns the files written.
+int write_switched_lab(const std::filesystem::path& kit_root, const std::string& lab, const std::filesystem::path& to);
+
 struct StarterFileResult {
     std::filesystem::path solution, starter;
     bool up_to_date = false;

@@ -223,15 +223,16 @@ bool holds_starter(const fs::path& student_folder, const std::string& todo, cons
         for (std::string line; std::getline(in, line);)
             if (!trimmed(line).empty()) student.push_back(trimmed(line));
         // Right after each comment that names the TODO (and the comment lines with it): a block's lines and the line
-        // after it, in a row.
+        // after it, in a row. The block may open with comment lines of its own (lab 05's "Until then, zeros"), so it
+        // may start on any line of that comment, not only after it.
         for (std::size_t i = 0; i < student.size(); ++i) {
             if (student[i].find(marker) == std::string::npos) continue;
-            std::size_t at = i + 1;
-            while (at < student.size() && student[at].rfind("//", 0) == 0) ++at;
+            std::size_t last = i + 1;
+            while (last < student.size() && student[last].rfind("//", 0) == 0) ++last;
             for (auto block : list) {
                 block.erase(std::remove(block.begin(), block.end(), std::string()), block.end());
-                if (block.empty() || at + block.size() > student.size()) continue;
-                if (std::equal(block.begin(), block.end(), student.begin() + static_cast<long>(at))) return true;
+                for (std::size_t at = i + 1; at <= last && !block.empty() && at + block.size() <= student.size(); ++at)
+                    if (std::equal(block.begin(), block.end(), student.begin() + static_cast<long>(at))) return true;
             }
         }
     }

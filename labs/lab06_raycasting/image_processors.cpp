@@ -8,7 +8,9 @@ namespace lab06 {
 GeometryRenderer::GeometryRenderer() : LabProcessor("GeometryRenderer") {
     add_input("geometry", gsv::PortType::Geometry);
     add_output("image", gsv::PortType::Image);
-    geometry_color_ = params().add_vec3("geometry_color", {0.95f, 0.55f, 0.15f}, 0, 1, "the opaque geometry's colour");
+    geometry_color_ = params()
+                          .add_vec3("geometry_color", {0.95f, 0.55f, 0.15f}, 0, 1, "the opaque geometry's colour")
+                          .may_draw_the_same("only a network with geometry in it draws it (the default network has none)");
 }
 
 void GeometryRenderer::process() {

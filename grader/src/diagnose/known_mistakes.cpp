@@ -22,13 +22,20 @@ KnownMistakes known_mistakes(const fs::path& kit_root, const std::string& lab) {
     if (!fs::is_regular_file(file, ec)) return known;
     const Json spec = read_mutant_spec(kit_root, lab);
     known.lab_dir = spec.string_at("lab_dir");
-    for (const Json& m : spec.array_at("mutants").as_array()) {
-        const std::string name = m.string_or("name", "");
-        if (name.empty()) throw Error(file.string() + ": a mistake without a \"name\"");
-        if (is_cpp_file(m.string_or("file", ""))) continue;
-        const std::string says = m.string_or("says", "");
-        if (says.empty()) throw Error(file.string() + ": mistake '" + name + "' has no \"says\" (what it tells a student who made it)");
-        known.mistakes.push_back({name, m.string_at("todo"), says, m.string_or("sheet", "TODO table"), m, false, {}, {}});
+    for (const char* list : {"mutants", "cpp_mutants"}) {
+        const Json* entries = spec.find(list);
+        if (!entries) continue;
+        for (const Json& m : entries->as_array()) {
+            const std::string name = m.string_or("name", "");
+            if (name.empty()) throw Error(file.string() + ": a mistake without a \"name\"");
+            const bool cpp = is_cpp_file(m.string_or("file", ""));
+            if (cpp != (std::string(list) == "cpp_mutants"))
+                throw Error(file.string() + ": mistake '" + name + "' edits " + m.string_or("file", "no file") + ": a C++ mistake belongs in "
+                            "\"cpp_mutants\", a shader's in \"mutants\"");
+            const std::string says = m.string_or("says", "");
+            if (says.empty()) throw Error(file.string() + ": mistake '" + name + "' has no \"says\" (what it tells a student who made it)");
+            known.mistakes.push_back({name, m.string_at("todo"), says, m.string_or("sheet", "TODO table"), m, false, {}, {}, cpp, cpp ? name : ""});
+        }
     }
     // Each TODO of the solution whose blocks are all in shaders, left as the starter has it.
     std::map<std::string, std::vector<std::string>> files_of;
@@ -46,9 +53,10 @@ KnownMistakes known_mistakes(const fs::path& kit_root, const std::string& lab) {
         }
     }
     for (const auto& [todo, files] : files_of) {
-        if (in_cpp.count(todo)) continue;
+        const bool cpp = in_cpp.count(todo) > 0;
         known.mistakes.push_back({todo + " not started", todo, "not started: its part is still the starter's", "TODO table",
-                                  Json::object(), true, files, starter_blocks(kit_root, known.lab_dir, todo, files)});
+                                  Json::object(), true, files, starter_blocks(kit_root, known.lab_dir, todo, files), cpp,
+                                  cpp ? todo + " left undone" : ""});
     }
     return known;
 }

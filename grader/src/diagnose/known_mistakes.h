@@ -23,12 +23,16 @@ struct KnownMistake {
     bool not_started = false;
     std::vector<std::string> files;
     StarterBlocks starter;  // not started: the starter's code in `files`
+    // Made in C++: its pictures come from the lab's _mistakes build (cmake/labs.cmake) with GSV_KNOWN_MISTAKE set to
+    // `switch_name` (its name, or "<TODO> left undone"), not from edited shaders.
+    bool cpp = false;
+    std::string switch_name = {};
 };
 
 struct KnownMistakes {
     std::string lab, lab_dir;
-    // The GLSL mistakes: their pictures need no build (the solution's binary runs the edited shaders). C++ mistakes
-    // ("cpp_mutants") would need a build of a submission each, and are left out. Then each GLSL TODO not started.
+    // The GLSL mistakes (their pictures need no build: the solution's binary runs the edited shaders), then the C++ ones
+    // ("cpp_mutants": one build holds them all, the lab's _mistakes), then each TODO not started.
     std::vector<KnownMistake> mistakes;
 };
 

@@ -251,6 +251,17 @@ LabDiagnosis name_mistakes_and_pairs(const std::string& lab, const std::vector<s
     return d;
 }
 
+void prefer_confirmed_not_started(std::vector<std::set<std::string>>& explains, const KnownMistakes& known,
+                                  const std::filesystem::path& student_folder) {
+    for (std::size_t m = 0; m < known.mistakes.size() && m < explains.size(); ++m) {
+        const KnownMistake& k = known.mistakes[m];
+        if (!k.not_started || explains[m].empty() || !holds_starter(student_folder, k.todo, k.starter)) continue;
+        for (std::size_t other = 0; other < explains.size(); ++other)
+            if (other != m && !(known.mistakes[other].not_started && known.mistakes[other].todo == k.todo))
+                for (const std::string& c : explains[m]) explains[other].erase(c);
+    }
+}
+
 std::map<std::string, std::string> tell_not_started(LabDiagnosis& d, const KnownMistakes& known, const std::filesystem::path& student_folder) {
     const auto mistake = [&](const std::string& name) -> const KnownMistake& {
         return *std::find_if(known.mistakes.begin(), known.mistakes.end(), [&](const KnownMistake& k) { return k.name == name; });

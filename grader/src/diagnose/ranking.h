@@ -61,6 +61,12 @@ LabDiagnosis name_mistakes_and_pairs(const std::string& lab, const std::vector<s
                                      const std::vector<KnownMistake>& mistakes, const std::vector<std::set<std::string>>& explains,
                                      const std::vector<std::set<std::string>>& fails, const TogetherCheck& check = {});
 
+// Before ranking: a TODO whose starter code the student's source still holds (`student_folder`) and whose not-started
+// pictures explain some failures takes those failures from every other mistake that explains them too: what the source
+// shows is known, a look-alike picture is a guess (lab 05's fountain with L05-T1 not started looks like an L05-T3 slip).
+void prefer_confirmed_not_started(std::vector<std::set<std::string>>& explains, const KnownMistakes& known,
+                                  const std::filesystem::path& student_folder);
+
 // A TODO not started (its pictures the starter's) is said so, not named as a mistake. Where a mistake or another TODO's
 // starter draws the same on these cases (a pass-through starter leaves out what the mistake leaves out), the student's
 // source (`student_folder`, the lab's files) decides: the TODO whose starter code is still there is not started, else

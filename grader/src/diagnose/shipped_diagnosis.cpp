@@ -10,7 +10,7 @@ ShippedDiagnosis diagnose_shipped(const KnownMistakePictures& shipped, const std
     known.lab = shipped.lab;
     known.lab_dir = shipped.lab_dir;
     for (const ShippedMistake& m : shipped.mistakes)
-        known.mistakes.push_back({m.id, m.todo, m.says, m.sheet, Json::object(), m.not_started, {}, m.starter});
+        known.mistakes.push_back({m.id, m.todo, m.says, m.sheet, Json::object(), m.not_started, {}, m.starter, false, ""});
     std::vector<std::string> failing;
     std::vector<std::set<std::string>> explains(known.mistakes.size()), fails(known.mistakes.size());
     for (std::size_t m = 0; m < known.mistakes.size(); ++m) fails[m] = shipped.mistakes[m].fails;
@@ -24,6 +24,7 @@ ShippedDiagnosis diagnose_shipped(const KnownMistakePictures& shipped, const std
             explains[m].insert(f.case_name);
         }
     }
+    prefer_confirmed_not_started(explains, known, student_folder);
     ShippedDiagnosis out;
     // Two mistakes drawn together: the student's picture against the two shipped ones composed (each block's change
     // added, or the colour's ratios multiplied), and against each alone.

@@ -186,6 +186,12 @@ void diagnose_lab(GradingSession& s, MistakePictures& pictures, const LabCases& 
         } else if (!fs::exists(s.bin / (lab.lab + "_solution"))) {
             add_note(s.report, "the known mistakes' pictures need " + lab.lab + "_solution, which this build lacks");
             known.mistakes.clear();
+        } else if (!fs::exists(s.bin / (lab.lab + "_mistakes"))) {
+            const auto before = known.mistakes.size();
+            known.mistakes.erase(std::remove_if(known.mistakes.begin(), known.mistakes.end(), [](const KnownMistake& m) { return m.cpp; }),
+                                 known.mistakes.end());
+            if (known.mistakes.size() != before)
+                add_note(s.report, "the known C++ mistakes' pictures need " + lab.lab + "_mistakes, which this build lacks: they are not named");
         }
         // Rounds: first each mistake alone; then, for the failures left, each other mistake made together with those
         // named so far (two mistakes in two TODOs draw a case both touch as neither draws it alone).
@@ -226,6 +232,7 @@ void diagnose_lab(GradingSession& s, MistakePictures& pictures, const LabCases& 
                     if (explained.count(left[i]->c->name)) pictures_of.emplace(std::make_pair(m, left[i]->c->name), *runs[i].image);
                 explains[m] = explained;
             }
+            prefer_confirmed_not_started(explains, known, student_folder(s, known.lab_dir));
             const LabDiagnosis ranked = rank_mistakes(lab.lab, left_names, known.mistakes, explains);
             // A mistake is named only where it explains at least half the failures still left when its turn comes: one
             // that matches a case or two of many is a coincidence of pictures (lab 03's wrong slices look alike

@@ -33,9 +33,21 @@ fs::path MistakePictures::kit_of(const KnownMistakes& known, const std::vector<s
         dir_ = pattern;  // mkdtemp makes it 0700
     }
     const fs::path folder = dir_ / std::to_string(folders_++);  // a new one even after one that could not be made
+    // A C++ mistake is made by the lab's _mistakes build, told which by its environment (cmake/labs.cmake); at most one
+    // (a lab has one C++ TODO).
+    std::string in_cpp;
+    for (const std::size_t m : made)
+        if (known.mistakes[m].cpp) {
+            if (!in_cpp.empty()) throw Error("two C++ mistakes cannot be made together: '" + in_cpp + "' and '" + known.mistakes[m].name + "'");
+            in_cpp = known.mistakes[m].switch_name;
+        }
+    const std::string binary = known.lab + (in_cpp.empty() ? "_solution" : "_mistakes");
+    if (!fs::exists(s_.bin / binary)) throw Error("the known C++ mistakes' pictures need " + binary + ", which this build lacks");
+    switches_[folder] = in_cpp;
     make_edited_kit(folder, s_.kit, s_.bin, known.lab, known.lab_dir, [&](const fs::path& lab_folder) {
         for (const std::size_t m : made) {
             const KnownMistake& mistake = known.mistakes[m];
+            if (mistake.cpp && !mistake.not_started) continue;  // the build makes it
             if (!mistake.not_started) {
                 apply_mutant_edits(lab_folder, mistake.edit, s_.kit);
                 continue;
@@ -45,7 +57,7 @@ fs::path MistakePictures::kit_of(const KnownMistakes& known, const std::vector<s
                 std::ofstream(lab_folder / file, std::ios::binary | std::ios::trunc) << text;
             }
         }
-    });
+    }, binary);
     return kits_.emplace(id, folder).first->second;
 }
 
@@ -107,6 +119,8 @@ std::vector<LabRun> MistakePictures::render(const LabCases& lab, const KnownMist
             if (!served) {
                 const fs::path folder = kit_of(known, made);
                 runner = LabRunner{folder / "bin", folder / "kit", false, s_.options.profile};
+                if (!switches_.at(folder).empty())
+                    runner.extra_environment.push_back(std::string(kKnownMistakeVariable) + "=" + switches_.at(folder));
                 served = std::make_unique<ServedLab>(lab.lab);
                 runner.served = served.get();
             }

@@ -37,6 +37,7 @@ private:
     GradingSession& s_;
     std::filesystem::path dir_;                   // the run's edited kits, one folder each
     std::map<std::string, std::filesystem::path> kits_;  // lab + mistake name -> its folder
+    std::map<std::filesystem::path, std::string> switches_;  // a kit's folder -> the C++ mistake its build makes, or ""
     int folders_ = 0;
     int rendered_ = 0, looked_up_ = 0;
 };

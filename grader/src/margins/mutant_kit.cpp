@@ -61,7 +61,7 @@ bool is_cpp_file(const std::string& file) {
 }
 
 void make_edited_kit(const fs::path& dir, const fs::path& kit_root, const fs::path& bin_dir, const std::string& lab,
-                     const std::string& lab_dir, const std::function<void(const fs::path&)>& edit) {
+                     const std::string& lab_dir, const std::function<void(const fs::path&)>& edit, const std::string& binary) {
     const KitLayout kit{kit_root};
     const fs::path root = dir / "kit";
     fs::create_directories(root / "solutions");
@@ -71,7 +71,7 @@ void make_edited_kit(const fs::path& dir, const fs::path& kit_root, const fs::pa
     fs::copy(kit.solutions() / lab_dir, root / "solutions" / lab_dir, fs::copy_options::recursive);
     edit(root / "solutions" / lab_dir);
     fs::create_directories(dir / "bin");
-    fs::copy_file(bin_dir / (lab + "_solution"), dir / "bin" / lab);
+    fs::copy_file(bin_dir / (binary.empty() ? lab + "_solution" : binary), dir / "bin" / lab);
 }
 
 void make_edited_kit(const fs::path& dir, const fs::path& kit_root, const fs::path& bin_dir, const std::string& lab,

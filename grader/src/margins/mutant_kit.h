@@ -29,11 +29,11 @@ std::string read_text_file(const std::filesystem::path& file);
 bool is_cpp_file(const std::string& file);
 
 // In `dir` (created): kit/ with shaders/ and data/ linked to `kit_root`'s and solutions/<lab_dir> copied and
-// changed by `edit`, and bin/<lab>, a copy of `bin_dir`/<lab>_solution. Grade it with GradeOptions::student_bin_dir
-// = dir/bin and student_root = dir/kit.
+// changed by `edit`, and bin/<lab>, a copy of `bin_dir`/<binary> (default <lab>_solution; <lab>_mistakes for a C++
+// mistake). Grade it with GradeOptions::student_bin_dir = dir/bin and student_root = dir/kit.
 void make_edited_kit(const std::filesystem::path& dir, const std::filesystem::path& kit_root, const std::filesystem::path& bin_dir,
                      const std::string& lab, const std::string& lab_dir,
-                     const std::function<void(const std::filesystem::path&)>& edit);
+                     const std::function<void(const std::filesystem::path&)>& edit, const std::string& binary = "");
 // The same with one edit of the spec (a mutant, variant or fault); refuses a C++ edit, naming it.
 void make_edited_kit(const std::filesystem::path& dir, const std::filesystem::path& kit_root, const std::filesystem::path& bin_dir,
                      const std::string& lab, const std::string& lab_dir, const Json& edit);

@@ -97,7 +97,9 @@ CaseStatus classify(const ProcessResult& r, std::string& detail) {
 }
 
 std::vector<std::string> LabRunner::environment() const {
-    return root.empty() ? std::vector<std::string>{} : std::vector<std::string>{"GSV_ROOT=" + root.string()};
+    std::vector<std::string> out = extra_environment;
+    if (!root.empty()) out.push_back("GSV_ROOT=" + root.string());
+    return out;
 }
 
 LabRun LabRunner::render(const std::string& binary, const LabCases& lab, const GradeCase& c, const ProcessLimits& limits,

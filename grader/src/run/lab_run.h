@@ -48,6 +48,8 @@ struct LabRunner {
     // Where one is open: the lab binary that renders this runner's cases of it one after another, in one process
     // (lab_serve.h); renders of other binaries, and all where none is open, each start a process of their own.
     ServedLab* served = nullptr;
+    // Added to the lab's environment: GSV_KNOWN_MISTAKE=<name> for a known C++ mistake's pictures (mistake_pictures.cpp).
+    std::vector<std::string> extra_environment = {};
 
     // The case's image at the lab's size (one frame), and its arrays where the lab checks them; or with
     // `challenges` (one list of settings each), a timed run at the lab's timing size: one frame per challenge.
