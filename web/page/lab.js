@@ -127,6 +127,7 @@
   }
 
   function start() {
+    page.runtimeMs = performance.now();  // the WebAssembly and every package in (since navigation began)
     const root = '/kit';
     const cases = caseFile(root);
     const args = ['web', '--size', query.get('size') || cases.size || '512x512'];
@@ -158,6 +159,7 @@
     bindKeysAndMouse();
     watchContext(canvas);
     page.ready = true;
+    page.startedMs = performance.now();  // the lab started: its shaders built, its controls made
     say(description.title + ' (' + description.variant + ') on ' + description.gl);
     if (editor) editor.open(description, () => { page.dirty = true; });
     if (window.gsvSelfCheck) window.gsvSelfCheck.attach(description);
