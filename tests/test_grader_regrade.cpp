@@ -3,6 +3,8 @@
 // gives, and the class files say which were regraded. report.json reads back whole, which the merge rests on.
 #include "catch.hpp"
 #include "grader_fixture.h"
+
+#include <sstream>
 #include "test_support.h"
 
 #include "common/io/json.h"
@@ -123,6 +125,46 @@ TEST_CASE("gsv-grade --regrade-only changed: only the labs whose inputs changed 
     CHECK(grades(dir.path("grades/bo")) != bo_first);
     CHECK(test::read_text(dir.path("grades/class.csv")).find("\"bo\",yes,2,4,") != std::string::npos);
     CHECK(test::read_text(dir.path("grades/class.csv")).find(",\"\",\"lab02\"\n") != std::string::npos);
+
+    // The class's tables say what changed (issue 42): class.csv the last run's score beside this one's, its points per
+    // lab; class-cases.csv every row of every report.json; history.csv each row whose points moved, and why.
+    const std::string after = test::read_text(dir.path("grades/class.csv"));
+    INFO(after);
+    CHECK(after.rfind("submission,graded,score,max_score,previous_score,changed,lab01_points,lab01_max,lab02_points,lab02_max,"
+                      "seconds,problem,regraded\n", 0) == 0);
+    CHECK(after.find("\"bo\",yes,2,4,0,yes,0,2,2,2,") != std::string::npos);
+    CHECK(after.find("\"ada\",yes,4,4,4,no,2,2,2,2,") != std::string::npos);
+    const std::string cases = test::read_text(dir.path("grades/class-cases.csv"));
+    for (const char* name : {"ada", "bo"}) {
+        std::string expected;
+        const Json report = read_json_file(dir.path("grades") / name / "report.json");
+        for (const Json& r : report.array_at("results").as_array()) {
+            std::ostringstream points;
+            points << r.number_or("points", 0) << "," << r.number_or("max_points", 0);
+            expected = std::string(name) + "," + r.string_at("lab") + "," + r.string_or("todo", "") + "," + r.string_at("name") + "," +
+                       r.string_at("kind") + "," + r.string_at("status") + "," + points.str() + "\n";
+            INFO(cases);
+            CHECK(cases.find(expected) != std::string::npos);
+        }
+    }
+    const std::string history = test::read_text(dir.path("grades/history.csv"));
+    INFO(history);
+    CHECK(history.rfind("when,submission,lab,check,kind,old_points,new_points,max_points,why\n", 0) == 0);
+    // The first run added every row; the run that changed nothing added none; bo's lab 02 moved from 0.
+    std::size_t first_graded = 0, lab02_again = 0, other = 0;
+    std::istringstream lines(history);
+    std::string line;
+    std::getline(lines, line);
+    while (std::getline(lines, line)) {
+        if (line.find(",first graded") != std::string::npos) ++first_graded;
+        else if (line.find(",bo,lab02,") != std::string::npos && line.find(",0,") != std::string::npos &&
+                 line.find("lab02 graded again: its inputs changed") != std::string::npos) ++lab02_again;
+        else ++other;
+    }
+    CHECK(first_graded == read_json_file(dir.path("grades/ada/report.json")).array_at("results").size() +
+                              read_json_file(dir.path("grades/bo/report.json")).array_at("results").size());
+    CHECK(lab02_again >= 1);
+    CHECK(other == 0);
 
     // Another seed is another input of every lab: all of them graded again.
     const ProcessResult reseeded = gsv_grade(with(with(kRun, {"--submission", dir.path("class/bo").string(), "--out",

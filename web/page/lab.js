@@ -68,7 +68,11 @@
         note.hidden = false;
       }
     },
-    onRuntimeInitialized: () => start(),
+    // The page's other scripts (the editor, the self-check) come after this one: the lab starts once they have run.
+    onRuntimeInitialized: () => {
+      if (document.readyState === 'loading') document.addEventListener('DOMContentLoaded', () => start());
+      else start();
+    },
     locateFile: (file, prefix) => (sharedFiles.has(file) ? '../shared/' + file : prefix + file),
     onAbort: (what) => say('The lab stopped: ' + what + ' (reload the page; your edits are kept).', 'error'),
   };

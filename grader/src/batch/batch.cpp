@@ -164,16 +164,36 @@ std::vector<BatchEntry> grade_batch(const BatchOptions& options, void (*progress
     return entries;
 }
 
-std::string class_csv(const std::vector<BatchEntry>& entries) {
+std::string class_csv(const std::vector<BatchEntry>& entries, const ClassColumns& columns) {
     std::ostringstream out;
-    out << "submission,graded,score,max_score,seconds,problem,regraded\n";
+    out << "submission,graded,score,max_score,previous_score,changed";
+    for (const auto& lab : columns.labs) out << "," << lab << "_points," << lab << "_max";
+    out << ",seconds,problem,regraded\n";
     for (const auto& e : entries) {
         std::string problem = e.problem;
         std::replace(problem.begin(), problem.end(), '"', '\'');
         std::replace(problem.begin(), problem.end(), '\n', ' ');
         char line[128];
-        std::snprintf(line, sizeof line, ",%s,%g,%g,%.1f,", e.graded ? "yes" : "no", e.score, e.max_score, e.seconds);
-        out << '"' << e.name << '"' << line << '"' << problem << "\",\"" << (e.graded ? e.regraded : "") << "\"\n";
+        std::snprintf(line, sizeof line, ",%s,%g,%g,", e.graded ? "yes" : "no", e.score, e.max_score);
+        out << '"' << e.name << '"' << line;
+        const auto previous = columns.previous.find(e.name);
+        if (previous != columns.previous.end()) {
+            std::snprintf(line, sizeof line, "%g,%s", previous->second, previous->second != e.score ? "yes" : "no");
+            out << line;
+        } else {
+            out << ",";  // a first run, or new to the class: nothing to compare with
+        }
+        for (const auto& lab : columns.labs) {
+            const auto it = columns.lab_points.find({e.name, lab});
+            if (it == columns.lab_points.end()) {
+                out << ",,";
+                continue;
+            }
+            std::snprintf(line, sizeof line, ",%g,%g", it->second.first, it->second.second);
+            out << line;
+        }
+        std::snprintf(line, sizeof line, ",%.1f,", e.seconds);
+        out << line << '"' << problem << "\",\"" << (e.graded ? e.regraded : "") << "\"\n";
     }
     return out.str();
 }

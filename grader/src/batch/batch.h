@@ -4,6 +4,7 @@
 // grades every N-th name of the class (sorted), so N machines share a class and `gsv-grade merge` joins them.
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -55,7 +56,17 @@ inline constexpr int kKitFaultsToStop = 3;
 // The entries of this shard, in class order; `class_names`, when given, gets the whole class, sorted.
 std::vector<BatchEntry> grade_batch(const BatchOptions& options, void (*progress)(const BatchEntry&, int done, int total),
                                     std::vector<std::string>* class_names = nullptr);
-std::string class_csv(const std::vector<BatchEntry>& entries);
+// What class.csv adds to the entries: each submission's score in the batch's last run (its batch.json before this one;
+// none on a first run) and its points per lab (from class-cases.csv's rows).
+struct ClassColumns {
+    std::map<std::string, double> previous;
+    std::vector<std::string> labs;                                                  // in order
+    std::map<std::pair<std::string, std::string>, std::pair<double, double>> lab_points;  // (submission, lab) -> points, max
+};
+// class.csv: submission,graded,score,max_score,previous_score,changed,<lab>_points,<lab>_max...,seconds,problem,regraded.
+// seconds: how long this run took for the submission (a run that kept every lab from the last: its own few seconds);
+// regraded: what this run graded ("all", the labs whose inputs changed, or "none").
+std::string class_csv(const std::vector<BatchEntry>& entries, const ClassColumns& columns = {});
 std::string class_table(const std::vector<BatchEntry>& entries);
 
 }  // namespace gsv

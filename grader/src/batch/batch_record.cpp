@@ -1,4 +1,5 @@
 #include "grader/src/batch/batch_record.h"
+#include "grader/src/batch/class_cases.h"
 #include "grader/src/batch/class_report.h"
 
 #include "common/core/error.h"
@@ -127,7 +128,26 @@ BatchRecord read_batch_record(const fs::path& out_dir) {
 }
 
 void write_class_tables(const std::vector<BatchEntry>& entries, const fs::path& out_dir) {
-    for (const auto& [name, text] : {std::pair{"class.csv", class_csv(entries)}, std::pair{"class.txt", class_table(entries)}}) {
+    ClassColumns columns;
+    // The last run's scores, from its batch.json, before this run's replaces it.
+    if (fs::is_regular_file(out_dir / "batch.json")) {
+        try {
+            for (const BatchEntry& e : read_batch_record(out_dir).entries)
+                if (e.graded) columns.previous[e.name] = e.score;
+        } catch (const Error&) {
+            // A record that does not read back has no scores to compare with: the columns stay empty.
+        }
+    }
+    // Case by case, per TODO, and the history of changes (class_cases.h); per lab for class.csv.
+    write_class_cases(out_dir, entries);
+    for (const ClassCaseRow& r : read_class_cases_csv(out_dir / "class-cases.csv")) {
+        if (std::find(columns.labs.begin(), columns.labs.end(), r.lab) == columns.labs.end()) columns.labs.push_back(r.lab);
+        auto& sum = columns.lab_points[{r.submission, r.lab}];
+        sum.first += r.points;
+        sum.second += r.max_points;
+    }
+    std::sort(columns.labs.begin(), columns.labs.end());
+    for (const auto& [name, text] : {std::pair{"class.csv", class_csv(entries, columns)}, std::pair{"class.txt", class_table(entries)}}) {
         std::ofstream out(out_dir / name);
         out << text;
         if (!out) throw Error("cannot write '" + (out_dir / name).string() + "'");

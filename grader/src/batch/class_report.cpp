@@ -1,4 +1,5 @@
 #include "grader/src/batch/class_report.h"
+#include "grader/src/batch/csv_field.h"
 
 #include "common/core/error.h"
 #include "common/image/image.h"
@@ -22,13 +23,6 @@ namespace gsv {
 namespace {
 
 std::string html(std::string_view raw) { return escape_markup(raw, MarkupPlace::Text); }
-
-std::string csv_field(const std::string& text) {
-    if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
-    std::string quoted = "\"";
-    for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return quoted + "\"";
-}
 
 std::string joined(const std::vector<std::string>& items, const char* separator) {
     std::string text;
