@@ -147,6 +147,11 @@ TEST_CASE("gsv-grade --regrade-only changed: only the labs whose inputs changed 
             CHECK(cases.find(expected) != std::string::npos);
         }
     }
+    // batch.json holds the same rows.
+    const Json record = read_json_file(dir.path("grades/batch.json"));
+    std::size_t in_csv = 0;
+    for (const char c : cases) in_csv += c == '\n';
+    CHECK(record.array_at("cases").size() + 1 == in_csv);
     const std::string history = test::read_text(dir.path("grades/history.csv"));
     INFO(history);
     CHECK(history.rfind("when,submission,lab,check,kind,old_points,new_points,max_points,why\n", 0) == 0);

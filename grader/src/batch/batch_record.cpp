@@ -88,6 +88,22 @@ void write_batch_record(const BatchRecord& record, const fs::path& out_dir) {
         rows.push_back(row);
     }
     root["entries"] = rows;
+    // The class case by case, as class-cases.csv has it (write_class_tables wrote it first): for a script that reads
+    // JSON rather than CSV.
+    Json cases = Json::array();
+    for (const ClassCaseRow& r : read_class_cases_csv(out_dir / "class-cases.csv")) {
+        Json row = Json::object();
+        row["submission"] = r.submission;
+        row["lab"] = r.lab;
+        row["todo"] = r.todo;
+        row["check"] = r.check;
+        row["kind"] = r.kind;
+        row["status"] = r.status;
+        row["points"] = r.points;
+        row["max_points"] = r.max_points;
+        cases.push_back(row);
+    }
+    root["cases"] = cases;
     const fs::path file = out_dir / "batch.json";
     std::ofstream out(file);
     out << root.dump(2) << "\n";
