@@ -110,21 +110,11 @@ private:
 };
 
 // A submission at `submission` whose labs/<lab_dir> is the reference with every C++ TODO block switched at run time
-// (gsv::switch_cpp_blocks, tools/starter.h), for the grader to build once: the build graded as it is is the solution,
-// and with GSV_KNOWN_MISTAKE set (the grader passes GSV_ variables on to student processes), each C++ mutant.
-inline void write_switched_cpp_submission(const std::filesystem::path& submission, const std::string& lab_dir, const Json& cpp_mutants) {
-    std::vector<CppMistake> mistakes;
-    for (const Json& m : cpp_mutants.as_array())
-        mistakes.push_back({m.string_at("name"), m.string_at("todo"), m.string_at("file"), m.string_at("find"), m.string_at("replace")});
-    const auto folder = submission / "labs" / lab_dir;
-    std::filesystem::create_directories(folder.parent_path());
-    std::filesystem::copy(source_root() / "solutions" / lab_dir, folder, std::filesystem::copy_options::recursive);
-    for (const auto& e : std::filesystem::directory_iterator(folder))
-        if (is_cpp_file(e.path().filename().string())) {
-            const std::string switched = switch_cpp_blocks(read_text(e.path()), e.path().filename().string(), mistakes);
-            std::ofstream(e.path(), std::ios::binary) << switched;
-        }
-    std::ofstream(folder / "known_mistake_switch.cpp") << known_mistake_switch_source();
+// (gsv::write_switched_lab, tools/starter.h), for the grader to build once: the build graded as it is is the solution,
+// and with GSV_KNOWN_MISTAKE set (the grader passes GSV_ variables on to student processes), each of the lab's C++
+// mistakes and stateful variants.
+inline void write_switched_cpp_submission(const std::filesystem::path& submission, const std::string& lab, const std::string& lab_dir) {
+    write_switched_lab(source_root(), lab_dir, cpp_mistakes(source_root(), lab, true), submission / "labs" / lab_dir);
 }
 
 inline std::map<std::string, CaseResult> by_name(const GradeReport& report, const std::string& kind = "image") {

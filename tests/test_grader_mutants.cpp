@@ -233,10 +233,8 @@ TEST_CASE("every C++ TODO: left undone or with a classic bug it loses points, li
         const Json& cpp_mutants = spec.contains("cpp_mutants") ? spec.array_at("cpp_mutants") : none;
         const Json& cpp_stateful = spec.contains("cpp_stateful") ? spec.array_at("cpp_stateful") : none;
         // One submission: the reference with every C++ TODO block switched at run time (the stateful variants too).
-        Json switched = cpp_mutants;
-        for (const Json& v : cpp_stateful.as_array()) switched.push_back(v);
         test::TempDir dir;
-        test::write_switched_cpp_submission(dir.path("submission"), lab_dir, switched);
+        test::write_switched_cpp_submission(dir.path("submission"), lab, lab_dir);
         GradeOptions built = test::instructor_options(lab, dir.path("built"));
         built.submission = dir.path("submission");
         for (const auto& todo : cpp_todos) {

@@ -25,6 +25,13 @@ std::string quoted(const std::string& text) {
 
 }  // namespace
 
+bool is_cpp_file(const std::string& file) {
+    const auto ends = [&](const std::string& tail) {
+        return file.size() >= tail.size() && file.compare(file.size() - tail.size(), tail.size(), tail) == 0;
+    };
+    return ends(".cpp") || ends(".h");
+}
+
 std::string switch_cpp_blocks(const std::string& text, const std::string& file, const std::vector<CppMistake>& mistakes) {
     std::istringstream in(text);
     std::string out = "bool known_mistake_is(const char* name);\n", line, todo, solution, starter;
@@ -85,10 +92,9 @@ std::vector<CppMistake> cpp_mistakes(const fs::path& kit_root, const std::string
     return out;
 }
 
-int write_switched_lab(const fs::path& kit_root, const std::string& lab, const fs::path& to) {
-    const fs::path file = KitLayout{kit_root}.tests() / "mutants" / (lab + ".json");
-    const fs::path from = KitLayout{kit_root}.solutions() / read_json_file(file).string_at("lab_dir");
-    const std::vector<CppMistake> mistakes = cpp_mistakes(kit_root, lab);
+int write_switched_lab(const fs::path& kit_root, const std::string& lab_dir, const std::vector<CppMistake>& mistakes,
+                       const fs::path& to) {
+    const fs::path from = KitLayout{kit_root}.solutions() / lab_dir;
     fs::create_directories(to);
     int written = 0;
     const auto write = [&](const fs::path& path, const std::string& text) {
@@ -102,8 +108,7 @@ int write_switched_lab(const fs::path& kit_root, const std::string& lab, const f
         std::stringstream text;
         text << in.rdbuf();
         const std::string name = e.path().filename().string();
-        const bool cpp = name.size() > 4 && (name.substr(name.size() - 4) == ".cpp" || name.substr(name.size() - 2) == ".h");
-        write(to / name, cpp ? switch_cpp_blocks(text.str(), name, mistakes) : text.str());
+        write(to / name, is_cpp_file(name) ? switch_cpp_blocks(text.str(), name, mistakes) : text.str());
     }
     write(to / "known_mistake_switch.cpp", known_mistake_switch_source());
     return written;

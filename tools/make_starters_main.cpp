@@ -2,6 +2,7 @@
 // that the committed starters are what the solutions generate.
 #include "common/core/error.h"
 #include "common/core/version.h"
+#include "common/io/json.h"
 #include "tools/starter.h"
 
 #include <cstdio>
@@ -106,7 +107,8 @@ int main(int argc, char** argv) {
     }
     try {
         if (!mistakes.empty()) {
-            const int written = gsv::write_switched_lab(root, mistakes, to);
+            const std::string lab_dir = gsv::read_json_file(fs::path(root) / "tests" / "mutants" / (mistakes + ".json")).string_at("lab_dir");
+            const int written = gsv::write_switched_lab(root, lab_dir, gsv::cpp_mistakes(root, mistakes), to);
             std::printf("%s: its C++ TODOs switched between the solution, the starter's and its known C++ mistakes, in %s (%d files)\n",
                         mistakes.c_str(), to.c_str(), written);
             return 0;

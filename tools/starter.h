@@ -28,6 +28,9 @@ StarterText make_starter(const std::string& solution_text, const std::string& fi
 // The reference with every TODO but those in `done` left as the starter has it: a student part way through the lab.
 StarterText make_partial_starter(const std::string& solution_text, const std::string& file_name, const std::set<std::string>& done);
 
+// True for a C++ file (.cpp, .h): what a lab's build compiles, so an edit of it needs a build to be seen.
+bool is_cpp_file(const std::string& file);
+
 // A known mistake in C++ (tests/mutants/<lab>.json, "cpp_mutants"): `find` replaced in its TODO's solution block.
 struct CppMistake {
     std::string name, todo, file, find, replace;
@@ -47,9 +50,11 @@ std::string known_mistake_switch_source();
 // variants); none where the kit has no such file (the student edition).
 std::vector<CppMistake> cpp_mistakes(const std::filesystem::path& kit_root, const std::string& lab, bool stateful = false);
 
-// solutions/<lab_dir> with every C++ TODO block switched (switch_cpp_blocks), into `to`, with the switch's own source
-// (known_mistake_switch.cpp): what a lab's "_mistakes" build compiles (cmake/labs.cmake). Returns the files written.
-int write_switched_lab(const std::filesystem::path& kit_root, const std::string& lab, const std::filesystem::path& to);
+// solutions/<lab_dir> with every C++ TODO block switched between the solution, the starter's and `mistakes`
+// (switch_cpp_blocks), into `to`, with the switch's own source (known_mistake_switch.cpp): what a lab's "_mistakes"
+// build compiles (cmake/labs.cmake), and the tests' switched submissions. Returns the files written.
+int write_switched_lab(const std::filesystem::path& kit_root, const std::string& lab_dir, const std::vector<CppMistake>& mistakes,
+                       const std::filesystem::path& to);
 
 struct StarterFileResult {
     std::filesystem::path solution, starter;

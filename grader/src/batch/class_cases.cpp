@@ -151,7 +151,7 @@ std::string history_lines(const std::vector<ClassCaseRow>& before, const std::ve
     return out;
 }
 
-void write_class_cases(const fs::path& out_dir, const std::vector<BatchEntry>& entries) {
+std::vector<ClassCaseRow> write_class_cases(const fs::path& out_dir, const std::vector<BatchEntry>& entries) {
     const std::vector<ClassCaseRow> before = read_class_cases_csv(out_dir / "class-cases.csv");
     // A submission this run did not grade (nothing handed in this time, a fault) keeps no rows: the history says so.
     const std::vector<ClassCaseRow> now = class_case_rows(out_dir, entries);
@@ -169,6 +169,7 @@ void write_class_cases(const fs::path& out_dir, const std::vector<BatchEntry>& e
     char when[32];
     std::strftime(when, sizeof when, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&t));
     write("history.csv", history_lines(before, now, entries, when), true);
+    return now;
 }
 
 }  // namespace gsv

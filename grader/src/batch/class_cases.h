@@ -36,7 +36,7 @@ std::string history_lines(const std::vector<ClassCaseRow>& before, const std::ve
 inline constexpr const char* kHistoryHeader = "when,submission,lab,check,kind,old_points,new_points,max_points,why\n";
 
 // Writes class-cases.csv and class-todos.csv into out_dir and appends this run's changes to history.csv (made with
-// its header on the first run).
-void write_class_cases(const std::filesystem::path& out_dir, const std::vector<BatchEntry>& entries);
+// its header on the first run). Returns the rows written.
+std::vector<ClassCaseRow> write_class_cases(const std::filesystem::path& out_dir, const std::vector<BatchEntry>& entries);
 
 }  // namespace gsv

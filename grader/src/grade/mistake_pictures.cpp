@@ -23,7 +23,7 @@ MistakePictures::~MistakePictures() {
     if (!dir_.empty()) remove_folder(dir_);
 }
 
-fs::path MistakePictures::kit_of(const KnownMistakes& known, const std::vector<std::size_t>& made) {
+const MistakePictures::Kit& MistakePictures::kit_of(const KnownMistakes& known, const std::vector<std::size_t>& made) {
     std::string id = known.lab;
     for (const std::size_t m : made) id += "\n" + known.mistakes[m].name;
     if (const auto it = kits_.find(id); it != kits_.end()) return it->second;
@@ -43,7 +43,6 @@ fs::path MistakePictures::kit_of(const KnownMistakes& known, const std::vector<s
         }
     const std::string binary = known.lab + (in_cpp.empty() ? "_solution" : "_mistakes");
     if (!fs::exists(s_.bin / binary)) throw Error("the known C++ mistakes' pictures need " + binary + ", which this build lacks");
-    switches_[folder] = in_cpp;
     make_edited_kit(folder, s_.kit, s_.bin, known.lab, known.lab_dir, [&](const fs::path& lab_folder) {
         for (const std::size_t m : made) {
             const KnownMistake& mistake = known.mistakes[m];
@@ -58,7 +57,7 @@ fs::path MistakePictures::kit_of(const KnownMistakes& known, const std::vector<s
             }
         }
     }, binary);
-    return kits_.emplace(id, folder).first->second;
+    return kits_.emplace(id, Kit{folder, in_cpp}).first->second;
 }
 
 std::string MistakePictures::key(const LabCases& lab, const KnownMistakes& known, const std::vector<std::size_t>& made,
@@ -117,10 +116,10 @@ std::vector<LabRun> MistakePictures::render(const LabCases& lab, const KnownMist
     for (std::size_t i = 0; i < cases.size(); ++i) {
         if (!have[i]) {
             if (!served) {
-                const fs::path folder = kit_of(known, made);
-                runner = LabRunner{folder / "bin", folder / "kit", false, s_.options.profile};
-                if (!switches_.at(folder).empty())
-                    runner.extra_environment.push_back(std::string(kKnownMistakeVariable) + "=" + switches_.at(folder));
+                const Kit& kit = kit_of(known, made);
+                runner = LabRunner{kit.folder / "bin", kit.folder / "kit", false, s_.options.profile};
+                if (!kit.cpp_mistake.empty())
+                    runner.extra_environment.push_back(std::string(kKnownMistakeVariable) + "=" + kit.cpp_mistake);
                 served = std::make_unique<ServedLab>(lab.lab);
                 runner.served = served.get();
             }

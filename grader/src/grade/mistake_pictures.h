@@ -31,13 +31,17 @@ public:
     int looked_up() const { return looked_up_; }  // pictures asked for, rendered or kept
 
 private:
-    std::filesystem::path kit_of(const KnownMistakes& known, const std::vector<std::size_t>& made);
+    // An edited kit: its folder, and the C++ mistake its build makes ("" for none: the solution's binary).
+    struct Kit {
+        std::filesystem::path folder;
+        std::string cpp_mistake;
+    };
+    const Kit& kit_of(const KnownMistakes& known, const std::vector<std::size_t>& made);
     std::string key(const LabCases& lab, const KnownMistakes& known, const std::vector<std::size_t>& made, const GradeCase& c);
 
     GradingSession& s_;
     std::filesystem::path dir_;                   // the run's edited kits, one folder each
-    std::map<std::string, std::filesystem::path> kits_;  // lab + mistake name -> its folder
-    std::map<std::filesystem::path, std::string> switches_;  // a kit's folder -> the C++ mistake its build makes, or ""
+    std::map<std::string, Kit> kits_;  // lab + mistake names -> its kit
     int folders_ = 0;
     int rendered_ = 0, looked_up_ = 0;
 };

@@ -53,13 +53,6 @@ void apply_mutant_edits(const fs::path& lab_folder, const Json& edit, const fs::
     std::ofstream(file, std::ios::binary | std::ios::trunc) << text;
 }
 
-bool is_cpp_file(const std::string& file) {
-    const auto ends = [&](const std::string& tail) {
-        return file.size() >= tail.size() && file.compare(file.size() - tail.size(), tail.size(), tail) == 0;
-    };
-    return ends(".cpp") || ends(".h");
-}
-
 void make_edited_kit(const fs::path& dir, const fs::path& kit_root, const fs::path& bin_dir, const std::string& lab,
                      const std::string& lab_dir, const std::function<void(const fs::path&)>& edit, const std::string& binary) {
     const KitLayout kit{kit_root};

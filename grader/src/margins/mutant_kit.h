@@ -5,6 +5,7 @@
 // <lab>_solution run as the student's <lab> (shader edits need no build). The mutation tests (tests/) and the margin
 // table (gsv-margins) grade them the same way.
 #include "common/io/json.h"
+#include "tools/starter.h"
 
 #include <filesystem>
 #include <functional>
@@ -25,8 +26,7 @@ void apply_mutant_edits(const std::filesystem::path& lab_folder, const Json& edi
 // A file of the kit (or of a copy of a lab) as text; throws gsv::Error naming it when it cannot be read.
 std::string read_text_file(const std::filesystem::path& file);
 
-// True for a C++ file, which the copied binary would not see: such an edit needs a submission the grader builds.
-bool is_cpp_file(const std::string& file);
+// is_cpp_file (tools/starter.h): a C++ edit, which the copied binary would not see, needs a build.
 
 // In `dir` (created): kit/ with shaders/ and data/ linked to `kit_root`'s and solutions/<lab_dir> copied and
 // changed by `edit`, and bin/<lab>, a copy of `bin_dir`/<binary> (default <lab>_solution; <lab>_mistakes for a C++
