@@ -74,12 +74,15 @@ std::string inflate_file(const std::filesystem::path& path) {
         }
         if (n > 0) continue;
         int code = Z_OK;
-        const char* message = gzerror(gz, &code);
+        // gzerror's text lives in the gzFile's state: copied before gzclose frees it (reading it after was
+        // a use after free that put stray bytes, newlines too, into the message).
+        const char* error_text = gzerror(gz, &code);
+        const std::string message = error_text ? error_text : "";
         const bool ended = gzeof(gz) != 0;
         gzclose(gz);
         if (n < 0 || (code != Z_OK && code != Z_STREAM_END) || !ended)
-            fail(path, std::string("is gzip-compressed but its data is corrupt or cut short (zlib: ") +
-                           (message && *message ? message : "unexpected end of file") + ")");
+            fail(path, "is gzip-compressed but its data is corrupt or cut short (zlib: " +
+                           (message.empty() ? std::string("unexpected end of file") : message) + ")");
         return out;
     }
 #endif
