@@ -68,6 +68,8 @@ const char* const kGradeUsage =
     "       gsv-grade shard K/N ROSTER       the names of shard K of N of a roster file, one a line (what to fetch)\n"
     "       gsv-grade mistake-skeleton OUT ID  an entry for tests/mutants/<lab>.json from cluster ID (lab01/gooch/1) of\n"
     "                    a batch's class report (OUT/class-report.html): failures no known mistake explains, alike\n"
+    "       gsv-grade export --lms canvas|moodle|blackboard --roster FILE OUT  the batch's grades as the file the LMS\n"
+    "                    imports, per lab and in total, matched to its students by a roster (gsv-grade export --help)\n"
     "exit status: 0 graded (whatever the score), 1 under --fail-under, 2 usage or internal error, 3 the kit's fault\n"
     "                    (its set-up, not a student's files: nothing graded; one line says what to fix)\n";
 

@@ -19,6 +19,7 @@
 #include "grader/src/grade/grade_exit.h"
 #include "grader/src/run/kit_fault.h"
 #include "grader/src/grade/regrade.h"
+#include "grader/src/lms/export_command.h"
 #include "grader/src/report/report.h"
 #include "grader/src/report/report_format.h"
 
@@ -239,6 +240,8 @@ int grade_one(const gsv::GradeCommand& command, const char* argv0) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // The grades out to an LMS: its own options and help (grader/src/lms/export_command.h).
+    if (argc > 1 && std::string(argv[1]) == "export") return gsv::run_export_command({argv + 2, argv + argc});
     if (argc > 1 && (std::string(argv[1]) == "merge" || std::string(argv[1]) == "shard" || std::string(argv[1]) == "mistake-skeleton"))
         return run_subcommand(argc, argv);
     gsv::GradeCommand command;

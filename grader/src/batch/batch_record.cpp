@@ -143,6 +143,18 @@ BatchRecord read_batch_record(const fs::path& out_dir) {
     return record;
 }
 
+std::optional<std::vector<ClassCaseRow>> read_batch_cases(const fs::path& out_dir) {
+    read_batch_record(out_dir);  // a folder without a record, or another format, is refused in its words
+    const Json root = read_json_file(out_dir / "batch.json");
+    const Json* cases = root.find("cases");
+    if (!cases) return std::nullopt;
+    std::vector<ClassCaseRow> rows;
+    for (const Json& r : cases->as_array())
+        rows.push_back({r.string_at("submission"), r.string_at("lab"), r.string_at("todo"), r.string_at("check"), r.string_at("kind"),
+                        r.string_at("status"), r.number_at("points"), r.number_at("max_points")});
+    return rows;
+}
+
 void write_class_tables(const std::vector<BatchEntry>& entries, const fs::path& out_dir) {
     ClassColumns columns;
     // The last run's scores, from its batch.json, before this run's replaces it.

@@ -3,9 +3,11 @@
 // kit, the options and the class it was graded with, and its rows. `gsv-grade merge` joins shards by these
 // records and refuses ones that were not graded alike, so a merged class table is one grading, not a mixture.
 #include "grader/src/batch/batch.h"
+#include "grader/src/batch/class_cases.h"
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,6 +33,9 @@ std::vector<std::string> recorded_options(const std::vector<std::string>& pass_t
 void write_batch_record(const BatchRecord& record, const std::filesystem::path& out_dir);
 // Throws gsv::Error naming the folder when it holds no batch.json or one that is not a batch record.
 BatchRecord read_batch_record(const std::filesystem::path& out_dir);
+// The record's class case by case ("cases": class-cases.csv's rows when it was written); none where the record was
+// written before it kept them. Throws gsv::Error naming the file and the key of a malformed row.
+std::optional<std::vector<ClassCaseRow>> read_batch_cases(const std::filesystem::path& out_dir);
 
 // Writes <out>/class.csv and <out>/class.txt (the table gsv-grade prints) for these rows.
 void write_class_tables(const std::vector<BatchEntry>& entries, const std::filesystem::path& out_dir);

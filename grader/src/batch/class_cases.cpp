@@ -22,32 +22,6 @@ std::string number(double value) {
     return out.str();
 }
 
-// One CSV record's fields (RFC 4180: quoted fields, doubled quotes); the records here hold no line breaks.
-std::vector<std::string> csv_fields(const std::string& line) {
-    std::vector<std::string> fields(1);
-    bool quoted = false;
-    for (std::size_t i = 0; i < line.size(); ++i) {
-        const char c = line[i];
-        if (quoted) {
-            if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
-                fields.back() += '"';
-                ++i;
-            } else if (c == '"') {
-                quoted = false;
-            } else {
-                fields.back() += c;
-            }
-        } else if (c == '"') {
-            quoted = true;
-        } else if (c == ',') {
-            fields.emplace_back();
-        } else if (c != '\r') {
-            fields.back() += c;
-        }
-    }
-    return fields;
-}
-
 using RowKey = std::tuple<std::string, std::string, std::string, std::string>;  // submission, lab, check, kind
 RowKey key_of(const ClassCaseRow& r) { return {r.submission, r.lab, r.check, r.kind}; }
 
@@ -106,7 +80,7 @@ std::vector<ClassCaseRow> read_class_cases_csv(const fs::path& file) {
     std::getline(in, line);  // the header
     for (int number = 2; std::getline(in, line); ++number) {
         if (line.empty()) continue;
-        const std::vector<std::string> f = csv_fields(line);
+        const std::vector<std::string> f = csv_record(line);
         if (f.size() != 8) throw Error(file.string() + ":" + std::to_string(number) + ": " + std::to_string(f.size()) + " fields, expected 8");
         try {
             rows.push_back({f[0], f[1], f[2], f[3], f[4], f[5], std::stod(f[6]), std::stod(f[7])});
