@@ -11,6 +11,8 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace fs = std::filesystem;
 using namespace gsv;
@@ -219,4 +221,74 @@ TEST_CASE("grader: live references from the store grade case for case as rendere
     const GradeReport fresh_report = grade(fresh);
     CHECK(fresh_report.references.rfind("2 rendered, 0 from the store (", 0) == 0);
     same_grades(first, fresh_report);
+}
+
+TEST_CASE("reference store: a folder or an entry another user could change is never trusted", "[unit][references]") {
+    test::TempDir dir;
+    const fs::path folder = dir.path("private") / "refs";
+    // Made when missing, 0755 whatever the umask, and then no one else can write it or a folder above it.
+    CHECK(writable_by_others(folder) == "");
+    CHECK((fs::status(folder).permissions() & (fs::perms::group_write | fs::perms::others_write)) == fs::perms::none);
+    // A folder on the path that others may write (without the sticky bit /tmp has) is named.
+    fs::permissions(dir.path("private"), fs::perms::others_write, fs::perm_options::add);
+    CHECK(writable_by_others(folder) == dir.path("private").string() + " is writable by its group or by others");
+    fs::permissions(dir.path("private"), fs::perms::others_write, fs::perm_options::remove);
+    // Reached through a link: the link's folder and the folder it leads to are both looked at.
+    fs::create_directories(dir.path("open"));
+    fs::permissions(dir.path("open"), fs::perms::all);
+    fs::create_directory_symlink(dir.path("private"), dir.path("open") / "link");
+    CHECK(writable_by_others(dir.path("open") / "link" / "refs") == dir.path("open").string() + " is writable by its group or by others");
+    fs::create_directory_symlink(dir.path("open"), dir.path("to-open"));
+    fs::create_directories(dir.path("open") / "refs");
+    CHECK(writable_by_others(dir.path("to-open") / "refs").find("open is writable by its group or by others") != std::string::npos);
+
+    // Entries are written 0644 whatever the umask, and one that others may write is removed, not read.
+    ReferenceStore store(folder);
+    const mode_t old_mask = umask(0);
+    store.store("key a", passed_run(1));
+    umask(old_mask);
+    const fs::path file = entries(folder).at(0);
+    CHECK((fs::status(file).permissions() & (fs::perms::group_write | fs::perms::others_write)) == fs::perms::none);
+    REQUIRE(store.load("key a"));
+    fs::permissions(file, fs::perms::others_write, fs::perm_options::add);
+    CHECK_FALSE(store.load("key a"));
+    CHECK(store.problem().find("could have been changed by another user: removed, and the case rendered") != std::string::npos);
+    CHECK_FALSE(fs::exists(file));
+    // A second name for an entry (a hard link made by whoever could) is not trusted either.
+    store.store("key a", passed_run(1));
+    fs::create_hard_link(entries(folder).at(0), dir.path("private") / "second-name");
+    CHECK_FALSE(store.load("key a"));
+}
+
+TEST_CASE("grader: where the walls are down, a root grader keeps live references where student code cannot write them",
+          "[grader][references]") {
+    if (geteuid() != 0) {
+        WARN("not root: student code runs as the grader's own uid where the walls are down, so no store is kept there");
+        return;
+    }
+    test::TempDir dir;
+    const auto options_for = [&](const std::string& out) {
+        GradeOptions options = test::instructor_options("lab01", dir.path(out));
+        options.cases = {"gooch"};
+        options.timing = false;
+        options.hidden = false;
+        options.namespaces = false;  // Docker's default seccomp profile, and Gradescope's containers
+        options.allow_readable_kit = true;
+        options.reference_store = dir.path("refs");
+        return options;
+    };
+    const GradeReport first = grade(options_for("out1"));
+    INFO(first.sandbox << "\n" << first.references);
+    CHECK(first.references.rfind("1 rendered, 0 from the store (", 0) == 0);
+    const GradeReport rerun = grade(options_for("out2"));
+    INFO(rerun.references);
+    CHECK(rerun.references.rfind("0 rendered, 1 from the store (", 0) == 0);
+    REQUIRE(rerun.results.size() == first.results.size());
+    CHECK(rerun.results.at(0).status == first.results.at(0).status);
+    // A store that the leased uid could write is not used at all, and the report says why.
+    fs::permissions(dir.path("refs"), fs::perms::others_write, fs::perm_options::add);
+    const GradeReport open = grade(options_for("out3"));
+    INFO(open.references);
+    CHECK(open.references.rfind("rendered in this run; none kept on disk, where student code could change them: ", 0) == 0);
+    CHECK(open.references.find("refs is writable by its group or by others") != std::string::npos);
 }

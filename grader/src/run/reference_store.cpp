@@ -11,7 +11,9 @@
 #include <iterator>
 #include <random>
 #include <sstream>
+#include <sys/stat.h>
 #include <system_error>
+#include <unistd.h>
 #include <vector>
 
 extern char** environ;
@@ -136,6 +138,45 @@ std::string reference_context(const fs::path& kit_root) {
     return "kit " + kit_fingerprint(kit_root) + "\n" + "driver\n" + driver_stamp() + "environment\n" + driver_environment();
 }
 
+namespace {
+
+// Why a user other than the grader and root could write `path` itself (a folder or a file); empty when none could.
+std::string others_may_write(const fs::path& path, const struct stat& st) {
+    if (st.st_uid != 0 && st.st_uid != geteuid()) return path.string() + " belongs to uid " + std::to_string(st.st_uid);
+    if ((st.st_mode & (S_IWGRP | S_IWOTH)) && !(S_ISDIR(st.st_mode) && (st.st_mode & S_ISVTX)))
+        return path.string() + " is writable by its group or by others";
+    return "";
+}
+
+}  // namespace
+
+std::string writable_by_others(const fs::path& folder) {
+    std::error_code ec;
+    const fs::path absolute = fs::absolute(folder, ec);
+    if (ec) return "cannot resolve " + folder.string();
+    if (!fs::exists(absolute, ec)) {
+        fs::create_directories(absolute, ec);
+        if (ec) return "cannot make " + absolute.string() + ": " + ec.message();
+        fs::permissions(absolute, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec | fs::perms::others_read |
+                                      fs::perms::others_exec, ec);
+    }
+    // Every folder from the store up to /, as named and where it really is (links followed): whoever may write one of
+    // them may put another folder, or another link, in the store's place.
+    const fs::path real = fs::canonical(absolute, ec);
+    if (ec) return "cannot resolve " + absolute.string() + ": " + ec.message();
+    for (const fs::path& start : {absolute.lexically_normal(), real}) {
+        for (fs::path p = start;; p = p.parent_path()) {
+            struct stat st {};
+            if (lstat(p.c_str(), &st) != 0) return "cannot look at " + p.string();
+            // A link's own mode bits mean nothing; who owns it, and the folder holding it (next), do.
+            if (S_ISLNK(st.st_mode) ? st.st_uid != 0 && st.st_uid != geteuid() : !others_may_write(p, st).empty())
+                return S_ISLNK(st.st_mode) ? p.string() + " is a link of uid " + std::to_string(st.st_uid) : others_may_write(p, st);
+            if (p == p.root_path() || p.parent_path() == p) break;
+        }
+    }
+    return "";
+}
+
 ReferenceStore::ReferenceStore(fs::path folder) : folder_(std::move(folder)) {}
 
 fs::path ReferenceStore::entry_path(const std::string& key) const {
@@ -157,6 +198,10 @@ std::optional<LabRun> ReferenceStore::load(const std::string& key) {
         return std::nullopt;
     };
     if (!fs::is_regular_file(status)) return damaged("is not a plain file");
+    // An entry another user could have changed is not one the grader wrote (store() writes them 0644).
+    struct stat st {};
+    if (lstat(file.c_str(), &st) != 0 || !others_may_write(file, st).empty() || st.st_nlink != 1)
+        return damaged("could have been changed by another user");
     const auto size = fs::file_size(file, ec);
     if (ec || size > kMaxEntryBytes + 4096) return damaged("is too big to be one");
     std::ifstream in(file, std::ios::binary);
@@ -224,6 +269,8 @@ void ReferenceStore::store(const std::string& key, const LabRun& run) {
     std::ofstream out(part, std::ios::binary | std::ios::trunc);
     out.write(w.bytes.data(), static_cast<std::streamsize>(w.bytes.size()));
     out.close();
+    // Whatever the umask: only the grader may change an entry, and load() reads no other.
+    fs::permissions(part, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read | fs::perms::others_read, ec);
     if (!out || ec) {
         fs::remove(part, ec);
         if (problem_.empty())

@@ -8,8 +8,10 @@
 // one is removed and the case rendered, never trusted. Only passed renders are stored, and only the image and the arrays
 // (timed frames are always rendered live: they are measured against the student's in the same run).
 //
-// What student code can write must never reach this folder: the grader uses it only where the allow-list walls are
-// up (grade/walls.cpp), and it lies in the kit's build, which no lab run sees.
+// What student code can write must never reach this folder: the grader uses it where the allow-list walls are up
+// (grade/walls.cpp), and it lies in the kit's build, which no lab run sees; or, where the walls are down, where a root
+// grader runs student code as a leased uid (run/uid_lease.h) and no folder on the store's path lets that uid write
+// (writable_by_others below). Entries are written 0644 and one that another user could change is never read.
 #include "grader/src/run/lab_run.h"
 
 #include <filesystem>
@@ -24,6 +26,11 @@ namespace gsv {
 std::string reference_context(const std::filesystem::path& kit_root);
 // The fingerprint of a file's bytes (FNV-1a), "" when it cannot be read.
 std::string file_fingerprint(const std::filesystem::path& file);
+
+// Why a user other than the grader's (and root) could change what is in `folder`: it, or a folder above it, belongs to
+// another user or lets group or others write without the sticky bit. Empty when none could. `folder` is made (0755)
+// when missing, so that what the check sees is what the store will use.
+std::string writable_by_others(const std::filesystem::path& folder);
 
 class ReferenceStore {
 public:
