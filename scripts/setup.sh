@@ -13,6 +13,7 @@ debian_packages=(
   libimgui-dev
   python3-glad glslang-tools python-matplotlib-data python3-nibabel python3-yaml
   xvfb xauth imagemagick gnuplot-nox pandoc
+  similarity-tester
 )
 
 if [ "${1:-}" = "--web" ]; then
@@ -67,7 +68,7 @@ if [ ${#available[@]} -gt 0 ]; then
 fi
 if [ ${#absent[@]} -gt 0 ]; then
   echo "setup: not in this system's package archive, so not installed: ${absent[*]}" >&2
-  echo "setup: (libimgui-dev: the window falls back to its title bar; python3-glad, chromium, pandoc: their tests" >&2
-  echo "        are skipped; anything else: the build names what it misses)" >&2
+  echo "setup: (libimgui-dev: the window falls back to its title bar; python3-glad, chromium, pandoc, similarity-tester:" >&2
+  echo "        their tests are skipped; anything else: the build names what it misses)" >&2
 fi
 echo "setup: done"

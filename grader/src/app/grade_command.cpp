@@ -70,6 +70,8 @@ const char* const kGradeUsage =
     "                    a batch's class report (OUT/class-report.html): failures no known mistake explains, alike\n"
     "       gsv-grade export --lms canvas|moodle|blackboard --roster FILE OUT  the batch's grades as the file the LMS\n"
     "                    imports, per lab and in total, matched to its students by a roster (gsv-grade export --help)\n"
+    "       gsv-grade similarity --batch DIR --out DIR  copied work in the class, the template subtracted: pairs sharing\n"
+    "                    own code and pairs with the same rare wrong picture (similarity.html, .csv; --help for more)\n"
     "exit status: 0 graded (whatever the score), 1 under --fail-under, 2 usage or internal error, 3 the kit's fault\n"
     "                    (its set-up, not a student's files: nothing graded; one line says what to fix)\n";
 

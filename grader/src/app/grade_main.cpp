@@ -22,6 +22,7 @@
 #include "grader/src/lms/export_command.h"
 #include "grader/src/report/report.h"
 #include "grader/src/report/report_format.h"
+#include "grader/src/similarity/similarity_command.h"
 
 #include <algorithm>
 #include <chrono>
@@ -242,6 +243,8 @@ int grade_one(const gsv::GradeCommand& command, const char* argv0) {
 int main(int argc, char** argv) {
     // The grades out to an LMS: its own options and help (grader/src/lms/export_command.h).
     if (argc > 1 && std::string(argv[1]) == "export") return gsv::run_export_command({argv + 2, argv + argc});
+    // Copied work in a class, the template subtracted: its own options and help (grader/src/similarity/).
+    if (argc > 1 && std::string(argv[1]) == "similarity") return gsv::run_similarity_command({argv + 2, argv + argc}, GSV_SOURCE_ROOT);
     if (argc > 1 && (std::string(argv[1]) == "merge" || std::string(argv[1]) == "shard" || std::string(argv[1]) == "mistake-skeleton"))
         return run_subcommand(argc, argv);
     gsv::GradeCommand command;
