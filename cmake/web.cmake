@@ -59,13 +59,16 @@ add_library(gsv_support STATIC ${GSV_SUPPORT_SOURCES})
 target_link_libraries(gsv_support PUBLIC gsv_common)
 target_compile_options(gsv_support PRIVATE -Wall -Wextra)
 
-# The grader's part of the page: its case files, comparison, verdicts and table, and the self-check that runs them in
-# the page (grader/src/app/page_self_check.cpp). Not the grader's processes or sandbox: the page grades nothing of anyone else's.
-add_library(gsv_grader_page STATIC
+# The grader's part of the page: its lowest floor (grader/src/core/), its case files, comparison, verdicts and table, and
+# the self-check that runs them in the page (grader/src/app/page_self_check.cpp). Not the grader's processes or sandbox:
+# the page grades nothing of anyone else's.
+file(GLOB GSV_GRADER_CORE_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/grader/src/core/*.cpp)
+add_library(gsv_grader_page STATIC ${GSV_GRADER_CORE_SOURCES}
   ${PROJECT_SOURCE_DIR}/grader/src/cases/cases.cpp ${PROJECT_SOURCE_DIR}/grader/src/cases/draw.cpp
+  ${PROJECT_SOURCE_DIR}/grader/src/cases/case_row.cpp
   ${PROJECT_SOURCE_DIR}/grader/src/judge/array_compare.cpp ${PROJECT_SOURCE_DIR}/grader/src/judge/image_verdict.cpp
   ${PROJECT_SOURCE_DIR}/grader/src/judge/needs.cpp ${PROJECT_SOURCE_DIR}/grader/src/report/report_table.cpp
-  ${PROJECT_SOURCE_DIR}/grader/src/report/report_format.cpp ${PROJECT_SOURCE_DIR}/grader/src/judge/grade_result.cpp
+  ${PROJECT_SOURCE_DIR}/grader/src/report/report_format.cpp
   ${PROJECT_SOURCE_DIR}/grader/src/diagnose/ranking.cpp ${PROJECT_SOURCE_DIR}/grader/src/diagnose/shipped_diagnosis.cpp)
 target_link_libraries(gsv_grader_page PUBLIC gsv_common)
 target_compile_options(gsv_grader_page PRIVATE -Wall -Wextra)

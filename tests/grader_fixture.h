@@ -8,7 +8,7 @@
 
 #include "common/io/json.h"
 #include "grader/src/grade/grade.h"
-#include "grader/src/margins/mutant_kit.h"
+#include "grader/src/diagnose/mutant_kit.h"
 #include "tools/starter.h"
 
 #include <algorithm>

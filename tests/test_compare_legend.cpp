@@ -4,7 +4,7 @@
 #include "common/image/image.h"
 #include "common/app/known_mistake_pictures.h"
 #include "common/io/json.h"
-#include "grader/src/margins/mutant_kit.h"
+#include "grader/src/diagnose/mutant_kit.h"
 #include "grader/src/run/process.h"
 #include "lab_runner.h"
 #include "test_support.h"

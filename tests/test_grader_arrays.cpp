@@ -9,7 +9,7 @@
 #include "common/io/json.h"
 #include "common/io/little_endian.h"
 #include "grader/src/golden/array_golden.h"
-#include "grader/src/golden/golden_update.h"
+#include "grader/src/update/golden_update.h"
 #include "grader/src/grade/grade.h"
 #include "grader/src/judge/array_compare.h"
 #include "grader/src/judge/data_check.h"

@@ -6,6 +6,7 @@
 #include "grader_fixture.h"
 
 #include "common/app/kit_layout.h"
+#include "grader/src/cases/case_row.h"
 #include "grader/src/judge/data_check.h"
 #include "grader/src/judge/image_verdict.h"
 #include "grader/src/run/lab_serve.h"

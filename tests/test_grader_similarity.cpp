@@ -11,7 +11,7 @@
 
 #include "common/image/image.h"
 #include "grader/src/batch/batch_record.h"
-#include "grader/src/margins/mutant_kit.h"
+#include "grader/src/diagnose/mutant_kit.h"
 #include "grader/src/report/report.h"
 #include "grader/src/run/process.h"
 #include "grader/src/similarity/copied_code.h"

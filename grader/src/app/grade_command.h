@@ -14,8 +14,8 @@ extern const char* const kGradeUsage;
 
 struct GradeCommand {
     GradeOptions options;
-    bool update_mistakes = false;  // rewrite the shipped mistake pictures (grader/src/golden/mistake_update.h)
-    bool update_goldens = false;  // rewrite the committed goldens instead of grading (grader/src/golden/golden_update.h)
+    bool update_mistakes = false;  // rewrite the shipped mistake pictures (grader/src/update/mistake_update.h)
+    bool update_goldens = false;  // rewrite the committed goldens instead of grading (grader/src/update/golden_update.h)
     double fail_under = -1;       // exit kGradeFailed under this share of the maximum score; < 0: no gate
     bool quiet = false;           // no progress and no table
     // --regrade-only changed: grade only the labs whose inputs changed since the last run in --out, keep the others'

@@ -11,6 +11,7 @@
 #include "common/image/image.h"
 #include "common/io/json.h"
 #include "common/app/known_mistake_pictures.h"
+#include "grader/src/cases/case_row.h"
 #include "grader/src/cases/cases.h"
 #include "grader/src/diagnose/shipped_diagnosis.h"
 #include "grader/src/judge/image_verdict.h"

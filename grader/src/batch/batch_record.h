@@ -4,6 +4,7 @@
 // records and refuses ones that were not graded alike, so a merged class table is one grading, not a mixture.
 #include "grader/src/batch/batch.h"
 #include "grader/src/batch/class_cases.h"
+#include "grader/src/core/kit_fingerprint.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -16,16 +17,11 @@ namespace gsv {
 struct BatchRecord {
     std::uint64_t seed = 0;
     int shard = 1, shard_count = 1;
-    std::string kit;                   // kit_fingerprint() of the kit that graded
+    std::string kit;                   // kit_fingerprint() of the kit that graded (grader/src/core/kit_fingerprint.h)
     std::vector<std::string> options;  // what every submission's run got, less the machine's own paths
     std::vector<std::string> roster;   // the whole class, sorted
     std::vector<BatchEntry> entries;   // this shard's rows, in class order
 };
-
-// A hash of what decides a grade: the case files, hidden cases, golden images, solutions, shaders, framework,
-// domain code and data of the kit at `kit_root` (paths and contents, in path order). Two checkouts of one commit
-// agree; a changed case, golden or solution does not.
-std::string kit_fingerprint(const std::filesystem::path& kit_root);
 
 // The options of a batch as recorded: --kit and --bin with their values left out (they name this machine's folders).
 std::vector<std::string> recorded_options(const std::vector<std::string>& pass_through);

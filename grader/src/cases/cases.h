@@ -5,7 +5,7 @@
 #include "common/gl/gl_version.h"
 #include "common/image/image_compare.h"
 #include "common/io/json.h"
-#include "grader/src/judge/array_compare.h"
+#include "grader/src/core/array_diff.h"
 
 #include <cstdint>
 #include <filesystem>

@@ -1,5 +1,6 @@
 #include "grader/src/diagnose/diagnosis.h"
 
+#include "grader/src/cases/case_row.h"
 #include "grader/src/judge/data_check.h"
 #include "grader/src/judge/image_verdict.h"
 

@@ -8,7 +8,7 @@
 #include "grader/src/cases/cases.h"
 #include "grader/src/diagnose/known_mistakes.h"
 #include "grader/src/diagnose/ranking.h"
-#include "grader/src/judge/grade_result.h"
+#include "grader/src/core/grade_result.h"
 #include "grader/src/run/lab_run.h"
 
 #include <optional>

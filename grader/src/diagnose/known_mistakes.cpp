@@ -2,7 +2,7 @@
 
 #include "common/app/kit_layout.h"
 #include "common/core/error.h"
-#include "grader/src/margins/mutant_kit.h"
+#include "grader/src/diagnose/mutant_kit.h"
 #include "tools/starter.h"
 
 #include <algorithm>

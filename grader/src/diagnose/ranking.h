@@ -2,7 +2,7 @@
 // Which known mistakes are named for a lab's failing cases, from which cases each explains (grader/src/diagnose/):
 // without GL or processes, so the browser page's self-check names them as gsv-grade does.
 #include "grader/src/diagnose/known_mistakes.h"
-#include "grader/src/judge/grade_result.h"
+#include "grader/src/core/grade_result.h"
 
 #include <filesystem>
 #include <functional>

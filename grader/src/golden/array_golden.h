@@ -9,7 +9,7 @@
 // The sample: every element when count <= 4096; else the last 64, where lab 05 keeps sentinel particles that a
 // missing bounds check would move, plus 4096 evenly strided among the elements before them (all of them when
 // there are no more than 4096).
-#include "grader/src/judge/array_compare.h"
+#include "grader/src/core/array_diff.h"
 
 #include <cstdint>
 #include <filesystem>

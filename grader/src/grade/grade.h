@@ -3,8 +3,8 @@
 // (one per lab, serving its cases one after another, or one per case: LabProcesses) and compared with the reference: rendered live by <lab>_solution in the same run
 // (instructor grading: public and hidden cases, timing) or the committed golden image (self-check). A lab
 // that hands in arrays (lab 05's particles) has them checked as well (grader/src/judge/data_check.h).
-// The run's set-up is session.h's, each check judge/'s; rewriting the goldens is apart (golden/golden_update.h).
-#include "grader/src/judge/grade_result.h"
+// The run's set-up is session.h's, each check judge/'s; rewriting the goldens is apart (update/golden_update.h).
+#include "grader/src/core/grade_result.h"
 #include "grader/src/run/lab_run.h"
 
 #include <cstdint>

@@ -2,7 +2,7 @@
 
 #include "common/core/error.h"
 #include "common/io/folder_tree.h"
-#include "grader/src/margins/mutant_kit.h"
+#include "grader/src/diagnose/mutant_kit.h"
 #include "grader/src/run/lab_serve.h"
 #include "tools/starter.h"
 

@@ -1,6 +1,6 @@
 #pragma once
 // The known mistakes' renders of a grading run's cases (grader/src/diagnose/): the reference solution with one mistake
-// made to its shaders (the mutant kit of grader/src/margins/mutant_kit.h), rendering the cases on this machine as the
+// made to its shaders (the mutant kit of grader/src/diagnose/mutant_kit.h), rendering the cases on this machine as the
 // student's lab did. Each is made once per kit, case and mistake: kept in the run's reference cache and in the
 // reference store under the reference's key with the mistake's edit added, so a batch or a rerun renders none again.
 // The edited solutions hold answers: they live in a folder of the grader's own (0700) for the run, made only where the

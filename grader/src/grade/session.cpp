@@ -3,6 +3,7 @@
 #include "common/app/kit_layout.h"
 #include "common/app/lab_sources.h"
 #include "common/core/error.h"
+#include "grader/src/cases/case_row.h"
 #include "grader/src/cases/draw.h"
 #include "grader/src/golden/golden_renderers.h"
 #include "grader/src/run/submission.h"

@@ -1,6 +1,6 @@
 #pragma once
 // One run of the grader, set up before any case runs; grading (grade.cpp) and rewriting the goldens
-// (grader/src/golden/golden_update.cpp) share it. Setting up chooses the labs and their cases and checks them
+// (grader/src/update/golden_update.cpp) share it. Setting up chooses the labs and their cases and checks them
 // (case_selection.cpp), puts up the walls (walls.cpp), builds a submission's labs and makes the two runners; then
 // each check is one row, recorded here.
 #include "grader/src/grade/grade.h"

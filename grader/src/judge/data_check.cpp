@@ -3,6 +3,7 @@
 #include "common/core/error.h"
 #include "common/core/find_named.h"
 #include "grader/src/golden/array_golden.h"
+#include "grader/src/judge/array_compare.h"
 
 namespace gsv {
 namespace {

@@ -10,7 +10,7 @@
 // margin renderers differ by (GpuMargin) with wrong numbers is WrongData. A reference without an array the case checks (a live reference that
 // did not hand it in, a golden that is missing or unreadable) is the kit's fault: ReferenceFailed, as for images.
 #include "grader/src/cases/cases.h"
-#include "grader/src/judge/grade_result.h"
+#include "grader/src/core/grade_result.h"
 #include "grader/src/run/lab_run.h"
 
 #include <filesystem>

@@ -5,7 +5,7 @@
 // wrong image.
 #include "common/image/image.h"
 #include "grader/src/cases/cases.h"
-#include "grader/src/judge/grade_result.h"
+#include "grader/src/core/grade_result.h"
 #include "grader/src/run/lab_run.h"
 
 #include <filesystem>

@@ -5,7 +5,7 @@
 #include "common/image/image.h"
 #include "common/image/image_compare.h"
 #include "grader/src/cases/cases.h"
-#include "grader/src/judge/grade_result.h"
+#include "grader/src/core/grade_result.h"
 
 namespace gsv {
 

@@ -1,7 +1,7 @@
 #pragma once
 // A case's "needs" (grader/src/cases/cases.h): the other TODOs it cannot pass without. Blame lands where the work is.
 #include "grader/src/cases/cases.h"
-#include "grader/src/judge/grade_result.h"
+#include "grader/src/core/grade_result.h"
 
 #include <cstddef>
 #include <vector>

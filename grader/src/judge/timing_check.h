@@ -5,7 +5,7 @@
 // settings. The ratio is the median of the student's rounds over the reference's; one near or over the band is
 // measured again before it counts.
 #include "grader/src/cases/cases.h"
-#include "grader/src/judge/grade_result.h"
+#include "grader/src/core/grade_result.h"
 #include "grader/src/run/lab_run.h"
 #include "grader/src/run/process.h"
 

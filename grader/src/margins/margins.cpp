@@ -8,7 +8,7 @@
 #include "common/image/image_offset.h"
 #include "grader/src/cases/cases.h"
 #include "grader/src/grade/grade.h"
-#include "grader/src/margins/mutant_kit.h"
+#include "grader/src/diagnose/mutant_kit.h"
 #include "grader/src/report/report_format.h"
 #include "grader/src/run/lab_run.h"
 

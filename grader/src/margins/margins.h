@@ -9,7 +9,7 @@
 #include "common/gl/gl_version.h"
 #include "common/io/json.h"
 #include "grader/src/cases/cases.h"
-#include "grader/src/judge/grade_result.h"
+#include "grader/src/core/grade_result.h"
 
 #include <filesystem>
 #include <functional>

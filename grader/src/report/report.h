@@ -1,6 +1,6 @@
 #pragma once
 // The reports of one grading run, all written from the same GradeReport.
-#include "grader/src/judge/grade_result.h"
+#include "grader/src/core/grade_result.h"
 
 #include <filesystem>
 #include <string>

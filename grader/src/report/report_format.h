@@ -2,7 +2,8 @@
 // Text helpers the reports share, so the table, results.json, JUnit and HTML name and describe a
 // check the same way. Student output may hold any bytes, so everything that embeds it goes through
 // these first.
-#include "grader/src/judge/grade_result.h"
+#include "grader/src/core/grade_result.h"
+#include "grader/src/core/safe_text.h"
 
 #include <cstddef>
 #include <string>
@@ -29,19 +30,6 @@ std::string format_points(double points);
 // printf-style "%.*f".
 std::string fixed(double value, int digits);
 
-// Invalid UTF-8 sequences (stray bytes, overlong forms, surrogates) become U+FFFD, so every report is
-// valid UTF-8 whatever a student's program printed.
-std::string valid_utf8(std::string_view text);
-// valid_utf8, without the characters XML 1.0 forbids (controls other than tab, LF and CR; U+FFFE,
-// U+FFFF). HTML forbids the same controls, so both escapers use it.
-std::string xml_safe_text(std::string_view text);
-// Escapes xml_safe_text for markup (XML and HTML): & < > " ' and CR always; in an attribute also tab and
-// LF, which a parser would otherwise turn into spaces (attribute-value normalisation).
-enum class MarkupPlace { Text, Attribute };
-std::string escape_markup(std::string_view raw, MarkupPlace place);
-// One line for a table: valid UTF-8, every control character (newlines, ESC of terminal colour codes)
-// a space, cut at a character boundary to at most max_bytes with "..." marking the cut.
-std::string one_line(std::string_view text, std::size_t max_bytes);
 // The first line that mentions an error, else the first non-blank line, else "".
 std::string first_error_line(std::string_view log);
 

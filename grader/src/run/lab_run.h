@@ -8,7 +8,7 @@
 #include "common/image/image.h"
 #include "common/io/data_array.h"
 #include "grader/src/cases/cases.h"
-#include "grader/src/judge/grade_result.h"
+#include "grader/src/core/grade_result.h"
 #include "grader/src/run/process.h"
 
 #include <filesystem>

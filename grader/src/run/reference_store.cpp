@@ -1,7 +1,7 @@
 #include "grader/src/run/reference_store.h"
 
 #include "common/core/fnv1a.h"
-#include "grader/src/batch/batch_record.h"
+#include "grader/src/core/kit_fingerprint.h"
 
 #include <algorithm>
 #include <cstdint>

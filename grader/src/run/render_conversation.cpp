@@ -1,7 +1,7 @@
 #include "grader/src/run/render_conversation.h"
 
 #include "common/core/error.h"
-#include "grader/src/report/report_format.h"
+#include "grader/src/core/safe_text.h"
 
 #include <algorithm>
 #include <cmath>

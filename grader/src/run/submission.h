@@ -3,7 +3,7 @@
 // plain content, copied: symbolic and hard links, devices, FIFOs and files over kMaxSubmissionFileBytes are refused
 // and named in the build log. The framework, shared shaders and data are the kit's. Each
 // lab is built as its own target, so one lab's compile error leaves the others gradable.
-#include "grader/src/judge/grade_result.h"
+#include "grader/src/core/grade_result.h"
 #include "grader/src/run/build_reuse.h"
 #include "grader/src/run/process.h"
 

@@ -1,4 +1,4 @@
-#include "grader/src/golden/golden_update.h"
+#include "grader/src/update/golden_update.h"
 
 #include "common/app/kit_layout.h"
 #include "common/image/image.h"

@@ -1,4 +1,4 @@
-#include "grader/src/golden/mistake_update.h"
+#include "grader/src/update/mistake_update.h"
 
 #include "common/app/kit_layout.h"
 #include "common/app/known_mistake_pictures.h"

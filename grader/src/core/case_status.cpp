@@ -1,4 +1,4 @@
-#include "grader/src/judge/grade_result.h"
+#include "grader/src/core/case_status.h"
 
 namespace gsv {
 
@@ -34,36 +34,6 @@ const char* status_name(CaseStatus status) {
     return "unknown";
 }
 
-CaseResult case_row(const LabCases& lab, const GradeCase& c) {
-    CaseResult r;
-    r.lab = lab.lab;
-    r.name = c.name;
-    r.todo = c.todo;
-    r.description = c.description;
-    r.visibility = c.visibility;
-    r.settings = c.settings;
-    r.max_points = c.points;
-    return r;
-}
-
 bool is_kit_fault(CaseStatus status) { return status == CaseStatus::ReferenceFailed || status == CaseStatus::KitFault; }
-
-bool DataCheck::passed() const {
-    for (const auto& a : arrays)
-        if (!a.within()) return false;
-    return true;
-}
-
-double GradeReport::score() const {
-    double total = 0;
-    for (const auto& r : results) total += r.points;
-    return total;
-}
-
-double GradeReport::max_score() const {
-    double total = 0;
-    for (const auto& r : results) total += r.max_points;
-    return total;
-}
 
 }  // namespace gsv

@@ -1,4 +1,4 @@
-#include "grader/src/margins/mutant_kit.h"
+#include "grader/src/diagnose/mutant_kit.h"
 
 #include "common/app/kit_layout.h"
 #include "common/core/error.h"
