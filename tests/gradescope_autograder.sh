@@ -66,15 +66,29 @@ grade_one() {  # grade_one NAME: grades what is in $ag/submission
   cp "$ag/results/results.json" "$tmp/$1.json"
 }
 lab_dir=$(cd "$root/solutions" && ls -d lab01_*)
+step "setup.sh's references rendered ahead (its build left out: this build stands in)"
+grep -qx 'scripts/kit build' "$ag/source/setup.sh" || fail "setup.sh does not build the kit"
+(cd "$ag/source" && grep -vx 'scripts/kit build' setup.sh | bash) >"$tmp/log" 2>&1 || fail "setup.sh failed"
+grep -q "not rendered ahead" "$tmp/log" && fail "setup.sh did not render the references ahead"
+# After it, a submission's run renders none: every reference, hidden cases' included, comes from the store.
+rendered_none() {
+  python3 - "$ag/results/report.json" "$1" <<'PY' || fail "the $1's run rendered references setup.sh should have"
+import json, sys
+references = json.load(open(sys.argv[1]))["references"]
+assert references.startswith("0 rendered, "), f"{sys.argv[2]}: {references}"
+PY
+}
 step "the starter (a repository)"
 mkdir -p "$ag/submission/labs"
 cp -r "$root/labs/$lab_dir" "$ag/submission/labs/"
 grade_one starter
+rendered_none starter
 step "the solution (a zip of one folder)"
 rm -rf "$ag/submission"
 mkdir -p "$ag/submission/my-kit/labs"
 cp -r "$root/solutions/$lab_dir" "$ag/submission/my-kit/labs/"
 grade_one solution
+rendered_none solution
 
 step "results.json"
 python3 - "$tmp" "$root" <<'PY' || fail "results.json is not what Gradescope reads"

@@ -92,6 +92,15 @@ TEST_CASE("gsv-grade --regrade-only changed: only the labs whose inputs changed 
     REQUIRE(ada_first.size() == 2);
     CHECK(test::read_text(dir.path("grades/class.csv")).find("\"ada\",yes,4,4,") != std::string::npos);
     CHECK(fs::exists(dir.path("grades/ada/inputs.json")));
+    // A class's folders stay small (--passed-pictures thumbnail, --keep-build no in a batch's runs): a passed case keeps a
+    // thumbnail of its picture, a failing one its pictures whole; the build's binaries go, its sources stay.
+    CHECK(fs::exists(dir.path("grades/ada/lab01/phong/actual.jpg")));
+    CHECK_FALSE(fs::exists(dir.path("grades/ada/lab01/phong/actual.png")));
+    CHECK_FALSE(fs::exists(dir.path("grades/ada/lab01/phong/expected.png")));
+    CHECK(fs::exists(dir.path("grades/bo/lab01/phong/actual.png")));
+    CHECK(fs::exists(dir.path("grades/bo/lab01/phong/expected.png")));
+    CHECK_FALSE(fs::exists(dir.path("grades/ada/submission-build/build")));
+    CHECK(fs::exists(dir.path("grades/ada/submission-build/kit/labs/lab01_gooch")));
 
     // Nothing changed: nothing graded, every row kept, the grades as they were.
     const ProcessResult again = gsv_grade(with(batch, {"--regrade-only", "changed"}), dir.path());

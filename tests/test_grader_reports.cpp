@@ -314,9 +314,10 @@ TEST_CASE("grader reports: HTML is self-contained and escapes student output", "
     CHECK_FALSE(contains(page, "<script"));
     CHECK(contains(page, "&lt;script&gt;alert(1)&lt;/script&gt; &amp; &quot;quotes&quot;"));
     CHECK_FALSE(contains(page, "\x01"));
-    // Four images were written (phong's two, shadow's two); each is embedded, starting with the PNG
-    // signature in base64.
-    CHECK(count(page, "src=\"data:image/png;base64,iVBORw0KGgo") == 4);
+    // Four images were written (phong's two, shadow's two); each is embedded: the failing shadow's whole, starting with
+    // the PNG signature in base64, the passed phong's as thumbnails (they matched; a class's reports stay small).
+    CHECK(count(page, "src=\"data:image/png;base64,iVBORw0KGgo") == 2);
+    CHECK(count(page, "src=\"data:image/jpeg;base64,/9j/") == 2);
     CHECK(count(page, "src=\"") == 4);  // and nothing else is loaded
     CHECK_FALSE(contains(page, "src=\"http"));
     CHECK_FALSE(contains(page, "href=\"http"));
@@ -341,7 +342,17 @@ TEST_CASE("grader reports: HTML is self-contained and escapes student output", "
     dir.write("lab01/phong/actual.png", "<svg onload=alert(1)>");
     const std::string fake = html_report(report, dir.path());
     CHECK(contains(fake, "lab01/phong/actual.png is not a PNG file"));
-    CHECK(count(fake, "data:image/png;base64,") == 3);
+    CHECK(count(fake, "data:image/png;base64,") == 2);
+    CHECK(count(fake, "data:image/jpeg;base64,") == 1);
+
+    // A class's reports (--passed-pictures thumbnail): a failing case's pictures too as thumbnails, each a link to its
+    // whole PNG beside the report; a picture that is not there is still a note, never a link.
+    const std::string linked = html_report(report, dir.path(), ReportReader::Instructor, InstructorPictures::LinkedThumbnails);
+    CHECK(count(linked, "data:image/png") == 0);
+    CHECK(contains(linked, "<a href=\"lab01/shadow/actual.png\"><img alt=\"actual (yours)\" src=\"data:image/jpeg;base64,/9j/"));
+    CHECK(contains(linked, "<a href=\"lab01/shadow/expected.png\"><img alt=\"expected\" src=\"data:image/jpeg;base64,/9j/"));
+    CHECK_FALSE(contains(linked, "href=\"lab01/shadow/diff.png\""));
+    CHECK(contains(linked, "lab01/shadow/diff.png is missing"));
 }
 
 TEST_CASE("grader reports: score table has rows, per-lab totals and the run's setup", "[grader]") {

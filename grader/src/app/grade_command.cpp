@@ -17,6 +17,7 @@ const char* const kGradeUsage =
     "                 [--public-only] [--profile core|es]"
     " [--timeout S] [--fail-under F] [--update-goldens] [--update-mistakes] [--allow-readable-kit] [--no-namespaces]\n"
     "                 [--no-sandbox] [--build-all] [--fresh-references] [--grader-cache DIR] [--regrade-only changed]\n"
+    "                 [--passed-pictures full|thumbnail] [--keep-build yes|no]\n"
     "                 [--one-process-per-case] [--diagnose off|public|all] [--quiet] [--help] [--version]\n"
     "  --kit DIR         the kit (cases, goldens, hidden cases, solutions); default: the one this was built from\n"
     "  --bin DIR         the kit's built labs and <lab>_solution; default: this build's bin/\n"
@@ -54,6 +55,10 @@ const char* const kGradeUsage =
     "                    <bin>/../grader-cache/references by an earlier run with the same kit, build, driver and case\n"
     "  --grader-cache DIR  where earlier builds (DIR/builds) and live references (DIR/references) are kept; default\n"
     "                    <bin>/../grader-cache\n"
+    "  --passed-pictures full|thumbnail  what a passed image case keeps in --out: its picture and the expected one\n"
+    "                    (full, default) or a small JPEG of its picture (thumbnail, default in a batch's runs)\n"
+    "  --keep-build yes|no  keep a submission's build (its binaries) in --out/submission-build (yes, default; no in a\n"
+    "                    batch's runs); its sources stay either way\n"
     "  --build-all       compile every lab of a submission, even one whose C++ is byte for byte the kit's starter's\n"
     "                    (otherwise the kit's binary) or an earlier build's (kept in <bin>/../grader-cache/builds)\n"
     "  --one-process-per-case  start a lab process for each case, rather than one per lab that renders the lab's cases\n"
@@ -133,6 +138,21 @@ GradeAction read_grade_command(int argc, char** argv, GradeCommand& command) {
         else if (a == "--no-sandbox") flag(options.sandbox, false);
         else if (a == "--build-all") flag(options.reuse_builds, false);
         else if (a == "--fresh-references") flag(options.stored_references, false);
+        else if (a == "--passed-pictures") {
+            const std::string what = value();
+            if (what != "full" && what != "thumbnail")
+                throw Error("--passed-pictures takes full or thumbnail, got '" + what + "'");
+            options.passed_pictures = what == "full" ? PassedPictures::Full : PassedPictures::Thumbnail;
+            command.passed_pictures_given = true;
+            pass_through.insert(pass_through.end(), {a, what});
+        }
+        else if (a == "--keep-build") {
+            const std::string what = value();
+            if (what != "yes" && what != "no") throw Error("--keep-build takes yes or no, got '" + what + "'");
+            options.keep_build = what == "yes";
+            command.keep_build_given = true;
+            pass_through.insert(pass_through.end(), {a, what});
+        }
         else if (a == "--one-process-per-case") {
             options.lab_processes = LabProcesses::PerCase;
             pass_through.push_back(a);

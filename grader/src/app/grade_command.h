@@ -26,6 +26,8 @@ struct GradeCommand {
     std::string shard;            // K/N of a batch
     std::filesystem::path roster;
     std::vector<std::string> pass_through;  // the options each submission's run in a batch gets too
+    // Whether --passed-pictures and --keep-build were given: a batch's runs default to thumbnails and no build kept.
+    bool passed_pictures_given = false, keep_build_given = false;
 };
 
 enum class GradeAction { Grade, Help, Version };

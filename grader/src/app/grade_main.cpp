@@ -119,6 +119,10 @@ int grade_class(const gsv::GradeCommand& command, const char* argv0) {
     b.workers = command.workers;
     b.seed = options.seed ? *options.seed : gsv::fresh_seed();
     b.pass_through = command.pass_through;
+    // A class's folders stay small (grader/README.md, "What a class leaves on disk"): a passed case's pictures as a
+    // thumbnail, no submission's binaries; either can be asked for.
+    if (!command.passed_pictures_given) b.pass_through.insert(b.pass_through.end(), {"--passed-pictures", "thumbnail"});
+    if (!command.keep_build_given) b.pass_through.insert(b.pass_through.end(), {"--keep-build", "no"});
     b.shard = shard_k;
     b.shard_count = shard_n;
     if (!command.roster.empty()) b.roster = gsv::read_roster(command.roster);
@@ -206,7 +210,9 @@ gsv::GradeReport grade_changed(const gsv::GradeCommand& command, const char* arg
             report = gsv::merge_regraded(*plan.earlier, *plan.earlier, plan, labs);
         }
     }
-    gsv::write_reports(report, options.out_dir);
+    gsv::write_reports(report, options.out_dir,
+                       options.passed_pictures == gsv::PassedPictures::Thumbnail ? gsv::InstructorPictures::LinkedThumbnails
+                                                                                : gsv::InstructorPictures::Whole);
     gsv::write_lab_inputs(options.out_dir, inputs);
     return report;
 }

@@ -29,7 +29,9 @@ std::vector<std::string> recorded_options(const std::vector<std::string>& pass_t
         // The grades are the same either way (run/submission.h, run/reference_store.h): shards may differ in them.
         if (pass_through[i] == "--build-all" || pass_through[i] == "--fresh-references" || pass_through[i] == "--one-process-per-case")
             continue;
-        if (pass_through[i] == "--regrade-only" || pass_through[i] == "--grader-cache") {
+        // What a run keeps on disk, not what it grades.
+        if (pass_through[i] == "--regrade-only" || pass_through[i] == "--grader-cache" || pass_through[i] == "--passed-pictures" ||
+            pass_through[i] == "--keep-build") {
             ++i;
             continue;
         }

@@ -13,6 +13,7 @@
 #include "grader/src/judge/timing_check.h"
 #include "grader/src/report/report_format.h"
 
+#include <fstream>
 #include <optional>
 #include <unistd.h>
 
@@ -23,6 +24,21 @@ namespace {
 
 // The image, then the arrays, of one render of the student's lab against the expected image: the row as it stands
 // before the frame time. `student` draws other cases for the copy check.
+// A passed case in a class's folders (--passed-pictures thumbnail): its picture matched, so a small JPEG of it stands in
+// for the two full PNGs (a lab of 25 cases is 6 MB of them); what a failing case shows is kept whole.
+void keep_thumbnail_only(const fs::path& out, const fs::path& dir, const Image& picture, CaseResult& r) {
+    constexpr int kSide = 128, kQuality = 80;
+    const std::vector<std::uint8_t> jpeg = encode_jpeg(thumbnail(picture, kSide), kQuality);
+    const fs::path file = dir / "actual.jpg";
+    std::ofstream(file, std::ios::binary | std::ios::trunc).write(reinterpret_cast<const char*>(jpeg.data()),
+                                                                   static_cast<std::streamsize>(jpeg.size()));
+    std::error_code ec;
+    for (const char* png : {"actual.png", "expected.png", "diff.png"}) fs::remove(dir / png, ec);
+    r.actual_png = fs::relative(file, out).generic_string();
+    r.expected_png.clear();
+    r.diff_png.clear();
+}
+
 CaseResult judge_render(GradingSession& s, CopySearch& copies, const LabCases& lab, const GradeCase& c, bool live,
                         const CaseResult& row, const LabRun& run, const LabRunner& student, const Image& expected,
                         const std::optional<LabRun>& reference) {
@@ -143,6 +159,8 @@ void grade_case(GradingSession& s, CopySearch& copies, const LabCases& lab, cons
         renders.failed.push_back({s.report.results.size(), &c, *judged_on, {expected, reference, live}});
     // A case passed: a mistake that would fail it is not the student's (diagnose_lab.h).
     if (judged.status == CaseStatus::Passed && diagnoses(s, c)) renders.passed.push_back({&c, {expected, reference, live}});
+    if (judged.status == CaseStatus::Passed && judged_on->image && s.options.passed_pictures == PassedPictures::Thumbnail)
+        keep_thumbnail_only(s.out, dir, *judged_on->image, judged);
     s.record(judged);
     const CaseResult image_row = s.report.results.back();
     if (!timed) return;
@@ -201,6 +219,11 @@ GradeReport grade(const GradeOptions& options, const std::function<void(const Gr
             s.report.diagnosis_note += std::string(s.report.diagnosis_note.empty() ? "" : "; ") + lab.lab + ": " + e.what();
         }
         blame_needed_todos(lab, s.report.results, first);
+    }
+    // The submission's binaries, tens of MB, once no process of the student's runs (--keep-build no); its sources stay.
+    if (!options.keep_build && !options.submission.empty()) {
+        std::error_code ec;
+        fs::remove_all(s.out / "submission-build" / "build", ec);
     }
     GradeReport report = s.finish();
     if (mistake_pictures.looked_up() > 0)

@@ -38,6 +38,9 @@ enum class DiagnoseCases { Default, Off, Public, All };
 // or rendered on this machine from the instructor's lists. Default: shipped where the failures were judged against the
 // goldens (a self-check; a student's and the instructor's say the same) and the lab has them, else rendered.
 enum class MistakePictureSource { Default, Shipped, Rendered };
+// What a passed image case keeps in --out: its picture and the expected one as PNGs, or a JPEG thumbnail of its
+// picture only (it matched; a class's folders stay small: grader/README.md, "What a class leaves on disk").
+enum class PassedPictures { Full, Thumbnail };
 
 struct GradeOptions {
     std::filesystem::path kit_root;     // grader/cases, golden, hidden; solutions/
@@ -83,6 +86,10 @@ struct GradeOptions {
     // reports). Default: public in a self-check, all in instructor grading.
     DiagnoseCases diagnose = DiagnoseCases::Default;
     MistakePictureSource mistake_pictures = MistakePictureSource::Default;
+    PassedPictures passed_pictures = PassedPictures::Full;
+    // A submission's build (<out>/submission-build/build: its binaries, tens of MB) kept after grading; false removes
+    // it (its sources, submission-build/kit, stay). A batch's runs and the Gradescope zip do not keep it.
+    bool keep_build = true;
 };
 
 // What a row's detail gains where a check failed on a render made after other cases in the same process and passed on

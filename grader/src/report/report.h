@@ -21,15 +21,20 @@ std::string junit_xml(const GradeReport& report);
 // seed; images as small JPEG thumbnails of the failing cases only, so the file stays well under 2 MB).
 enum class ReportReader { Instructor, Student };
 
+// How the instructor's report shows a failing case's pictures: embedded whole, or (a class's reports: --passed-pictures
+// thumbnail) embedded as thumbnails, each a link to its whole PNG beside the report. A passed case's are thumbnails.
+enum class InstructorPictures { Whole, LinkedThumbnails };
+
 // One self-contained HTML file: the images embedded as data URIs, actual / expected / difference side by side.
 std::string html_report(const GradeReport& report, const std::filesystem::path& out_dir,
-                        ReportReader reader = ReportReader::Instructor);
+                        ReportReader reader = ReportReader::Instructor, InstructorPictures pictures = InstructorPictures::Whole);
 
 // report.json read back: an earlier run's report, whole. Throws gsv::Error naming the file and what is wrong.
 GradeReport read_report_json(const std::filesystem::path& file);
 
 // Writes results.json, report.json, junit.xml and report.html into out_dir: report.html the student's form in a
 // self-check (what a student runs), else the instructor's, with student-report.html beside it to hand out.
-void write_reports(const GradeReport& report, const std::filesystem::path& out_dir);
+void write_reports(const GradeReport& report, const std::filesystem::path& out_dir,
+                   InstructorPictures pictures = InstructorPictures::Whole);
 
 }  // namespace gsv

@@ -54,7 +54,9 @@ std::string read_png_bytes(const fs::path& out_dir, const std::string& relative,
             why = relative + " cannot be read";
             return {};
         }
-        if (bytes.compare(0, 8, "\x89PNG\r\n\x1a\n", 8) != 0) {
+        // A passed case graded with --passed-pictures thumbnail keeps its picture as the grader's JPEG thumbnail.
+        const bool jpeg_thumbnail = fs::path(relative).extension() == ".jpg" && bytes.compare(0, 3, "\xff\xd8\xff", 3) == 0;
+        if (bytes.compare(0, 8, "\x89PNG\r\n\x1a\n", 8) != 0 && !jpeg_thumbnail) {
             why = relative + " is not a PNG file";
             return {};
         }
@@ -87,34 +89,47 @@ std::string thumbnail_bytes(const fs::path& png, std::string& why) {
 // The pictures a report embeds: who reads it, and for a student what is left of the bytes it may hold.
 struct Pictures {
     ReportReader reader = ReportReader::Instructor;
+    InstructorPictures instructor = InstructorPictures::Whole;
     std::size_t left = kStudentPictureBytes;
 };
 
-void figure(std::ostringstream& out, const fs::path& out_dir, const std::string& relative, const char* caption, Pictures& pictures) {
+bool is_jpeg(const std::string& bytes) { return bytes.compare(0, 3, "\xff\xd8\xff", 3) == 0; }
+
+// `thumbnail`: shown small whoever reads it (an instructor's passed case: its pictures match, and a class's reports
+// stay small); a student's report shows every picture small, within its byte budget.
+void figure(std::ostringstream& out, const fs::path& out_dir, const std::string& relative, const char* caption, Pictures& pictures,
+            bool thumbnail) {
     std::string why;
     std::string bytes = read_png_bytes(out_dir, relative, why);
-    const bool small = pictures.reader == ReportReader::Student && !bytes.empty();
-    if (small) bytes = thumbnail_bytes(out_dir / relative, why);
-    if (small && bytes.size() > pictures.left) {
+    const bool student = pictures.reader == ReportReader::Student;
+    const bool linked = !student && pictures.instructor == InstructorPictures::LinkedThumbnails && !bytes.empty();
+    const bool small = (student || thumbnail || linked) && !bytes.empty();
+    if (small && !is_jpeg(bytes)) bytes = thumbnail_bytes(out_dir / relative, why);
+    if (student && small && bytes.size() > pictures.left) {
         bytes.clear();
         why = "left out to keep this report small: `compare` draws it (the reproduce line above names the case)";
     }
-    if (small) pictures.left -= bytes.size();
+    if (student && small) pictures.left -= bytes.size();
     out << "<figure>";
     if (bytes.empty())
         out << "<div class=\"note\">" << html(why) << "</div>";
+    else if (linked)  // the whole picture lies beside the report, where the grader wrote it
+        out << "<a href=\"" << escape_markup(relative, MarkupPlace::Attribute) << "\"><img alt=\"" << caption
+            << "\" src=\"data:image/jpeg;base64," << base64(bytes) << "\"></a>";
     else
-        out << "<img alt=\"" << caption << "\" src=\"data:image/" << (small ? "jpeg" : "png") << ";base64," << base64(bytes) << "\">";
-    out << "<figcaption>" << caption << "</figcaption></figure>";
+        out << "<img alt=\"" << caption << "\" src=\"data:image/" << (is_jpeg(bytes) ? "jpeg" : "png") << ";base64," << base64(bytes) << "\">";
+    out << "<figcaption>" << caption << (linked ? " (click for the whole picture)" : "") << "</figcaption></figure>";
 }
 
-void figures(std::ostringstream& out, const fs::path& out_dir, const CaseResult& r, bool with_diff, Pictures& pictures) {
+void figures(std::ostringstream& out, const fs::path& out_dir, const CaseResult& r, bool with_diff, Pictures& pictures,
+             bool thumbnails = false) {
     out << "<div class=\"figures\">";
-    figure(out, out_dir, r.actual_png, "actual (yours)", pictures);
-    figure(out, out_dir, r.expected_png, "expected", pictures);
-    if (with_diff) figure(out, out_dir, r.diff_png, "difference", pictures);
+    figure(out, out_dir, r.actual_png, "actual (yours)", pictures, thumbnails);
+    // A passed case kept as a thumbnail has no expected picture of its own: it matched.
+    if (!r.expected_png.empty() || !thumbnails) figure(out, out_dir, r.expected_png, "expected", pictures, thumbnails);
+    if (with_diff) figure(out, out_dir, r.diff_png, "difference", pictures, thumbnails);
     // The known mistake that explains it, drawn by the reference with that mistake made (grader/src/diagnose/).
-    if (!r.mistake_png.empty()) figure(out, out_dir, r.mistake_png, "the known mistake's picture", pictures);
+    if (!r.mistake_png.empty()) figure(out, out_dir, r.mistake_png, "the known mistake's picture", pictures, thumbnails);
     out << "</div>\n";
     if (!r.mistake.empty())
         out << "<p class=\"mistake\">A known mistake in " << html(r.mistake_todo) << " explains this: " << html(r.mistake)
@@ -221,7 +236,7 @@ void check_section(std::ostringstream& out, const fs::path& out_dir, const CaseR
         // A student's report shows the pictures of what failed only: it stays small.
         if (has_images && reader == ReportReader::Instructor) {
             out << "<details><summary>images</summary>";
-            figures(out, out_dir, r, false, pictures);
+            figures(out, out_dir, r, false, pictures, true);
             out << "</details>\n";
         }
     } else {
@@ -258,7 +273,7 @@ table.numbers th { font-weight: normal; color: #5f6368; }
 
 }  // namespace
 
-std::string html_report(const GradeReport& report, const fs::path& out_dir, ReportReader reader) {
+std::string html_report(const GradeReport& report, const fs::path& out_dir, ReportReader reader, InstructorPictures instructor) {
     const bool student = reader == ReportReader::Student;
     std::ostringstream out;
     out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
@@ -322,7 +337,7 @@ std::string html_report(const GradeReport& report, const fs::path& out_dir, Repo
             << html(student && r.visibility != "public" ? std::string("a hidden case") : one_line(r.detail, 160)) << "</td></tr>\n";
     }
     out << "</table>\n<h2>Details</h2>\n";
-    Pictures pictures{reader};
+    Pictures pictures{reader, instructor};
     for (std::size_t i = 0; i < report.results.size(); ++i) check_section(out, out_dir, report.results[i], i, pictures);
     out << "</body>\n</html>\n";
     return out.str();

@@ -21,7 +21,7 @@ void write_text(const fs::path& path, const std::string& text) {
 
 }  // namespace
 
-void write_reports(const GradeReport& report, const fs::path& out_dir) {
+void write_reports(const GradeReport& report, const fs::path& out_dir, InstructorPictures pictures) {
     std::error_code ec;
     fs::create_directories(out_dir, ec);
     if (ec) throw Error("cannot create report folder '" + out_dir.string() + "': " + ec.message());
@@ -29,7 +29,7 @@ void write_reports(const GradeReport& report, const fs::path& out_dir) {
     write_text(out_dir / "report.json", report_json(report));
     write_text(out_dir / "junit.xml", junit_xml(report));
     const bool student_run = report.mode == "self-check";
-    write_text(out_dir / "report.html", html_report(report, out_dir, student_run ? ReportReader::Student : ReportReader::Instructor));
+    write_text(out_dir / "report.html", html_report(report, out_dir, student_run ? ReportReader::Student : ReportReader::Instructor, pictures));
     if (!student_run) write_text(out_dir / "student-report.html", html_report(report, out_dir, ReportReader::Student));
     else fs::remove(out_dir / "student-report.html", ec);  // an earlier instructor run's, in the same folder
 }
