@@ -13,6 +13,7 @@
 #include "common/image/image_compare.h"
 #include "common/scene/mesh_data.h"
 #include "common/scene/transforms.h"
+#include "common/shader/transform_uniforms.h"
 #include "common/shader/reference_compiler.h"
 #include "common/shader/shader_library.h"
 #include "common/timing/timing.h"

@@ -7,7 +7,7 @@
 #include "common/params/case_file.h"
 #include "common/app/depth_readback.h"
 #include "common/app/exit_status.h"
-#include "common/app/inspect_stage.h"
+#include "common/window/inspect_stage.h"
 #include "common/params/params.h"
 #include "common/context/context.h"
 #include "common/gl/gl_features.h"
@@ -16,6 +16,7 @@
 #include "common/io/data_array.h"
 #include "common/scene/transforms.h"
 #include "common/shader/shader_library.h"
+#include "common/shader/transform_uniforms.h"
 
 #include <filesystem>
 #include <functional>

@@ -1,7 +1,7 @@
 #include "common/gl/gpu_mesh.h"
 
 #include "common/core/error.h"
-#include "common/shader/shader_program.h"
+#include "common/gl/attribute_slots.h"
 
 #include <vector>
 

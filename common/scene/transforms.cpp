@@ -1,10 +1,9 @@
 #include "common/scene/transforms.h"
 
-#include "common/gl/gl.h"
-#include "common/scene/mesh_data.h"
-
 #include <glm/gtc/matrix_transform.hpp>
-#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <cmath>
 
 namespace gsv {
 
@@ -24,22 +23,6 @@ glm::mat4 OrbitCamera::view() const {
 glm::mat4 OrbitCamera::projection(float aspect) const {
     const float near_plane = std::max(0.01f, distance - 2.0f);
     return glm::perspective(glm::radians(fov_degrees), aspect, near_plane, distance + 10.0f);
-}
-
-void apply_transforms(const ShaderProgram& program, const Transforms& t, Profile profile) {
-    const glm::mat4 model_view = t.view * t.model;
-    if (!has_fixed_function(profile)) {
-        program.set("uModelViewProjectionMatrix", t.projection * model_view);
-        program.set("uModelViewMatrix", model_view);
-        program.set("uProjectionMatrix", t.projection);
-        program.set("uNormalMatrix", normal_matrix(model_view));
-    } else {
-        // gl_NormalMatrix is derived by GL from the modelview matrix: the same inverse-transpose.
-        glMatrixMode(GL_PROJECTION);
-        glLoadMatrixf(glm::value_ptr(t.projection));
-        glMatrixMode(GL_MODELVIEW);
-        glLoadMatrixf(glm::value_ptr(model_view));
-    }
 }
 
 }  // namespace gsv

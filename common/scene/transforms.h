@@ -1,9 +1,6 @@
 #pragma once
-// Model, view and projection for a draw, handed to shaders as uModelViewProjectionMatrix & co. in core,
-// or loaded into the fixed-function matrix stacks that feed gl_ModelViewProjectionMatrix in compat.
-#include "common/gl/gl_version.h"
-#include "common/shader/shader_program.h"
-
+// Model, view and projection for a draw, and the orbit camera every 3D lab is looked at with: matrices only, no GL
+// (common/shader/transform_uniforms.h hands them to a program).
 #include <glm/glm.hpp>
 
 namespace gsv {
@@ -24,8 +21,5 @@ struct OrbitCamera {
     glm::mat4 projection(float aspect) const;
     glm::vec3 eye() const;
 };
-
-// Must be called with `program` in use.
-void apply_transforms(const ShaderProgram& program, const Transforms& transforms, Profile profile);
 
 }  // namespace gsv

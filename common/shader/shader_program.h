@@ -3,6 +3,7 @@
 // Texture units are the program's business, not the lab's: at link time every active sampler (each element of a
 // sampler array) gets a unit of its own, so `program.bind("uVolume", texture)` is all a lab writes. Two samplers
 // of different types on one unit fail every draw; this cannot happen.
+#include "common/gl/attribute_slots.h"
 #include "common/gl/buffer_texture.h"
 #include "common/gl/gl_object.h"
 #include "common/gl/texture.h"
@@ -16,9 +17,6 @@
 #include <vector>
 
 namespace gsv {
-
-// The attribute slots every kit mesh uses; core-profile programs bind these names before linking.
-enum AttributeSlot : GLuint { kVertexSlot = 0, kNormalSlot = 1, kTexCoord0Slot = 2 };
 
 struct ProgramSpec {
     std::string name;                              // for messages: "gooch"

@@ -2,7 +2,7 @@
 // The on-screen panel of window mode: every parameter, the frame time and the last shader error.
 // Dear ImGui where the build found it (sliders, docked beside the picture), the window title otherwise (keys still
 // work).
-#include "common/app/inspect_stage.h"
+#include "common/window/inspect_stage.h"
 #include "common/params/params.h"
 #include "common/gl/gl_version.h"
 #include "common/image/legend.h"
