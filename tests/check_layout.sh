@@ -38,6 +38,51 @@ unguarded=$(find solutions labs -type f \( -name '*.cpp' -o -name '*.h' \) -exec
   }' {} + || true)
 [ -z "$unguarded" ] || breach "a lab includes reference/ outside #ifdef GSV_HAVE_REFERENCE:"$'\n'"$unguarded"
 
+# Floors (CONTRIBUTING.md, "Floors"): within common/ and within grader/src/ a folder includes only its own folder and
+# those on the floors below it, so the shared words stand on the ground floor and nothing low reaches up, or sideways,
+# for a type. The floors are read from CONTRIBUTING.md, so its map and the tree cannot part: a folder on no floor, or a
+# floor naming a folder the tree has not got, is a breach too.
+floors_of() {  # "folder floor" lines for the numbered list under "`$1/`, from the ground up:"
+  awk -v heading="\`$1/\`, from the ground up:" '
+    $0 == heading { on = 1; next }
+    !on { next }
+    /^[0-9]+\. / { floor++; head = $0; sub(/: .*/, "", head)
+                   while (match(head, /`[a-z_]+\/`/)) {
+                     print substr(head, RSTART + 1, RLENGTH - 3), floor
+                     head = substr(head, RSTART + RLENGTH)
+                   }
+                   next }
+    floor && /^   / { next }
+    floor { exit }' CONTRIBUTING.md
+}
+check_floors() {
+  local root=$1 table listed present
+  table=$(floors_of "$root")
+  if [ -z "$table" ]; then
+    breach "CONTRIBUTING.md lists no floors of $root/ (a line \"\`$root/\`, from the ground up:\" and a numbered list)"
+    return
+  fi
+  listed=$(echo "$table" | cut -d' ' -f1 | sort)
+  present=$(find "$root" -mindepth 1 -maxdepth 1 -type d -printf '%f\n' | sort)
+  local unplaced gone
+  unplaced=$(comm -13 <(echo "$listed") <(echo "$present") | tr '\n' ' ')
+  [ -z "$unplaced" ] || breach "folders of $root/ on no floor of CONTRIBUTING.md (put each on one): $unplaced"
+  gone=$(comm -23 <(echo "$listed") <(echo "$present") | tr '\n' ' ')
+  [ -z "$gone" ] || breach "CONTRIBUTING.md's floors of $root/ name folders it has not got: $gone"
+  local upward
+  upward=$(grep -rnE "^[[:space:]]*#[[:space:]]*include[[:space:]]+\"$root/[a-z_]+/" "$root" |
+           awk -v root="$root" -v table="$table" '
+    BEGIN { n = split(table, rows, "\n"); for (i = 1; i <= n; i++) { split(rows[i], f, " "); floor[f[1]] = f[2] } }
+    { file = $0; sub(/:.*/, "", file); split(substr(file, length(root) + 2), p, "/"); from = p[1]
+      to = $0; sub(/^[^"]*"/, "", to); split(substr(to, length(root) + 2), q, "/"); to = q[1]
+      if (to == from || !(from in floor) || !(to in floor)) next
+      if (floor[to] > floor[from]) print $0 "   (" from "/ is on floor " floor[from] ", " to "/ above it on " floor[to] ")"
+      else if (floor[to] == floor[from]) print $0 "   (" from "/ and " to "/ share floor " floor[from] ")" }' || true)
+  [ -z "$upward" ] || breach "$root/ includes upward or sideways (move what it needs down a floor: CONTRIBUTING.md, \"Floors\"):"$'\n'"$upward"
+}
+check_floors common
+check_floors grader/src
+
 # A lab's own file names (its shaders, its C++) have no business in the framework or the shared domain code, not even
 # in a comment: a lab's module table (lab 06's raycast_modules.cpp) names its files, and support/ generates from it.
 names=$(find solutions -mindepth 2 -maxdepth 2 -type f ! -name lab.cpp ! -name README.md -printf '%f\n' | sort -u)
@@ -45,5 +90,5 @@ for name in $names; do
   hits=$(grep -rnwF "$name" common support || true)
   [ -z "$hits" ] || breach "the framework or support/ names lab file '$name':"$'\n'"$hits"
 done
-[ $fail -eq 0 ] && echo "check_layout: common/, support/ and reference/ keep to their layers ($(find common -name '*.cpp' -o -name '*.h' | wc -l) framework files, $(find support -name '*.cpp' -o -name '*.h' | wc -l) support files, $(find reference -name '*.cpp' -o -name '*.h' 2>/dev/null | wc -l) reference files)"
+[ $fail -eq 0 ] && echo "check_layout: common/, support/ and reference/ keep to their layers, common/ and grader/src/ to their floors ($(find common -name '*.cpp' -o -name '*.h' | wc -l) framework files, $(find support -name '*.cpp' -o -name '*.h' | wc -l) support files, $(find reference -name '*.cpp' -o -name '*.h' 2>/dev/null | wc -l) reference files)"
 exit $fail
