@@ -36,6 +36,9 @@ struct Implementation {
 // llvmpipe variants and the 8-bit filter-weight stand-in (GSV_TEXEL_SNAP=256, shaders/gsv/texel_snap.glsl).
 std::vector<Implementation> known_implementations();
 
+// The share of a render that could not be compared, or that differs where the budget is 0: beyond every bar.
+inline constexpr double kInfiniteShare = std::numeric_limits<double>::infinity();
+
 inline constexpr double kCorrectBar = 0.5;  // a correct render uses under half the budget...
 // ...and a must-fail mutant is over one and a half budgets away: beyond the bar where a failing self-check is called
 // a difference between GPUs (cross_implementation_tolerance, grader/cases.h).

@@ -1,8 +1,8 @@
 #include "grader/src/run/child_process.h"
 
 #include "common/core/error.h"
-#include "common/io/data_array.h"
-#include "common/io/little_endian.h"
+#include "grader/src/run/child_start.h"
+#include "grader/src/run/handin_reader.h"
 #include "grader/src/run/uid_lease.h"
 
 #include <algorithm>
@@ -13,45 +13,11 @@
 #include <memory>
 #include <poll.h>
 #include <sys/socket.h>
-#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
-extern char** environ;
-
 namespace gsv {
 namespace {
-
-// What a lab needs from the grader's environment to get a GL context; the rest (tokens, keys, the
-// grader's own paths) stays out of student code.
-bool passes_to_student(const std::string& entry) {
-    static const char* const prefixes[] = {"MESA_", "LIBGL_", "GALLIUM_", "LP_", "EGL_", "__EGL_", "__GLX_", "GSV_",
-                                           "LD_LIBRARY_PATH=", "PATH=", "LANG=", "LC_ALL=", "ASAN_OPTIONS=",
-                                           "UBSAN_OPTIONS=", "LSAN_OPTIONS="};
-    for (const char* prefix : prefixes)
-        if (entry.rfind(prefix, 0) == 0) return true;
-    return false;
-}
-
-std::vector<std::string> child_environment(const std::filesystem::path& working_dir, bool sandboxed,
-                                           const std::vector<std::string>& additions) {
-    std::vector<std::string> env;
-    for (char** e = environ; *e; ++e)
-        if (!sandboxed || passes_to_student(*e)) env.emplace_back(*e);
-    std::vector<std::string> set = additions;
-    if (sandboxed) {
-        set.push_back("HOME=" + working_dir.string());
-        set.push_back("TMPDIR=" + working_dir.string());
-        set.push_back("XDG_CACHE_HOME=" + (working_dir / ".cache").string());
-    }
-    for (const auto& assignment : set) {
-        const std::string name = assignment.substr(0, assignment.find('=') + 1);
-        env.erase(std::remove_if(env.begin(), env.end(), [&](const std::string& e) { return e.rfind(name, 0) == 0; }),
-                  env.end());
-        env.push_back(assignment);
-    }
-    return env;
-}
 
 std::vector<char*> pointers(const std::vector<std::string>& strings) {
     std::vector<char*> p;
@@ -73,50 +39,6 @@ void make_socket_pair(Fd& grader_end, Fd& child_end, const char* what) {
         throw Error(std::string("cannot make ") + what + ": " + std::strerror(errno));
     grader_end = Fd(pair[0]);
     child_end = Fd(pair[1]);
-}
-
-// In the child, after fork: every descriptor from `first` on but `keep` closed (close_range, or where the
-// kernel lacks it a walk of /proc/self/fd with raw system calls: no allocation between fork and exec).
-void close_descriptors_from(int first, int keep) {
-#ifdef SYS_close_range
-    const unsigned lo = static_cast<unsigned>(first), hi = keep >= first ? static_cast<unsigned>(keep) : ~0u;
-    bool ok = true;
-    if (keep >= first) {
-        if (keep > first) ok = syscall(SYS_close_range, lo, hi - 1, 0) == 0;
-        ok = ok && syscall(SYS_close_range, hi + 1, ~0u, 0) == 0;
-    } else {
-        ok = syscall(SYS_close_range, lo, ~0u, 0) == 0;
-    }
-    if (ok) return;
-#endif
-    const int dir = open("/proc/self/fd", O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-    if (dir < 0) {
-        for (int fd = first; fd < 65536; ++fd)
-            if (fd != keep) close(fd);
-        return;
-    }
-    char buffer[4096];
-    for (long n; (n = syscall(SYS_getdents64, dir, buffer, sizeof buffer)) > 0;) {
-        for (long at = 0; at < n;) {
-            struct Entry {
-                unsigned long long ino;
-                long long off;
-                unsigned short reclen;
-                unsigned char type;
-                char name[1];
-            };
-            const auto* e = reinterpret_cast<const Entry*>(buffer + at);
-            int fd = 0;
-            bool number = e->name[0] != '\0';
-            for (const char* c = e->name; *c; ++c) {
-                if (*c < '0' || *c > '9') number = false;
-                else fd = fd * 10 + (*c - '0');
-            }
-            if (number && fd >= first && fd != keep && fd != dir) close(fd);
-            at += e->reclen;
-        }
-    }
-    close(dir);
 }
 
 void write_line(int fd, const char* text) { (void)!write(fd, text, std::strlen(text)); }
@@ -160,71 +82,6 @@ void Fd::reset() {
     if (fd_ >= 0) close(fd_);
     fd_ = -1;
 }
-
-// Reads the hand-in socket into whole messages, checking each header before its payload is taken.
-class ChildProcess::HandinReader {
-public:
-    explicit HandinReader(std::uint64_t max_bytes) : max_bytes_(max_bytes) {}
-
-    // Everything readable now, each chunk timed by `clock` as it is read. Throws gsv::Error to refuse.
-    void read_from(int fd, HandinConversation& conversation, const std::function<double()>& clock,
-                   const HandinConversation::Reply& reply, std::uint64_t& total) {
-        std::uint8_t chunk[65536];
-        while (true) {
-            const ssize_t n = read(fd, chunk, sizeof chunk);
-            if (n < 0 && errno == EINTR) continue;
-            if (n <= 0) {
-                if (n == 0) closed_ = true;
-                return;
-            }
-            total += static_cast<std::uint64_t>(n);
-            if (total > max_bytes_)
-                throw Error("sent more than " + std::to_string(max_bytes_ >> 20) + " MiB on the hand-in socket");
-            take(conversation, chunk, static_cast<std::size_t>(n), clock(), reply);
-        }
-    }
-    bool closed() const { return closed_; }
-    // A message begun and not finished when the process ended.
-    bool partial() const { return header_got_ > 0 || payload_left_ > 0; }
-
-private:
-    void take(HandinConversation& conversation, const std::uint8_t* data, std::size_t n, double t, const HandinConversation::Reply& reply) {
-        while (n > 0) {
-            if (header_got_ < kHandinHeaderBytes) {
-                const std::size_t k = std::min<std::size_t>(n, kHandinHeaderBytes - header_got_);
-                std::memcpy(header_ + header_got_, data, k);
-                header_got_ += k;
-                data += k;
-                n -= k;
-                if (header_got_ < kHandinHeaderBytes) return;
-                std::memcpy(message_.tag.data(), header_, 4);
-                conversation.announced(message_.tag, u32_from_le_bytes(header_ + 4));
-                payload_left_ = checked_payload_size(message_.tag, u32_from_le_bytes(header_ + 4),
-                                                     conversation.max_image_pixels(), kMaxArrayFloats);
-                message_.payload.clear();
-                message_.payload.reserve(payload_left_);
-            }
-            const std::size_t k = std::min<std::size_t>(n, payload_left_);
-            message_.payload.insert(message_.payload.end(), data, data + k);
-            data += k;
-            n -= k;
-            payload_left_ -= k;
-            if (payload_left_ == 0) {
-                HandinMessage done = std::move(message_);
-                message_ = HandinMessage{};
-                header_got_ = 0;
-                conversation.received(std::move(done), t, reply);
-            }
-        }
-    }
-
-    std::uint64_t max_bytes_;
-    std::uint8_t header_[kHandinHeaderBytes] = {};
-    std::size_t header_got_ = 0;
-    std::size_t payload_left_ = 0;
-    HandinMessage message_;
-    bool closed_ = false;
-};
 
 ChildProcess::ChildProcess(const std::vector<std::string>& argv, const std::filesystem::path& working_dir, const ProcessLimits& limits,
                            const std::vector<std::string>& environment, bool served)

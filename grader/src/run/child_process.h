@@ -38,6 +38,8 @@ private:
 // What it printed past the output cap, said at the end of its output.
 void note_cut_output(ProcessResult& result);
 
+class HandinReader;  // handin_reader.h
+
 class ChildProcess {
 public:
     using Clock = std::chrono::steady_clock;
@@ -79,7 +81,6 @@ public:
     ProcessResult result;
 
 private:
-    class HandinReader;
     void read_output();
     void read_report(bool to_the_end);
     void take_report_line(const std::string& line);
