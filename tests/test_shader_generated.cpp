@@ -9,6 +9,7 @@
 #include "common/gl/gpu_mesh.h"
 #include "common/scene/mesh_data.h"
 #include "common/shader/shader_library.h"
+#include "common/shader/compile_log.h"
 #include "common/shader/shader_source.h"
 
 #include <chrono>

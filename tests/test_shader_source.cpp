@@ -3,6 +3,7 @@
 #include "test_support.h"
 
 #include "common/core/error.h"
+#include "common/shader/compile_log.h"
 #include "common/shader/reference_compiler.h"
 #include "common/shader/shader_source.h"
 

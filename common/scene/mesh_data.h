@@ -50,7 +50,7 @@ MeshData make_torus(int major_segments, int minor_segments, float major_radius, 
 // others get (0, 0). Throws gsv::Error "cannot open OBJ file 'path'" when the file cannot be read, and
 // "path:line: what" for a malformed number, an index out of range, or a face with fewer than three
 // corners; a file without faces is an error too.
-MeshData load_obj(const std::filesystem::path& path);
+MeshData load_obj(const std::filesystem::path& path);  // obj_reader.cpp
 
 // Replaces mesh.normals with the angle-weighted average of the adjacent triangles' normals: angle
 // weighting keeps the result independent of how a flat region happens to be split into triangles.

@@ -2,6 +2,7 @@
 
 #include "common/core/error.h"
 #include "common/gl/gl_features.h"
+#include "common/shader/compile_log.h"
 
 #include <glm/gtc/type_ptr.hpp>
 

@@ -1,7 +1,7 @@
 #pragma once
 // Turns a lab's shader file into the one string handed to glShaderSource: the kit writes the #version
 // line and its defines, splices in the profile prelude and every #include, and keeps a #line map so a
-// driver's error log can be pointed back at the file and line the student actually wrote.
+// driver's error log can be pointed back at the file and line the student actually wrote (compile_log.h).
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -65,12 +65,6 @@ struct ShaderSource {
 // Limitation: #include is resolved before the GLSL preprocessor runs, so an #include inside a disabled
 // #if branch must still name a file that exists.
 ShaderSource preprocess_shader(const std::filesystem::path& main_file, const PreprocessOptions& options);
-
-// Rewrites a driver's compile/link info log so each message names the original file and line and
-// is followed by that source line indented by 4 spaces. Lines it cannot parse pass through unchanged. A message
-// the driver files under no file is placed by glslangValidator where it is installed (common/shader/reference_compiler.h),
-// else in the main file, saying so.
-std::string translate_compile_log(const std::string& log, const ShaderSource& source, ShaderStage stage = ShaderStage::Fragment);
 
 const char* stage_name(ShaderStage stage);                           // "vertex", "fragment", "tess_control", ...
 ShaderStage stage_from_extension(const std::filesystem::path& file);  // .vert .frag .geom .comp .tesc .tese
