@@ -50,187 +50,245 @@ SweepAxis sweep_axis(const Session& s) {
 
 void check_sweep_command(const Session& s) { sweep_axis(s); }
 
-int run_sweep(Session& s) {
-    const SweepAxis axis = sweep_axis(s);
-    s.params.check_applies({axis.name}, "sweep: the swept parameter ");
-    const std::filesystem::path dir = s.options.out_dir.empty() ? "sweep-" + s.info.id : s.options.out_dir;
-    prepare_output_folder(dir, "--out-dir");
-    const std::string knob_name = axis.name;
-    const std::vector<std::string> knob_values = axis.values;
+namespace {
+
+// What is swept: the knob's values, on each curve of the lab's series (or one curve), written where --out-dir says.
+struct SweepPlan {
+    SweepAxis axis;
+    std::string series_name;                  // empty: one curve
     std::vector<std::string> series_values{""};
-    std::string series_name;
+    std::filesystem::path dir;
+};
+
+SweepPlan plan_sweep(Session& s) {
+    SweepPlan plan;
+    plan.axis = sweep_axis(s);
+    s.params.check_applies({plan.axis.name}, "sweep: the swept parameter ");
+    plan.dir = s.options.out_dir.empty() ? "sweep-" + s.info.id : s.options.out_dir;
+    prepare_output_folder(plan.dir, "--out-dir");
     if (const ParamSpec* series = s.params.series()) {
-        series_name = series->name;
-        series_values = series->choices;
+        plan.series_name = series->name;
+        plan.series_values = series->choices;
         // `--set integrator=rk4` asks for one curve, not all of them.
         for (const auto& assignment : s.options.assignments)
-            if (assignment.rfind(series_name + "=", 0) == 0) series_values = {s.params.get_text(series_name)};
+            if (assignment.rfind(plan.series_name + "=", 0) == 0) plan.series_values = {s.params.get_text(plan.series_name)};
+    }
+    return plan;
+}
+
+std::string point_name(const std::vector<std::string>& settings) {
+    std::string name;
+    for (const auto& setting : settings) name += (name.empty() ? "" : " ") + setting;
+    return name;
+}
+
+// One sweep, in the order it runs: each point's error against the reference first, then the reference named (and its
+// convergence shown where the lab says how to refine it), then every point timed, interleaved with the others.
+class SweepRun {
+public:
+    SweepRun(Session& s, const SweepPlan& plan)
+        : s_(s), plan_(plan), knob_name_(plan.axis.name), knob_values_(plan.axis.values), series_name_(plan.series_name),
+          series_values_(plan.series_values) {
+        s.open(s.options.backend.value_or(Backend::Egl));
+        target_ = Framebuffer(s.options.width, s.options.height, ColorFormat::RGBA8);
+        frame_ = Frame{s.options.width, s.options.height, 0.0};
+        warmup_ = s.options.warmup >= 0 ? s.options.warmup : 2;
+        const int frames = s.options.frames > 0 ? s.options.frames : 9;
+        // Frames are timed in rounds over every point (A B C ... A B C ...): three rounds where the frames allow.
+        rounds_ = std::min(3, frames);
+        frames_per_round_ = std::max(1, frames / rounds_);
+        base_ = s.params;
+
+        // The lab's reference belongs to its own knob; another knob converges at its last value.
+        if (plan.axis.lab_knob) reference_settings_ = s.lab->sweep_reference();
+        if (reference_settings_.empty()) reference_settings_.push_back(knob_name_ + "=" + knob_values_.back());
+        // One reference, or one per series value, drawn when first needed: not at all where the lab draws exact ones.
+        per_series_ = s.lab->sweep_reference_per_series() && !series_name_.empty();
+        references_.resize(per_series_ ? series_values_.size() : 1);
+
+        report_.lab = s.info.id;
+        report_.knob = knob_name_;
+        report_.series = series_name_;
+        report_.reference = reference_settings_;
+        if (per_series_) report_.reference.push_back(series_name_ + "=<each curve's>");
+        report_.gl = s.context->describe();
+        report_.width = s.options.width;
+        report_.height = s.options.height;
+        report_.plotted_error = s.lab->sweep_error_column();
+
+        // Each point is a step of the progress line, and so is each switch to it while timing (once to size its
+        // batches, then once a round).
+        planned_points_ = static_cast<int>(series_values_.size() * knob_values_.size());
+        progress_.emplace("sweep " + s.info.id, planned_points_ * (2 + rounds_));
     }
 
-    s.open(s.options.backend.value_or(Backend::Egl));
-    const int width = s.options.width, height = s.options.height;
-    Framebuffer target(width, height, ColorFormat::RGBA8);
-    const Frame frame{width, height, 0.0};
-    const int warmup = s.options.warmup >= 0 ? s.options.warmup : 2;
-    const int frames = s.options.frames > 0 ? s.options.frames : 9;
-    // Frames are timed in rounds over every point (A B C ... A B C ...): three rounds where the frames allow.
-    const int rounds = std::min(3, frames);
-    const int frames_per_round = std::max(1, frames / rounds);
-    const Params base = s.params;
-
-    auto use = [&](const std::vector<std::string>& settings) {
-        s.params = base;
-        for (const auto& setting : settings) s.params.set_assignment(setting);
-        if (auto error = s.sync_params()) throw Error(*error);
-    };
-    auto draw = [&] {
-        target.bind();
-        s.render_frame(frame);
-    };
-    auto image_with = [&](const std::vector<std::string>& settings) {
-        use(settings);
-        time_frames(draw, 1, 1);
-        check_gl_error("rendering a sweep point");
-        return target.read_rgba8();
-    };
-
-    // The lab's reference belongs to its own knob; another knob converges at its last value.
-    std::vector<std::string> reference_settings = axis.lab_knob ? s.lab->sweep_reference() : std::vector<std::string>{};
-    if (reference_settings.empty()) reference_settings.push_back(knob_name + "=" + knob_values.back());
-    // One reference, or one per series value, drawn when first needed: not at all where the lab draws exact ones.
-    const bool per_series = s.lab->sweep_reference_per_series() && !series_name.empty();
-    std::vector<std::optional<Image>> references(per_series ? series_values.size() : 1);
-    auto reference_of = [&](std::size_t curve) -> const Image& {
-        std::optional<Image>& reference = references[per_series ? curve : 0];
-        if (!reference) {
-            std::vector<std::string> settings = reference_settings;
-            if (per_series) settings.push_back(series_name + "=" + series_values[curve]);
-            reference = image_with(settings);
-        }
-        return *reference;
-    };
-
-    SweepReport report;
-    report.lab = s.info.id;
-    report.knob = knob_name;
-    report.series = series_name;
-    report.reference = reference_settings;
-    if (per_series) report.reference.push_back(series_name + "=<each curve's>");
-    report.gl = s.context->describe();
-    report.width = width;
-    report.height = height;
-    report.plotted_error = s.lab->sweep_error_column();
-
-    // First what each point draws and how far it is from the reference; the times after, interleaved. Each
-    // point is a step of the progress line, and so is each switch to it while timing (once to size its
-    // batches, then once a round).
-    const int planned_points = static_cast<int>(series_values.size() * knob_values.size());
-    Progress progress("sweep " + s.info.id, planned_points * (2 + rounds));
-    auto point_name = [&](const std::vector<std::string>& settings) {
-        std::string name;
-        for (const auto& setting : settings) name += (name.empty() ? "" : " ") + setting;
-        return name;
-    };
-    std::vector<std::vector<std::string>> point_settings;
-    int left_out = 0;
-    bool exact = false;
-    for (std::size_t curve = 0; curve < series_values.size(); ++curve) {
-        const std::string& series_value = series_values[curve];
-        for (const auto& knob_value : knob_values) {
-            std::vector<std::string> settings{knob_name + "=" + knob_value};
-            if (!series_name.empty()) settings.push_back(series_name + "=" + series_value);
-            Image image;
-            try {
-                image = image_with(settings);
-            } catch (const UnsupportedError& e) {
-                // A point this GPU cannot draw (lab 03's separate textures past the unit limit) is left out,
-                // said once, and the rest of the sweep goes on.
-                progress.finish();
-                std::fprintf(stderr, "  %s=%s %s=%s: left out: %s\n", series_name.c_str(), series_value.c_str(),
-                             knob_name.c_str(), knob_value.c_str(), e.what());
-                ++left_out;  // a step now, and none while timing
-                progress.set_total(planned_points * (2 + rounds) - left_out * (1 + rounds));
-                progress.step("left out " + point_name(settings));
-                continue;
-            }
-            const std::optional<Image> exact_image = axis.lab_knob ? s.lab->sweep_exact_image(*s.kit, frame) : std::nullopt;
-            exact = exact || exact_image.has_value();
-            SweepRow row;
-            row.series = series_value;
-            row.knob = knob_value;
-            row.extra = s.lab->sweep_metrics(*s.kit, frame);  // while this point's settings are current
-            const ImageDiff diff = compare_images(image, exact_image ? *exact_image : reference_of(curve), ImageTolerance{});
-            row.rmse = diff.rmse;
-            row.max_diff = diff.max_channel_diff;
-            report.rows.push_back(row);
-            point_settings.push_back(settings);
-            progress.step("error of " + point_name(settings));
-        }
+    void measure_errors() {
+        for (std::size_t curve = 0; curve < series_values_.size(); ++curve)
+            for (const auto& knob_value : knob_values_) measure_error(curve, knob_value);
     }
 
     // The reference in words, and whether it is shown to be converged.
-    const std::string named = axis.lab_knob ? s.lab->sweep_reference_name() : std::string();
-    std::string joined;
-    for (const auto& r : reference_settings) joined += (joined.empty() ? "" : " ") + r;
-    if (exact) {
-        report.reference_name = named.empty() ? "an exact image the lab draws" : named;
-    } else {
-        const bool lab_reference = axis.lab_knob && !s.lab->sweep_reference().empty();
-        report.reference_name = !named.empty()   ? named + " (" + joined + ")"
-                                : lab_reference ? joined
-                                                : joined + " (the last value swept; not shown converged)";
-        const std::vector<std::string> refinement = axis.lab_knob ? s.lab->sweep_reference_refinement() : std::vector<std::string>{};
-        if (!refinement.empty()) {
-            // Each reference against its own refinement; the worst of them is reported, beside the smallest
-            // error measured against it.
-            std::string next;
-            for (const auto& r : refinement) next += (next.empty() ? "" : " ") + r;
-            bool converged = true;
-            double worst_change = 0, smallest_beside = 0;
-            for (std::size_t i = 0; i < references.size(); ++i) {
-                std::vector<std::string> settings = refinement;
-                if (per_series) settings.push_back(series_name + "=" + series_values[i]);
-                const Image& reference = reference_of(i);
-                const double change = compare_images(image_with(settings), reference, ImageTolerance{}).rmse;
-                double smallest = -1;
-                for (const auto& r : report.rows)
-                    if ((!per_series || r.series == series_values[i]) && r.rmse > 0 && (smallest < 0 || r.rmse < smallest))
-                        smallest = r.rmse;
-                if (i == 0 || change > worst_change) worst_change = change, smallest_beside = smallest;
-                if (smallest >= 0 && change >= smallest) converged = false;
-            }
-            report.reference_name += std::string(converged ? "; converged: " : "; NOT shown converged: ") + "its refinement " + next +
-                                     " changes it by RMSE " + format_number(worst_change, 3);
-            if (smallest_beside >= 0)
-                report.reference_name += std::string(converged ? ", below" : ", not below") + " the smallest error measured against it, " +
-                                         format_number(smallest_beside, 3);
+    void name_reference() {
+        const std::string named = plan_.axis.lab_knob ? s_.lab->sweep_reference_name() : std::string();
+        const std::string joined = point_name(reference_settings_);
+        if (exact_) {
+            report_.reference_name = named.empty() ? "an exact image the lab draws" : named;
+            return;
         }
+        const bool lab_reference = plan_.axis.lab_knob && !s_.lab->sweep_reference().empty();
+        report_.reference_name = !named.empty()   ? named + " (" + joined + ")"
+                                 : lab_reference ? joined
+                                                 : joined + " (the last value swept; not shown converged)";
+        const std::vector<std::string> refinement =
+            plan_.axis.lab_knob ? s_.lab->sweep_reference_refinement() : std::vector<std::string>{};
+        if (!refinement.empty()) show_convergence(refinement);
     }
 
-    std::vector<TimedWork> work;
-    for (const auto& settings : point_settings)
-        work.push_back({[&, settings] {
-                            use(settings);
-                            progress.step("timing " + point_name(settings));
-                        },
-                        draw});
-    const std::vector<TimingStats> times = time_interleaved(work, warmup, frames_per_round, rounds).stats;
-    progress.finish();
-    for (std::size_t i = 0; i < report.rows.size(); ++i) {
-        SweepRow& row = report.rows[i];
-        row.median_ms = times[i].median_ms;
-        row.min_ms = times[i].min_ms;
-        row.p25_ms = times[i].p25_ms;
-        row.p75_ms = times[i].p75_ms;
-        std::fprintf(stderr, "  %s%s%s %s=%s: %.3f ms [%.3f, %.3f], rmse %.3f\n", series_name.c_str(), series_name.empty() ? "" : "=",
-                     row.series.c_str(), knob_name.c_str(), row.knob.c_str(), row.median_ms, row.p25_ms, row.p75_ms, row.rmse);
+    void time_points() {
+        std::vector<TimedWork> work;
+        for (const auto& settings : point_settings_)
+            work.push_back({[this, settings] {
+                                use(settings);
+                                progress_->step("timing " + point_name(settings));
+                            },
+                            [this] { draw(); }});
+        const std::vector<TimingStats> times = time_interleaved(work, warmup_, frames_per_round_, rounds_).stats;
+        progress_->finish();
+        for (std::size_t i = 0; i < report_.rows.size(); ++i) {
+            SweepRow& row = report_.rows[i];
+            row.median_ms = times[i].median_ms;
+            row.min_ms = times[i].min_ms;
+            row.p25_ms = times[i].p25_ms;
+            row.p75_ms = times[i].p75_ms;
+            std::fprintf(stderr, "  %s%s%s %s=%s: %.3f ms [%.3f, %.3f], rmse %.3f\n", series_name_.c_str(),
+                         series_name_.empty() ? "" : "=", row.series.c_str(), knob_name_.c_str(), row.knob.c_str(),
+                         row.median_ms, row.p25_ms, row.p75_ms, row.rmse);
+        }
+        s_.params = base_;
     }
-    s.params = base;
 
-    std::printf("%s", report.table().c_str());
-    const auto files = report.write(dir);
-    for (const auto& f : files) std::printf("wrote %s\n", f.c_str());
-    return kExitOk;
+    int write() {
+        std::printf("%s", report_.table().c_str());
+        const auto files = report_.write(plan_.dir);
+        for (const auto& f : files) std::printf("wrote %s\n", f.c_str());
+        return kExitOk;
+    }
+
+private:
+    void use(const std::vector<std::string>& settings) {
+        s_.params = base_;
+        for (const auto& setting : settings) s_.params.set_assignment(setting);
+        if (auto error = s_.sync_params()) throw Error(*error);
+    }
+    void draw() {
+        target_.bind();
+        s_.render_frame(frame_);
+    }
+    Image image_with(const std::vector<std::string>& settings) {
+        use(settings);
+        time_frames([this] { draw(); }, 1, 1);
+        check_gl_error("rendering a sweep point");
+        return target_.read_rgba8();
+    }
+    const Image& reference_of(std::size_t curve) {
+        std::optional<Image>& reference = references_[per_series_ ? curve : 0];
+        if (!reference) {
+            std::vector<std::string> settings = reference_settings_;
+            if (per_series_) settings.push_back(series_name_ + "=" + series_values_[curve]);
+            reference = image_with(settings);
+        }
+        return *reference;
+    }
+
+    // What one point draws, and how far it is from the reference (an exact image of the lab's, or the curve's).
+    void measure_error(std::size_t curve, const std::string& knob_value) {
+        const std::string& series_value = series_values_[curve];
+        std::vector<std::string> settings{knob_name_ + "=" + knob_value};
+        if (!series_name_.empty()) settings.push_back(series_name_ + "=" + series_value);
+        Image image;
+        try {
+            image = image_with(settings);
+        } catch (const UnsupportedError& e) {
+            // A point this GPU cannot draw (lab 03's separate textures past the unit limit) is left out, said once,
+            // and the rest of the sweep goes on.
+            progress_->finish();
+            std::fprintf(stderr, "  %s=%s %s=%s: left out: %s\n", series_name_.c_str(), series_value.c_str(),
+                         knob_name_.c_str(), knob_value.c_str(), e.what());
+            ++left_out_;  // a step now, and none while timing
+            progress_->set_total(planned_points_ * (2 + rounds_) - left_out_ * (1 + rounds_));
+            progress_->step("left out " + point_name(settings));
+            return;
+        }
+        const std::optional<Image> exact_image =
+            plan_.axis.lab_knob ? s_.lab->sweep_exact_image(*s_.kit, frame_) : std::nullopt;
+        exact_ = exact_ || exact_image.has_value();
+        SweepRow row;
+        row.series = series_value;
+        row.knob = knob_value;
+        row.extra = s_.lab->sweep_metrics(*s_.kit, frame_);  // while this point's settings are current
+        const ImageDiff diff = compare_images(image, exact_image ? *exact_image : reference_of(curve), ImageTolerance{});
+        row.rmse = diff.rmse;
+        row.max_diff = diff.max_channel_diff;
+        report_.rows.push_back(row);
+        point_settings_.push_back(settings);
+        progress_->step("error of " + point_name(settings));
+    }
+
+    // Each reference against its own refinement; the worst of them is reported, beside the smallest error measured
+    // against it.
+    void show_convergence(const std::vector<std::string>& refinement) {
+        const std::string next = point_name(refinement);
+        bool converged = true;
+        double worst_change = 0, smallest_beside = 0;
+        for (std::size_t i = 0; i < references_.size(); ++i) {
+            std::vector<std::string> settings = refinement;
+            if (per_series_) settings.push_back(series_name_ + "=" + series_values_[i]);
+            const Image& reference = reference_of(i);
+            const double change = compare_images(image_with(settings), reference, ImageTolerance{}).rmse;
+            double smallest = -1;
+            for (const auto& r : report_.rows)
+                if ((!per_series_ || r.series == series_values_[i]) && r.rmse > 0 && (smallest < 0 || r.rmse < smallest))
+                    smallest = r.rmse;
+            if (i == 0 || change > worst_change) worst_change = change, smallest_beside = smallest;
+            if (smallest >= 0 && change >= smallest) converged = false;
+        }
+        report_.reference_name += std::string(converged ? "; converged: " : "; NOT shown converged: ") + "its refinement " +
+                                  next + " changes it by RMSE " + format_number(worst_change, 3);
+        if (smallest_beside >= 0)
+            report_.reference_name += std::string(converged ? ", below" : ", not below") +
+                                      " the smallest error measured against it, " + format_number(smallest_beside, 3);
+    }
+
+    Session& s_;
+    const SweepPlan& plan_;
+    const std::string knob_name_;
+    const std::vector<std::string> knob_values_;
+    const std::string series_name_;
+    const std::vector<std::string> series_values_;
+    Framebuffer target_;
+    Frame frame_{};
+    int warmup_ = 0, rounds_ = 0, frames_per_round_ = 0;
+    Params base_;
+    std::vector<std::string> reference_settings_;
+    bool per_series_ = false;
+    std::vector<std::optional<Image>> references_;
+    SweepReport report_;
+    int planned_points_ = 0;
+    std::optional<Progress> progress_;
+    std::vector<std::vector<std::string>> point_settings_;
+    int left_out_ = 0;
+    bool exact_ = false;
+};
+
+}  // namespace
+
+int run_sweep(Session& s) {
+    const SweepPlan plan = plan_sweep(s);
+    SweepRun run(s, plan);
+    run.measure_errors();
+    run.name_reference();
+    run.time_points();
+    return run.write();
 }
 
 }  // namespace gsv

@@ -20,6 +20,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <memory>
+#include <optional>
 #include <string>
 #include <thread>
 
@@ -223,168 +225,251 @@ void write_screenshot(const std::string& path, const Image& image) {
     std::printf("wrote %s\n", path.c_str());
 }
 
+// Opens the window with its panel docked beside the picture (--size is the picture's size, the window is wider) and
+// sets the lab's first values.
+std::unique_ptr<WindowPanel> open_window(Session& s) {
+    s.open(Backend::Window, default_panel_width());
+    if (auto error = s.sync_params()) throw Error(*error);
+    GLFWwindow* window = s.context->window();
+    auto panel = make_window_panel(window, s.kit->profile(), s.context->effective_version());
+    if (panel->width() != default_panel_width()) glfwSetWindowSize(window, s.options.width + panel->width(), s.options.height);
+    return panel;
+}
+
+// "OpenGL ES 3.0 on llvmpipe": the version the kit holds the lab to, which a room comparing profiles reads first.
+std::string gl_line(const Session& s) {
+    const std::string& renderer = s.context->info().renderer;
+    return api_name(s.context->info().profile, s.context->effective_version()) + " on " + renderer.substr(0, renderer.find(" ("));
+}
+
+// The window's sizes this frame: the whole framebuffer, and the picture's part of it beside the panel.
+struct WindowSize {
+    int window_w = 0, window_h = 0, framebuffer_w = 0, framebuffer_h = 0;
+    double density = 1;  // framebuffer pixels per window unit
+    int width = 0, height = 0;  // the picture's
+};
+
+// The window's frames, each in the same steps: input, reloaded shaders, changed values, the lab's picture, what is
+// shown in its place, a screenshot, the legend, then the window composed and swapped.
+class WindowLoop {
+public:
+    WindowLoop(Session& s, WindowPanel& panel, std::vector<ScriptedKey> scripted_keys)
+        : s_(s), window_(s.context->window()), panel_(panel), scripted_keys_(std::move(scripted_keys)),
+          panel_state_{s.params, input_.selected, 0, 0, s.title(), gl_line(s), "", "", {}, "", std::nullopt},
+          start_(now_seconds()), last_reload_check_(start_), last_frame_(start_), last_good_(s.params) {
+        input_.session = &s;
+        input_.panel = &panel;
+        input_.panel_state = &panel_state_;
+        glfwSetWindowUserPointer(window_, &input_);
+        glfwSetKeyCallback(window_, on_key);
+        glfwSetMouseButtonCallback(window_, on_mouse_button);
+        glfwSetCursorPosCallback(window_, on_cursor);
+        glfwSetScrollCallback(window_, on_scroll);
+        std::printf("%s", kControls);
+        std::fflush(stdout);
+    }
+    WindowLoop(const WindowLoop&) = delete;
+    WindowLoop& operator=(const WindowLoop&) = delete;
+
+    void run() {
+        while (!glfwWindowShouldClose(window_)) {
+            const double now = take_input();
+            reload_shaders(now);
+            apply_changed_values();
+            const std::optional<WindowSize> size = window_size();
+            if (!size) {  // minimised
+                glfwWaitEvents();
+                continue;
+            }
+            if (!draw_picture(*size, now)) continue;
+            show_in_place();
+            const std::string window_shot = take_screenshot();
+            refresh_legend();
+            compose(*size, window_shot);
+            if (finish_frame()) break;
+        }
+        check_gl_error("the window loop");
+    }
+
+private:
+    // Events, scripted keys and the animation's step; the time now.
+    double take_input() {
+        glfwPollEvents();
+        press_scripted_keys(window_, scripted_keys_, frame_index_ + 1);
+        const double now = now_seconds();
+        if (input_.playing) {
+            play_animation(s_.params, now - last_frame_);
+            input_.params_changed = true;
+        }
+        last_frame_ = now;
+        return now;
+    }
+
+    void reload_shaders(double now) {
+        if (!input_.reload && now - last_reload_check_ <= 0.25) return;
+        last_reload_check_ = now;
+        legend_stale_ = true;  // a saved colour function shows in the legend too
+        std::optional<std::string> error = input_.reload ? s_.kit->shaders().rebuild_all(param_defines(s_.params))
+                                                         : s_.kit->shaders().reload_changed(param_defines(s_.params));
+        if (error) {
+            // Keep drawing with the last good program; show and print what broke.
+            panel_state_.status = *error;
+            std::fprintf(stderr, "%s\n", error->c_str());
+        } else if (input_.reload) {
+            panel_state_.status.clear();
+        }
+        input_.reload = false;
+    }
+
+    // A value the lab refuses (a GL limit, a missing file) must not end a live demo: say why and go back to the last
+    // values that drew.
+    void refuse(const std::exception& e) {
+        panel_state_.status = e.what();
+        std::fprintf(stderr, "%s\n", e.what());
+        s_.params = last_good_;
+        if (auto error = s_.sync_params()) std::fprintf(stderr, "%s\n", error->c_str());
+    }
+
+    void apply_changed_values() {
+        if (!input_.params_changed) return;
+        input_.params_changed = false;
+        legend_stale_ = true;
+        try {
+            if (auto error = s_.sync_params()) {
+                panel_state_.status = *error;
+                std::fprintf(stderr, "%s\n", error->c_str());
+            }
+        } catch (const Error& e) {
+            refuse(e);
+        }
+    }
+
+    // None while the window is minimised.
+    std::optional<WindowSize> window_size() const {
+        WindowSize size;
+        glfwGetWindowSize(window_, &size.window_w, &size.window_h);
+        glfwGetFramebufferSize(window_, &size.framebuffer_w, &size.framebuffer_h);
+        if (size.framebuffer_w == 0 || size.framebuffer_h == 0 || size.window_w == 0) return std::nullopt;
+        size.density = static_cast<double>(size.framebuffer_w) / size.window_w;
+        const int panel_w = input_.panel_shown ? std::min(size.framebuffer_w - 1, static_cast<int>(std::lround(panel_.width() * size.density)))
+                                               : 0;
+        size.width = size.framebuffer_w - panel_w;
+        size.height = size.framebuffer_h;
+        return size;
+    }
+
+    // The lab draws into the picture, as headless; false where it refused the values (the last good ones are back).
+    bool draw_picture(const WindowSize& size, double now) {
+        if (picture_.width() != size.width || picture_.height() != size.height)
+            picture_ = Framebuffer(size.width, size.height, ColorFormat::RGBA8);
+        picture_.bind();
+        const double t0 = now_seconds();
+        try {
+            s_.render_frame(Frame{size.width, size.height, now - start_, true});
+            last_good_ = s_.params;
+        } catch (const Error& e) {
+            if (frame_index_ == 0) throw;  // the values the lab started with: nothing good to go back to
+            refuse(e);
+            return false;
+        }
+        glFinish();
+        panel_state_.render_ms = 1000.0 * (now_seconds() - t0);
+        ++frame_index_;
+        return true;
+    }
+
+    bool screenshot_due() const { return input_.screenshot || frame_index_ == s_.options.screenshot_after; }
+
+    // A stage image, or the reference's view, in place of the picture.
+    void show_in_place() {
+        panel_state_.stages = s_.lab->inspect_stages();
+        if (!panel_state_.inspected.empty()) show_inspected(s_, panel_state_, image_view_, picture_);
+        else if (input_.view != PictureView::Yours)
+            show_beside_reference(s_, input_.view, panel_state_, live_reference_, image_view_, picture_, screenshot_due());
+        else panel_state_.view.clear();
+    }
+
+    // A screenshot is the picture as headless draws it, and beside it the window as the room sees it: the window's
+    // file, written once the window is composed; empty when none is due.
+    std::string take_screenshot() {
+        if (!screenshot_due()) return "";
+        std::string path = s_.options.out;
+        if (path.empty() || screenshot_count_ > 0) path = s_.info.id + "-screenshot-" + std::to_string(screenshot_count_) + ".png";
+        write_screenshot(path, picture_.read_rgba8());
+        const auto stem = std::filesystem::path(path).replace_extension().string();
+        for (const auto& file : s_.lab->write_debug_images(*s_.kit, stem + "-debug")) std::printf("wrote %s\n", file.string().c_str());
+        ++screenshot_count_;
+        input_.screenshot = false;
+        return stem + "-window.png";
+    }
+
+    // Before the window's own framebuffer is bound: the legend draws its probe elsewhere.
+    void refresh_legend() {
+        if (!legend_stale_) return;
+        legend_stale_ = false;
+        try {
+            panel_state_.legend = s_.lab->legend(*s_.kit);
+        } catch (const Error& e) {
+            panel_state_.legend.reset();
+            panel_state_.status = e.what();
+        }
+    }
+
+    void compose(const WindowSize& size, const std::string& window_shot) {
+        Framebuffer::bind_default(size.framebuffer_w, size.framebuffer_h);
+        glClearColor(0.06f, 0.06f, 0.07f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, picture_.id());
+        glBlitFramebuffer(0, 0, size.width, size.height, 0, 0, size.width, size.height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+        if (input_.panel_shown || panel_.width() == 0) {  // the title panel takes no room: always drawn
+            const float x = static_cast<float>(size.width / size.density);
+            if (panel_.draw(panel_state_, PanelPlacement{x, static_cast<float>(size.window_w) - x, static_cast<float>(size.window_h)}))
+                input_.params_changed = true;
+        }
+        if (!window_shot.empty()) {
+            glReadBuffer(GL_BACK);
+            write_screenshot(window_shot, read_current_framebuffer(size.framebuffer_w, size.framebuffer_h));
+        }
+    }
+
+    // Swapped and timed; whether --quit-after's frames or seconds are up.
+    bool finish_frame() {
+        std::fflush(stdout);
+        s_.context->swap_buffers();
+        clock_.tick();
+        panel_state_.frame_ms = clock_.smoothed_ms();
+        if (s_.options.quit_after > 0 && frame_index_ >= s_.options.quit_after) return true;
+        return s_.options.quit_after_s > 0 && now_seconds() - start_ >= s_.options.quit_after_s;
+    }
+
+    Session& s_;
+    GLFWwindow* window_;
+    WindowPanel& panel_;
+    const std::vector<ScriptedKey> scripted_keys_;
+    WindowInput input_;
+    PanelState panel_state_;  // holds input_.selected: after input_
+    ImageView image_view_;
+    LiveReference live_reference_;
+    FrameClock clock_;
+    const double start_;
+    double last_reload_check_, last_frame_;
+    int frame_index_ = 0;
+    int screenshot_count_ = 0;
+    bool legend_stale_ = true;  // what the colours stand for: asked again after a change, not every frame
+    Params last_good_;
+    Framebuffer picture_;  // the lab draws here, as headless, then the picture is copied beside the panel
+};
+
 }  // namespace
 
 int run_window(Session& s) {
     if (s.options.backend && *s.options.backend != Backend::Window)
         throw Error(std::string("window mode draws in a window; --backend ") + backend_name(*s.options.backend) +
                     " is for render and sweep");
-    const std::vector<ScriptedKey> scripted_keys = parse_scripted_keys(s.options.presses);
-    // The panel docks in a column beside the picture: --size is the picture's size, the window is wider.
-    s.open(Backend::Window, default_panel_width());
-    if (auto error = s.sync_params()) throw Error(*error);
-    GLFWwindow* window = s.context->window();
-    auto panel = make_window_panel(window, s.kit->profile(), s.context->effective_version());
-    if (panel->width() != default_panel_width()) glfwSetWindowSize(window, s.options.width + panel->width(), s.options.height);
-
-    WindowInput input;
-    input.session = &s;
-    input.panel = panel.get();
-    glfwSetWindowUserPointer(window, &input);
-    glfwSetKeyCallback(window, on_key);
-    glfwSetMouseButtonCallback(window, on_mouse_button);
-    glfwSetCursorPosCallback(window, on_cursor);
-    glfwSetScrollCallback(window, on_scroll);
-    std::printf("%s", kControls);
-    std::fflush(stdout);
-
-    // "OpenGL ES 3.0 on llvmpipe": the version the kit holds the lab to, which a room comparing profiles reads first.
-    const std::string& renderer = s.context->info().renderer;
-    const std::string gl_line = api_name(s.context->info().profile, s.context->effective_version()) + " on " +
-                                renderer.substr(0, renderer.find(" ("));
-    PanelState panel_state{s.params, input.selected, 0, 0, s.title(), gl_line, "", "", {}, "", std::nullopt};
-    input.panel_state = &panel_state;
-    ImageView image_view;
-    LiveReference live_reference;
-    FrameClock clock;
-    const double start = now_seconds();
-    double last_reload_check = start;
-    double last_frame = start;
-    int frame_index = 0;
-    int screenshot_count = 0;
-    bool legend_stale = true;  // what the colours stand for: asked again after a change, not every frame
-    Params last_good = s.params;
-    Framebuffer picture;  // the lab draws here, as headless, then the picture is copied beside the panel
-    while (!glfwWindowShouldClose(window)) {
-        glfwPollEvents();
-        press_scripted_keys(window, scripted_keys, frame_index + 1);
-        const double now = now_seconds();
-        if (input.playing) {
-            play_animation(s.params, now - last_frame);
-            input.params_changed = true;
-        }
-        last_frame = now;
-        if (input.reload || now - last_reload_check > 0.25) {
-            last_reload_check = now;
-            legend_stale = true;  // a saved colour function shows in the legend too
-            std::optional<std::string> error = input.reload ? s.kit->shaders().rebuild_all(param_defines(s.params))
-                                                            : s.kit->shaders().reload_changed(param_defines(s.params));
-            if (error) {
-                // Keep drawing with the last good program; show and print what broke.
-                panel_state.status = *error;
-                std::fprintf(stderr, "%s\n", error->c_str());
-            } else if (input.reload) {
-                panel_state.status.clear();
-            }
-            input.reload = false;
-        }
-        // A value the lab refuses (a GL limit, a missing file) must not end a live demo: say why and go back
-        // to the last values that drew.
-        auto refuse = [&](const std::exception& e) {
-            panel_state.status = e.what();
-            std::fprintf(stderr, "%s\n", e.what());
-            s.params = last_good;
-            if (auto error = s.sync_params()) std::fprintf(stderr, "%s\n", error->c_str());
-        };
-        if (input.params_changed) {
-            input.params_changed = false;
-            legend_stale = true;
-            try {
-                if (auto error = s.sync_params()) {
-                    panel_state.status = *error;
-                    std::fprintf(stderr, "%s\n", error->c_str());
-                }
-            } catch (const Error& e) {
-                refuse(e);
-            }
-        }
-
-        int window_w = 0, window_h = 0, framebuffer_w = 0, framebuffer_h = 0;
-        glfwGetWindowSize(window, &window_w, &window_h);
-        glfwGetFramebufferSize(window, &framebuffer_w, &framebuffer_h);
-        if (framebuffer_w == 0 || framebuffer_h == 0 || window_w == 0) {  // minimised
-            glfwWaitEvents();
-            continue;
-        }
-        const double density = static_cast<double>(framebuffer_w) / window_w;
-        const int panel_w = input.panel_shown ? std::min(framebuffer_w - 1, static_cast<int>(std::lround(panel->width() * density))) : 0;
-        const int width = framebuffer_w - panel_w, height = framebuffer_h;
-        if (picture.width() != width || picture.height() != height) picture = Framebuffer(width, height, ColorFormat::RGBA8);
-        picture.bind();
-        const double t0 = now_seconds();
-        try {
-            s.render_frame(Frame{width, height, now - start, true});
-            last_good = s.params;
-        } catch (const Error& e) {
-            if (frame_index == 0) throw;  // the values the lab started with: nothing good to go back to
-            refuse(e);
-            continue;
-        }
-        glFinish();
-        panel_state.render_ms = 1000.0 * (now_seconds() - t0);
-        ++frame_index;
-        panel_state.stages = s.lab->inspect_stages();
-        if (!panel_state.inspected.empty()) show_inspected(s, panel_state, image_view, picture);
-        else if (input.view != PictureView::Yours)
-            show_beside_reference(s, input.view, panel_state, live_reference, image_view, picture,
-                                  input.screenshot || frame_index == s.options.screenshot_after);
-        else panel_state.view.clear();
-
-        // A screenshot is the picture as headless draws it, and beside it the window as the room sees it.
-        std::string window_shot;
-        if (input.screenshot || frame_index == s.options.screenshot_after) {
-            std::string path = s.options.out;
-            if (path.empty() || screenshot_count > 0)
-                path = s.info.id + "-screenshot-" + std::to_string(screenshot_count) + ".png";
-            write_screenshot(path, picture.read_rgba8());
-            const auto stem = std::filesystem::path(path).replace_extension().string();
-            for (const auto& file : s.lab->write_debug_images(*s.kit, stem + "-debug")) std::printf("wrote %s\n", file.string().c_str());
-            window_shot = stem + "-window.png";
-            ++screenshot_count;
-            input.screenshot = false;
-        }
-        if (legend_stale) {  // before the window's own framebuffer is bound: the legend draws its probe elsewhere
-            legend_stale = false;
-            try {
-                panel_state.legend = s.lab->legend(*s.kit);
-            } catch (const Error& e) {
-                panel_state.legend.reset();
-                panel_state.status = e.what();
-            }
-        }
-        Framebuffer::bind_default(framebuffer_w, framebuffer_h);
-        glClearColor(0.06f, 0.06f, 0.07f, 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, picture.id());
-        glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-        if (input.panel_shown || panel->width() == 0) {  // the title panel takes no room: always drawn
-            const float x = static_cast<float>(width / density);
-            if (panel->draw(panel_state, PanelPlacement{x, static_cast<float>(window_w) - x, static_cast<float>(window_h)}))
-                input.params_changed = true;
-        }
-        if (!window_shot.empty()) {
-            glReadBuffer(GL_BACK);
-            write_screenshot(window_shot, read_current_framebuffer(framebuffer_w, framebuffer_h));
-        }
-        std::fflush(stdout);
-        s.context->swap_buffers();
-        clock.tick();
-        panel_state.frame_ms = clock.smoothed_ms();
-        if (s.options.quit_after > 0 && frame_index >= s.options.quit_after) break;
-        if (s.options.quit_after_s > 0 && now_seconds() - start >= s.options.quit_after_s) break;
-    }
-    check_gl_error("the window loop");
+    std::vector<ScriptedKey> scripted_keys = parse_scripted_keys(s.options.presses);
+    const std::unique_ptr<WindowPanel> panel = open_window(s);
+    WindowLoop(s, *panel, std::move(scripted_keys)).run();
     return kExitOk;
 }
 
