@@ -356,3 +356,29 @@ TEST_CASE("similarity: gsv-grade similarity writes a report that loads nothing f
     CHECK(unknown.exit_code == 2);
     CHECK(unknown.output == "gsv-grade similarity: --labs: the kit has no lab 'lab99' (no labs/lab99_* folder)\n");
 }
+
+TEST_CASE("similarity: a reference-like submission with one slip, handed in twice, is a pair, the same slip made apart is not",
+          "[grader][similarity]") {
+    if (sim_missing()) return;
+    test::TempDir dir;
+    const Json mutants = read_mutant_spec(test::source_root(), "lab01").array_at("mutants");
+    // kai and lee hand in the same file: the reference with one classic mistake, too short an edit for a run of SIM's.
+    // mia makes the same mistake in a file of her own (a comment line of hers); noa makes another one.
+    for (const char* name : {"kai", "lee", "mia", "noa"}) make_lab_folder(dir.path(name), "lab01");
+    write_student_lab(dir.path("kai"), "lab01", {mutants.at(0)});
+    write_student_lab(dir.path("lee"), "lab01", {mutants.at(0)});
+    write_student_lab(dir.path("mia"), "lab01", {mutants.at(0)});
+    write_student_lab(dir.path("noa"), "lab01", {mutants.at(1)});
+    const fs::path mia_file = dir.path("mia") / "labs" / lab_dir_of("lab01") / mutants.at(0).string_at("file");
+    std::ofstream(mia_file, std::ios::app) << "\n// checked against the sheet's figure\n";
+    CopiedCodeOptions options;
+    options.kit_root = test::source_root();
+    options.submissions = dir.path();
+    options.labs = {"lab01"};
+    const std::vector<LabCode> labs = find_copied_code(options);
+    REQUIRE(labs.size() == 1);
+    CHECK(pairs_of(labs[0]) == std::set<std::pair<std::string, std::string>>{{"kai", "lee"}});
+    REQUIRE(labs[0].pairs.size() == 1);
+    CHECK(labs[0].pairs[0].identical_edits);
+    CHECK(labs[0].pairs[0].likely_copied());
+}

@@ -64,6 +64,7 @@ public:
         read_students(students);
         subtract_template();
         compare_own_code();
+        find_identical_edits();
         keep_files_of_pairs();
         return std::move(result_);
     }
@@ -237,6 +238,70 @@ private:
             const int smaller = std::max(1, std::min(pair.own_a, pair.own_b));
             pair.share = std::min(1.0, static_cast<double>(pair.shared_tokens) / smaller);
             result_.pairs.push_back(pair);
+        }
+        std::stable_sort(result_.pairs.begin(), result_.pairs.end(), [](const CodePair& x, const CodePair& y) {
+            return x.share != y.share ? x.share > y.share : x.shared_tokens > y.shared_tokens;
+        });
+    }
+
+    // Students whose changed files (those with a line the template does not hold) are the same, file for file and byte
+    // for byte, with a line no template file holds: SIM needs a run of kMinRun tokens, and a one-line slip in a reference-like file is shorter, so a whole
+    // submission handed in twice would otherwise pass unseen. A version shared by more than kCommonPartners others is the
+    // class's common edit, not a copy.
+    void find_identical_edits() {
+        std::map<std::string, std::map<std::string, std::string>> changed;  // student -> file -> text
+        for (const Staged& s : staged_) {
+            const CodeFile& code = result_.files[s.student][s.name];
+            if (std::any_of(code.kinds.begin(), code.kinds.end(), [](LineKind k) { return k != LineKind::Template; }))
+                changed[s.student][s.name] = texts_[s.original];
+        }
+        // A line of the template (starter, reference, other starters) is no sign of a copy: two students who both wrote
+        // the reference's answer hand in the same file. A version counts only with a line of its own.
+        std::map<std::string, std::set<std::string>> template_lines;  // file name -> its lines, trimmed
+        const auto trimmed = [](const std::string& line) {
+            const auto first = line.find_first_not_of(" \t\r"), last = line.find_last_not_of(" \t\r");
+            return first == std::string::npos ? std::string() : line.substr(first, last - first + 1);
+        };
+        for (const fs::path& file : template_files(options_.kit_root, result_.lab_dir))
+            for (const std::string& line : split_lines(normalised_text(file))) template_lines[file.filename().string()].insert(trimmed(line));
+        const auto has_own_line = [&](const std::map<std::string, std::string>& files) {
+            for (const auto& [name, text] : files)
+                for (const std::string& line : split_lines(text))
+                    if (!trimmed(line).empty() && !template_lines[name].count(trimmed(line))) return true;
+            return false;
+        };
+        std::map<std::map<std::string, std::string>, std::vector<std::string>> by_version;
+        for (const auto& [student, files] : changed) by_version[files].push_back(student);
+        for (const auto& [files, students] : by_version) {
+            if (students.size() < 2 || static_cast<int>(students.size()) > kCommonPartners + 1 || !has_own_line(files)) continue;
+            for (std::size_t i = 0; i < students.size(); ++i)
+                for (std::size_t j = i + 1; j < students.size(); ++j) {
+                    // The class's order: the staged files are in it, and so are the names here (a map's order is the
+                    // same sort).
+                    const std::string &a = students[i], &b = students[j];
+                    const auto existing = std::find_if(result_.pairs.begin(), result_.pairs.end(),
+                                                       [&](const CodePair& p) { return p.a == a && p.b == b; });
+                    CodePair& pair = existing != result_.pairs.end() ? *existing : result_.pairs.emplace_back();
+                    pair.lab = result_.lab;
+                    pair.a = a;
+                    pair.b = b;
+                    pair.own_a = result_.own_tokens[a];
+                    pair.own_b = result_.own_tokens[b];
+                    pair.share = 1.0;
+                    pair.identical_edits = true;
+                    if (!pair.runs.empty()) continue;
+                    // The side-by-side view shows each changed file's own lines.
+                    for (const auto& [name, text] : files) {
+                        const CodeFile& code = result_.files[a][name];
+                        int first = 0, last = 0;
+                        for (std::size_t line = 0; line < code.kinds.size(); ++line)
+                            if (code.kinds[line] != LineKind::Template) {
+                                if (!first) first = static_cast<int>(line) + 1;
+                                last = static_cast<int>(line) + 1;
+                            }
+                        if (first) pair.runs.push_back({name, first, last, first, last, 0});
+                    }
+                }
         }
         std::stable_sort(result_.pairs.begin(), result_.pairs.end(), [](const CodePair& x, const CodePair& y) {
             return x.share != y.share ? x.share > y.share : x.shared_tokens > y.shared_tokens;

@@ -64,6 +64,10 @@ struct CodePair {
     int shared_tokens = 0, own_a = 0, own_b = 0;
     double share = 0;       // shared_tokens over the smaller of own_a and own_b, at most 1
     std::vector<SharedRun> runs;
+    // Every file the two changed from the template is the same, byte for byte, and no more than kCommonPartners others
+    // changed theirs the same way: a copy even where the edits are too short for a run (a reference-like submission
+    // with one slip, handed in twice). Share 1.
+    bool identical_edits = false;
     bool likely_copied() const { return share >= kLikelyCopiedShare; }
 };
 

@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <set>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -93,8 +94,12 @@ int run_similarity_command(const std::vector<std::string>& args, const fs::path&
                 ++pairs;
                 likely += p.likely_copied();
             }
-        std::printf("pairs sharing own code: %d (%d likely copied); pairs with the same rare wrong picture: %zu%s; %.1f s: %s, %s\n", pairs,
-                    likely, findings.pictures.pairs.size(), findings.pictures.batch_found ? "" : " (no batch.json: not compared)",
+        // A pair who drew the same wrong pictures is one pair however many cases show it.
+        std::set<std::pair<std::string, std::string>> picture_pairs;
+        for (const PicturePair& p : findings.pictures.pairs) picture_pairs.insert({p.a, p.b});
+        std::printf("pairs sharing own code: %d (%d likely copied); pairs with the same rare wrong picture: %zu (%zu case%s)%s; %.1f s: %s, %s\n",
+                    pairs, likely, picture_pairs.size(), findings.pictures.pairs.size(), findings.pictures.pairs.size() == 1 ? "" : "s",
+                    findings.pictures.batch_found ? "" : " (no batch.json: not compared)",
                     findings.seconds, (command.out_dir / "similarity.html").c_str(), (command.out_dir / "similarity.csv").c_str());
         return kGradeOk;
     } catch (const Error& e) {

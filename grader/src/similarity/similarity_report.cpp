@@ -134,7 +134,7 @@ std::string similarity_csv(const SimilarityFindings& findings) {
         out << ++rank << ",code," << csv_field(p->lab) << "," << csv_field(p->a) << "," << csv_field(p->b) << "," << percent(p->share) << ","
             << p->shared_tokens << "," << p->own_a << "," << p->own_b << "," << (p->likely_copied() ? "yes" : "no") << ","
             << csv_field(joined(files_of(*p), " ")) << "," << csv_field(run_lines(*p, true)) << "," << csv_field(run_lines(*p, false))
-            << ",,,\n";
+            << ",,," << (p->identical_edits ? "every changed file the same, byte for byte" : "") << "\n";
     for (const PicturePair& p : findings.pictures.pairs)
         out << ++rank << ",picture," << csv_field(p.lab) << "," << csv_field(p.a) << "," << csv_field(p.b) << ",,,,,yes,,,,"
             << csv_field(p.case_name) << "," << csv_field(p.picture) << ","
@@ -177,7 +177,8 @@ std::string similarity_html(const SimilarityFindings& findings, const fs::path& 
             out << "<tr><td>" << (i < kPairsSideBySide ? "<a href=\"#pair-" + std::to_string(i + 1) + "\">" + std::to_string(i + 1) + "</a>"
                                                        : std::to_string(i + 1)) << "</td><td>" << html(p.lab) << "</td><td>" << html(p.a)
                 << ", " << html(p.b) << "</td><td" << (p.likely_copied() ? " class=\"likely\"" : "") << ">" << percent(p.share) << "%"
-                << (p.likely_copied() ? " likely copied" : "") << "</td><td>" << p.shared_tokens << "</td><td>" << p.own_a << ", " << p.own_b
+                << (p.likely_copied() ? " likely copied" : "") << (p.identical_edits ? " (every changed file the same, byte for byte)" : "")
+                << "</td><td>" << p.shared_tokens << "</td><td>" << p.own_a << ", " << p.own_b
                 << "</td><td>" << html(joined(files_of(p), ", ")) << "</td></tr>\n";
         }
         out << "</table>\n";
