@@ -245,11 +245,18 @@ struct PlantedPicture {
     std::string mistake;      // what a known mistake says, where one explains it
 };
 
-void plant_report(const fs::path& out, const std::string& student, const std::vector<PlantedPicture>& pictures) {
+void plant_report(const fs::path& out, const std::string& student, const std::vector<PlantedPicture>& pictures,
+                  bool not_started = false) {
     GradeReport report;
     report.submission = student;
     report.mode = "instructor";
     report.diagnose = "all";
+    if (not_started) {  // L01-T2 left as the starter has it: the diagnosis says so
+        LabDiagnosis d;
+        d.lab = "lab01";
+        d.not_started = {"L01-T2"};
+        report.diagnoses.push_back(d);
+    }
     for (const PlantedPicture& p : pictures) {
         CaseResult r;
         r.lab = "lab01";
@@ -277,7 +284,7 @@ TEST_CASE("similarity: a wrong picture two students alone drew is a pair, not on
     test::TempDir dir;
     const fs::path out = dir.path("out");
     BatchRecord record;
-    for (const char* name : {"p1", "p2", "p3", "p4", "p5"}) {
+    for (const char* name : {"p1", "p2", "p3", "p4", "p5", "p6", "p7"}) {
         BatchEntry e;
         e.name = name;
         e.graded = true;
@@ -290,10 +297,13 @@ TEST_CASE("similarity: a wrong picture two students alone drew is a pair, not on
     plant_report(out, "p3", {{"diffuse", 120, ""}, {"gooch", 90, mistake}});
     plant_report(out, "p4", {{"diffuse", 120, ""}, {"stretched", 8, ""}});
     plant_report(out, "p5", {{"diffuse", 120, ""}});
+    // Two who left L01-T2 undone draw the starter's picture alike: no pair.
+    plant_report(out, "p6", {{"phong", 60, ""}}, true);
+    plant_report(out, "p7", {{"phong", 60, ""}}, true);
     write_batch_record(record, out);
     const CopiedPictures found = find_copied_pictures(out);
     CHECK(found.batch_found);
-    CHECK(found.students == 5);
+    CHECK(found.students == 7);
     CHECK(found.notes.empty());
     REQUIRE(found.pairs.size() == 1);
     CHECK(found.pairs[0].a == "p1");

@@ -7,6 +7,7 @@
 #include "grader/src/report/report.h"
 
 #include <map>
+#include <set>
 #include <optional>
 #include <tuple>
 
@@ -54,7 +55,12 @@ CopiedPictures find_copied_pictures(const fs::path& out_dir) {
             continue;
         }
         ++found.students;
+        // A TODO left as the starter has it draws the same picture for everyone who left it: no sign of a copy.
+        std::set<std::pair<std::string, std::string>> not_started;
+        for (const auto& d : report.diagnoses)
+            for (const std::string& todo : d.not_started) not_started.insert({d.lab, todo});
         for (const CaseResult& r : report.results) {
+            if (not_started.count({r.lab, r.todo})) continue;
             // A wrong image no known mistake explains. The starter's not-done colour, a blank picture and a case that waits
             // for another TODO are what many students hand in alike.
             if (r.kind != "image" || r.status != CaseStatus::WrongImage || !r.mistake.empty() || r.actual_png.empty()) continue;
