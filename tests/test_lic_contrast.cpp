@@ -88,7 +88,7 @@ TEST_CASE("lic contrast: equalisation spreads crowded grey levels evenly, in ord
 
 TEST_CASE("lic contrast: names, and a sweep refused with a contrast on", "[unit][lic_contrast]") {
     CHECK(gsv::lic_contrast_from_name("equalize") == LicContrast::Equalize);
-    CHECK(gsv::lic_contrast_names() == std::vector<std::string>{"off", "stretch", "equalize"});
+    CHECK(std::string(gsv::name_of(gsv::kLicContrastNames, LicContrast::Stretch)) == "stretch");
     CHECK(gsv::test::gsv_error_message([] { gsv::lic_contrast_from_name("gamma"); }) ==
           "unknown contrast 'gamma' (known: off, stretch, equalize)");
     CHECK_NOTHROW(gsv::check_sweepable(LicContrast::Off));

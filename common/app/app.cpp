@@ -47,7 +47,9 @@ const ShaderLibrary::Entry& LabKit::program(const std::string& name, const std::
     spec.name = name;
     spec.captured = captured;
     for (const auto& f : files) spec.files.push_back(assets_.shader_file(f));
-    return shaders_.add(std::move(spec), param_defines(params_));
+    const ShaderLibrary::Entry& entry = shaders_.add(std::move(spec), param_defines(params_));
+    check_param_uniforms(params_, entry.program().active_uniform_kinds(), name);
+    return entry;
 }
 
 std::vector<ShaderDefine> LabKit::defines() const { return param_defines(params_); }
@@ -192,6 +194,9 @@ void start_session(Session& session, std::unique_ptr<Lab> lab, const char* lab_d
     session.variant = variant;
     session.lab_dir = lab_dir;
     session.executable = executable;
+    // The uniforms apply_transforms sets in core and ES: no parameter may have them.
+    for (const char* uniform : {"uModelViewProjectionMatrix", "uModelViewMatrix", "uProjectionMatrix", "uNormalMatrix"})
+        session.params.reserve_uniform(uniform, "the kit's transforms (apply_transforms)");
     session.lab->declare(session.params);
     session.defaults = session.params;
 }

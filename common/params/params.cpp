@@ -57,7 +57,7 @@ std::string macro_name_for(const std::string& name) {
     return out;
 }
 
-std::size_t Params::add(ParamSpec spec, Value value) {
+std::size_t Params::add(ParamSpec spec, Value value, bool adopted) {
     // Names end up in `--set name=value`, case files and network files, where '=', '.', '#' and blanks mean something.
     const bool file_safe = !spec.name.empty() && std::all_of(spec.name.begin(), spec.name.end(), [](char c) {
         return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
@@ -70,7 +70,8 @@ std::size_t Params::add(ParamSpec spec, Value value) {
             throw Error("parameter '" + spec.name + "' declared twice" +
                         (s.owner.empty() && spec.owner.empty() ? std::string() : " (by " + (s.owner.empty() ? "the lab" : s.owner) +
                                                                                  " and " + (spec.owner.empty() ? "the lab" : spec.owner) + ")"));
-    spec.uniform = uniform_name_for(spec.name);
+    if (!adopted) spec.uniform = uniform_name_for(spec.name);  // an adopted one keeps its declarer's (or none)
+    if (spec.type != ParamType::File && spec.type != ParamType::Text) check_uniform_free(spec.name, npos, spec.uniform);
     specs_.push_back(std::move(spec));
     values_.push_back(std::move(value));
     return specs_.size() - 1;
@@ -144,17 +145,46 @@ Param<bool> Params::add_effect(const std::string& name, bool on, const std::stri
     return p;
 }
 
-ParamScope Params::scope(const std::string& path, const std::string& owner) { return ParamScope(*this, path, owner); }
-
 void Params::adopt(const std::string& path, const std::string& owner, const Params& from) {
     const std::string scope = std::exchange(scope_, path), declarer = std::exchange(owner_, owner);
     try {
-        for (std::size_t i = 0; i < from.specs_.size(); ++i) add(from.specs_[i], from.values_[i]);
+        for (std::size_t i = 0; i < from.specs_.size(); ++i) add(from.specs_[i], from.values_[i], true);
     } catch (...) {
         scope_ = scope, owner_ = declarer;
         throw;
     }
     scope_ = scope, owner_ = declarer;
+}
+
+void Params::check_uniform_free(const std::string& name, std::size_t index, const std::string& uniform) const {
+    if (uniform.empty()) return;
+    for (const auto& [reserved, setter] : reserved_uniforms_)
+        if (reserved == uniform)
+            throw Error("parameter '" + name + "' would set the uniform " + uniform + ", which " + setter + " sets");
+    for (std::size_t i = 0; i < specs_.size(); ++i)
+        if (i != index && specs_[i].uniform == uniform && specs_[i].type != ParamType::File && specs_[i].type != ParamType::Text)
+            throw Error("parameter '" + name + "' would set the uniform " + uniform + ", which parameter '" + specs_[i].name + "' sets");
+}
+
+void Params::reserve_uniform(const std::string& uniform, const std::string& who) {
+    for (const auto& s : specs_)
+        if (s.uniform == uniform && s.type != ParamType::File && s.type != ParamType::Text)
+            throw Error("parameter '" + s.name + "' would set the uniform " + uniform + ", which " + who + " sets");
+    reserved_uniforms_.emplace_back(uniform, who);
+}
+
+void Params::check_condition(const std::string& param, const std::vector<std::string>& values) const {
+    const std::size_t i = find_index(param);
+    if (i == npos) throw Error("a condition names parameter '" + param + "', which is not declared (yet)");
+    const ParamSpec& s = specs_[i];
+    for (const auto& value : values) {
+        const bool known = s.type == ParamType::Choice ? std::find(s.choices.begin(), s.choices.end(), value) != s.choices.end()
+                           : s.type == ParamType::Bool ? value == "on" || value == "off"
+                                                       : false;
+        if (!known)
+            throw Error("a condition on parameter '" + param + "' names '" + value + "', which is not one of its values" +
+                        (s.type == ParamType::Choice || s.type == ParamType::Bool ? "" : " (conditions are on choices and switches)"));
+    }
 }
 
 std::size_t Params::find_index(const std::string& name) const {
@@ -381,7 +411,7 @@ std::string Params::describe() const {
         case ParamType::File: out << "file path"; break;
         case ParamType::Text: out << "text"; break;
         }
-        if (s.type == ParamType::File || s.type == ParamType::Text) out << ", read by the lab";
+        if (s.type == ParamType::File || s.type == ParamType::Text || (!s.compile_time && s.uniform.empty())) out << ", read by the lab";
         else if (s.compile_time) out << ", compiled in as " << s.define;
         else out << ", uniform " << s.uniform;
         if (!s.sweep_values.empty()) out << ", ACCURACY KNOB";

@@ -4,16 +4,24 @@
 // window's panel and the web page's controls, sweeps, change tracking, uniforms (u<Name>) and compile-time
 // #defines (common/shader/param_uniforms.h).
 //
-// Declaring gives a typed handle that reads the value as its type, with no text in between:
+// Declaring gives a typed handle that reads the value as its type, with no text in between; whoever declares keeps
+// the handle (a member) and reads through it:
 //     gsv::Param<float> samples = p.add_float("samples_per_voxel", 1, 0.05, 32, "samples along a ray per voxel");
 //     const float step = 1.0f / (samples.get() * n);
-// A scope (Params::scope) groups what one owner declares ("raycaster", a processor): its parameters keep their
-// own names on the command line and are also known by the scope's ("raycaster.samples_per_voxel").
+// A choice is an enum's name table (common/core/enum_names.h; support/ exports its own), read as the enum, so a
+// misspelt choice is a misspelt enumerator, which does not compile:
+//     gsv::EnumParam<gsv::Integrator> integrator = p.add_enum("integrator", gsv::Integrator::Euler, gsv::kIntegratorNames, "...");
+//     if (integrator.get() == gsv::Integrator::Rk4) ...
+// Reading by name (get_float("alpha"), get_text) is for generic code: the panel, sweeps, reports, case files.
+// Processors' parameters adopted by a lab (Params::adopt) keep their own names on the command line and are also
+// known by the processor's ("raycaster.samples_per_voxel").
 #include "common/core/enum_names.h"
 
 #include <glm/glm.hpp>
 
 #include <cstddef>
+#include <initializer_list>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -61,6 +69,16 @@ struct ParamSpec {
 std::string macro_name_for(const std::string& name);
 
 class Params;
+template <class V>
+class EnumParam;
+
+// The type itself, where deducing it would clash (a braced list of an enum's values read as OneOf).
+template <class T>
+struct TypeIdentity {
+    using type = T;
+};
+template <class T>
+using TypeIdentityT = typename TypeIdentity<T>::type;
 
 // A declared parameter's handle, read as T: float, int, bool, glm::vec3, or std::string (a choice, a file, a text).
 // The chainable refinements are for the declaration ("with_step(0.25).accuracy_knob(...)").
@@ -77,12 +95,19 @@ public:
     const std::string& name() const { return spec().name; }
 
     Param& at_compile_time(std::string macro = "");
+    // Reaches shaders through this uniform, not u<Name>; refused where another parameter or the kit has that uniform.
     Param& with_uniform(std::string uniform);
+    // Reaches no shader: the lab alone reads it (lab 02's `input` picks which texture to make; uInput is that texture).
+    Param& without_uniform();
     Param& with_step(double step);
     Param& accuracy_knob(std::vector<std::string> values_least_accurate_first);
     Param& series();
     Param& animated();
-    // Has an effect only while `param` is one of `values` ("field_file" only while field=file). Chainable: all hold.
+    // Has an effect only while a choice is one of `values` ("field_file" only while field=file), or while a switch is
+    // on (or off). Chainable: all hold. By name, the parameter must be declared already and the values be its own.
+    template <class V>
+    Param& applies_when(const EnumParam<V>& choice, std::initializer_list<TypeIdentityT<V>> values);
+    Param& applies_when(const Param<bool>& flag, bool on);
     Param& applies_when(std::string param, std::vector<std::string> values);
     // Has an effect only in a context with this GL feature (gsv::gl_feature::kCompute.name).
     Param& acts_through(std::string gl_feature);
@@ -99,25 +124,74 @@ private:
     std::size_t index_ = 0;
 };
 
-// A choice whose names are an enum's name table (common/core/enum_names.h): read as the enum.
-template <class E>
-class EnumParam {
+namespace param_detail {
+// The name of `value` in `names`; "unknown" where it has none.
+template <class V>
+const char* name_in(const std::vector<EnumName<V>>& names, const V& value) {
+    for (const auto& entry : names)
+        if (entry.value == value) return entry.name;
+    return "unknown";
+}
+template <class V>
+std::vector<std::string> choice_names(const std::vector<EnumName<V>>& names) {
+    std::vector<std::string> out;
+    for (const auto& entry : names) out.push_back(entry.name);
+    return out;
+}
+}  // namespace param_detail
+
+// One value of either of two enums: a choice of a support table's names with the lab's own beside them (lab 02's
+// field: support/flow's analytic flows, the swirl, a file). Compares with either's values; as<T>() is the one of T.
+template <class A, class B>
+class OneOf {
 public:
-    EnumParam() = default;
-    template <std::size_t N>
-    EnumParam(Param<std::string> choice, const EnumName<E> (&table)[N]) : choice_(std::move(choice)), table_(table), size_(N) {}
-    E get() const;
-    E operator*() const { return get(); }
-    const Param<std::string>& param() const { return choice_; }
-    Param<std::string>& param() { return choice_; }
+    static_assert(!std::is_same_v<A, B>, "OneOf of two different enums");
+    OneOf(A a) : a_(a) {}
+    OneOf(B b) : b_(b) {}
+    template <class T>
+    std::optional<T> as() const {
+        static_assert(std::is_same_v<T, A> || std::is_same_v<T, B>, "as<T>: T is one of OneOf's two enums");
+        if constexpr (std::is_same_v<T, A>) return a_;
+        else return b_;
+    }
+    friend bool operator==(const OneOf& x, const OneOf& y) { return x.a_ == y.a_ && x.b_ == y.b_; }
+    friend bool operator!=(const OneOf& x, const OneOf& y) { return !(x == y); }
 
 private:
-    Param<std::string> choice_;
-    const EnumName<E>* table_ = nullptr;
-    std::size_t size_ = 0;
+    std::optional<A> a_;
+    std::optional<B> b_;
 };
 
-class ParamScope;
+// A choice read as a value of V: an enum whose name table declared it (Params::add_enum), or OneOf two enums. The
+// declaration's refinements are Param's.
+template <class V>
+class EnumParam {
+public:
+    using Value = V;
+    EnumParam() = default;
+    EnumParam(Param<std::string> choice, std::vector<EnumName<V>> names) : choice_(std::move(choice)), names_(std::move(names)) {}
+    V get() const;  // notes the read, as Param::get
+    V operator*() const { return get(); }
+    bool declared() const { return choice_.declared(); }
+    const Param<std::string>& param() const { return choice_; }
+    const std::string& name() const { return choice_.name(); }
+    const char* name_of(V value) const;
+
+    EnumParam& at_compile_time(std::string macro = "") { return refined(choice_.at_compile_time(std::move(macro))); }
+    EnumParam& without_uniform() { return refined(choice_.without_uniform()); }
+    EnumParam& series() { return refined(choice_.series()); }
+    EnumParam& may_draw_the_same(std::string why) { return refined(choice_.may_draw_the_same(std::move(why))); }
+    template <class W>
+    EnumParam& applies_when(const EnumParam<W>& choice, std::initializer_list<TypeIdentityT<W>> values) {
+        return refined(choice_.applies_when(choice, values));
+    }
+    EnumParam& applies_when(const Param<bool>& flag, bool on) { return refined(choice_.applies_when(flag, on)); }
+
+private:
+    EnumParam& refined(const Param<std::string>&) { return *this; }
+    Param<std::string> choice_;
+    std::vector<EnumName<V>> names_;
+};
 
 class Params {
 public:
@@ -129,12 +203,24 @@ public:
     Param<bool> add_bool(const std::string& name, bool value, const std::string& help);
     Param<std::string> add_choice(const std::string& name, const std::string& value, std::vector<std::string> choices,
                                   const std::string& help);
-    // A choice of an enum's names, read as the enum.
+    // A choice of an enum's names, in the table's order, read as the enum.
     template <class E, std::size_t N>
     EnumParam<E> add_enum(const std::string& name, E value, const EnumName<E> (&table)[N], const std::string& help) {
-        std::vector<std::string> names;
-        for (const auto& entry : table) names.push_back(entry.name);
-        return EnumParam<E>(add_choice(name, name_of(table, value), std::move(names), help), table);
+        std::vector<EnumName<E>> names(std::begin(table), std::end(table));
+        Param<std::string> choice =
+            add_choice(name, param_detail::name_in(names, value), param_detail::choice_names(names), help);
+        return EnumParam<E>(std::move(choice), std::move(names));
+    }
+    // A choice of two enums' names, the first table's then the second's (support's and the lab's own), read as OneOf.
+    template <class A, std::size_t N, class B, std::size_t M>
+    EnumParam<OneOf<A, B>> add_enum(const std::string& name, TypeIdentityT<OneOf<A, B>> value, const EnumName<A> (&first)[N],
+                                    const EnumName<B> (&second)[M], const std::string& help) {
+        std::vector<EnumName<OneOf<A, B>>> names;
+        for (const auto& entry : first) names.push_back({entry.value, entry.name});
+        for (const auto& entry : second) names.push_back({entry.value, entry.name});
+        Param<std::string> choice =
+            add_choice(name, param_detail::name_in(names, value), param_detail::choice_names(names), help);
+        return EnumParam<OneOf<A, B>>(std::move(choice), std::move(names));
     }
     Param<glm::vec3> add_vec3(const std::string& name, glm::vec3 value, double min, double max, const std::string& help);
     // A path typed by the user (a data file). Never a uniform or a define; the lab resolves it with
@@ -145,8 +231,6 @@ public:
     // A compile-time switch named EFFECT_<NAME> in GLSL.
     Param<bool> add_effect(const std::string& name, bool on, const std::string& help);
 
-    // What `owner` declares, under `path`: its parameters are known by their own names and as "path.name".
-    ParamScope scope(const std::string& path, const std::string& owner);
     // Declares here, under `path`, every parameter `from` declares, with its value: a processor's declarations
     // made part of the lab's (each still declared once, by the processor's type).
     void adopt(const std::string& path, const std::string& owner, const Params& from);
@@ -186,6 +270,10 @@ public:
     // Window controls: move a parameter by `steps` increments (Bool toggles, Choice cycles), clamped.
     void nudge(const std::string& name, int steps);
 
+    // A uniform something other than a parameter sets on the lab's programs (the kit's transforms): a parameter whose
+    // uniform it is, declared before or after, is refused, naming `who` sets it.
+    void reserve_uniform(const std::string& uniform, const std::string& who);
+
     // Change tracking (common/params/change_tracker.h). While a read log is set, every parameter read is added to
     // it: through a getter or a handle, and where common/shader/param_uniforms.h reads it for a program in use.
     // Returns the log that was set before.
@@ -221,14 +309,17 @@ public:
 private:
     template <class T>
     friend class Param;
-    friend class ParamScope;
     static constexpr std::size_t npos = static_cast<std::size_t>(-1);
     struct Value {
         double number = 0;
         glm::vec3 vec{0};
         std::string word;
     };
-    std::size_t add(ParamSpec spec, Value value);
+    std::size_t add(ParamSpec spec, Value value, bool adopted = false);
+    // Throws where `uniform` is another parameter's (not the one at `index`) or reserved: two setters, one uniform.
+    void check_uniform_free(const std::string& name, std::size_t index, const std::string& uniform) const;
+    // Throws where `param` is not declared yet or one of `values` is not one of its values.
+    void check_condition(const std::string& param, const std::vector<std::string>& values) const;
     Param<std::string> add_word(const std::string& name, ParamType type, const std::string& value, const std::string& help);
     std::size_t index_of(const std::string& name) const;  // throws listing the known parameters
     std::size_t find_index(const std::string& name) const;  // npos when none
@@ -259,65 +350,9 @@ private:
     std::vector<ParamSpec> specs_;
     std::vector<Value> values_;
     MissingFeatures missing_features_;
-    std::string scope_, owner_;  // while a ParamScope declares: where the declarations go
+    std::string scope_, owner_;  // while adopt declares: where the declarations go
+    std::vector<std::pair<std::string, std::string>> reserved_uniforms_;  // uniform, who sets it
     mutable ReadLogSlot read_log_;
-};
-
-// Declarations under one owner's name: the same calls as Params'.
-class ParamScope {
-public:
-    ParamScope(Params& params, std::string path, std::string owner) : params_(params), path_(std::move(path)), owner_(std::move(owner)) {}
-    Param<float> add_float(const std::string& name, double value, double min, double max, const std::string& help) {
-        const Declaring in(*this);
-        return params_.add_float(name, value, min, max, help);
-    }
-    Param<int> add_int(const std::string& name, int value, int min, int max, const std::string& help) {
-        const Declaring in(*this);
-        return params_.add_int(name, value, min, max, help);
-    }
-    Param<bool> add_bool(const std::string& name, bool value, const std::string& help) {
-        const Declaring in(*this);
-        return params_.add_bool(name, value, help);
-    }
-    Param<std::string> add_choice(const std::string& name, const std::string& value, std::vector<std::string> choices,
-                                  const std::string& help) {
-        const Declaring in(*this);
-        return params_.add_choice(name, value, std::move(choices), help);
-    }
-    template <class E, std::size_t N>
-    EnumParam<E> add_enum(const std::string& name, E value, const EnumName<E> (&table)[N], const std::string& help) {
-        const Declaring in(*this);
-        return params_.add_enum(name, value, table, help);
-    }
-    Param<glm::vec3> add_vec3(const std::string& name, glm::vec3 value, double min, double max, const std::string& help) {
-        const Declaring in(*this);
-        return params_.add_vec3(name, value, min, max, help);
-    }
-    Param<std::string> add_file(const std::string& name, const std::string& value, const std::string& help) {
-        const Declaring in(*this);
-        return params_.add_file(name, value, help);
-    }
-    Param<std::string> add_text(const std::string& name, const std::string& value, const std::string& help) {
-        const Declaring in(*this);
-        return params_.add_text(name, value, help);
-    }
-    Params& params() { return params_; }
-    const std::string& path() const { return path_; }
-
-private:
-    // While it lives, what the Params declares belongs to this scope.
-    struct Declaring {
-        explicit Declaring(ParamScope& scope) : params(scope.params_), scope(std::exchange(params.scope_, scope.path_)),
-                                                owner(std::exchange(params.owner_, scope.owner_)) {}
-        ~Declaring() {
-            params.scope_ = scope;
-            params.owner_ = owner;
-        }
-        Params& params;
-        std::string scope, owner;
-    };
-    Params& params_;
-    std::string path_, owner_;
 };
 
 // Handles read their parameter's value in their own type.
@@ -361,7 +396,13 @@ Param<T>& Param<T>::at_compile_time(std::string macro) {
 }
 template <class T>
 Param<T>& Param<T>::with_uniform(std::string uniform) {
+    params_->check_uniform_free(spec().name, index_, uniform);
     declaration().uniform = std::move(uniform);
+    return *this;
+}
+template <class T>
+Param<T>& Param<T>::without_uniform() {
+    declaration().uniform.clear();
     return *this;
 }
 template <class T>
@@ -386,8 +427,20 @@ Param<T>& Param<T>::animated() {
 }
 template <class T>
 Param<T>& Param<T>::applies_when(std::string param, std::vector<std::string> values) {
+    params_->check_condition(param, values);
     declaration().applies_when_all.push_back({std::move(param), std::move(values)});
     return *this;
+}
+template <class T>
+template <class V>
+Param<T>& Param<T>::applies_when(const EnumParam<V>& choice, std::initializer_list<TypeIdentityT<V>> values) {
+    std::vector<std::string> names;
+    for (const V& value : values) names.push_back(choice.name_of(value));
+    return applies_when(choice.name(), std::move(names));
+}
+template <class T>
+Param<T>& Param<T>::applies_when(const Param<bool>& flag, bool on) {
+    return applies_when(flag.name(), {on ? "on" : "off"});
 }
 template <class T>
 Param<T>& Param<T>::may_draw_the_same(std::string why) {
@@ -400,12 +453,17 @@ Param<T>& Param<T>::acts_through(std::string gl_feature) {
     return *this;
 }
 
-template <class E>
-E EnumParam<E>::get() const {
+template <class V>
+V EnumParam<V>::get() const {
     const std::string name = choice_.get();
-    for (std::size_t i = 0; i < size_; ++i)
-        if (name == table_[i].name) return table_[i].value;
-    return table_[0].value;  // a choice holds one of the table's names: unreachable
+    for (const auto& entry : names_)
+        if (name == entry.name) return entry.value;
+    return names_.at(0).value;  // a choice holds one of its names: unreachable
+}
+
+template <class V>
+const char* EnumParam<V>::name_of(V value) const {
+    return param_detail::name_in(names_, value);
 }
 
 }  // namespace gsv

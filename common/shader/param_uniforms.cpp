@@ -1,9 +1,54 @@
 #include "common/shader/param_uniforms.h"
 
+#include "common/core/error.h"
 #include "common/core/number_text.h"
-#include "common/shader/shader_program.h"
 
 namespace gsv {
+namespace {
+
+bool sets(ParamType type, UniformKind kind) {
+    switch (type) {
+    case ParamType::Float: return kind == UniformKind::Float;
+    case ParamType::Int:
+    case ParamType::Bool:
+    case ParamType::Choice: return kind == UniformKind::Int || kind == UniformKind::Bool;
+    case ParamType::Vec3: return kind == UniformKind::Vec3;
+    case ParamType::File:
+    case ParamType::Text: return true;  // never a uniform
+    }
+    return false;
+}
+
+const char* kind_name(UniformKind kind) {
+    switch (kind) {
+    case UniformKind::Float: return "a float";
+    case UniformKind::Int: return "an int";
+    case UniformKind::Bool: return "a bool";
+    case UniformKind::Vec3: return "a vec3";
+    case UniformKind::Sampler: return "a sampler";
+    case UniformKind::Other: return "a uniform of another type";
+    }
+    return "?";
+}
+
+bool reaches_uniform(const ParamSpec& s) {
+    return !s.compile_time && !s.uniform.empty() && s.type != ParamType::File && s.type != ParamType::Text;
+}
+
+[[noreturn]] void refuse(const ParamSpec& s, const std::string& program, const std::string& what) {
+    throw Error("parameter '" + s.name + "' would set the uniform " + s.uniform + ", which " + program + " declares as " + what +
+                ": rename the parameter, or declare it without_uniform() if only the lab reads it");
+}
+
+}  // namespace
+
+void check_param_uniforms(const Params& params, const std::vector<UniformDeclaration>& uniforms, const std::string& program) {
+    for (const ParamSpec& s : params.specs()) {
+        if (!reaches_uniform(s)) continue;
+        for (const UniformDeclaration& u : uniforms)
+            if (u.name == s.uniform && !sets(s.type, u.kind)) refuse(s, "program '" + program + "'", kind_name(u.kind));
+    }
+}
 
 std::vector<ShaderDefine> param_defines(const Params& params) {
     std::vector<ShaderDefine> out;
@@ -35,10 +80,11 @@ void apply_param_uniforms(const Params& params, const ShaderProgram& program) {
     std::vector<std::size_t> read;
     for (std::size_t i = 0; i < specs.size(); ++i) {
         const ParamSpec& s = specs[i];
-        // A sampler of the same name (lab 02's `input` and its texture uInput) keeps the unit the program gave it.
-        const bool sampler = !s.compile_time && program.texture_unit(s.uniform) >= 0;
-        if (s.compile_time || (s.type != ParamType::File && s.type != ParamType::Text && !sampler && program.has(s.uniform))) read.push_back(i);
-        if (s.compile_time || sampler) continue;
+        if (s.compile_time) read.push_back(i);
+        if (!reaches_uniform(s)) continue;
+        // Checked when the program was made; a shader edited since may have turned the uniform into a texture.
+        if (program.texture_unit(s.uniform) >= 0) refuse(s, "the program in use", kind_name(UniformKind::Sampler));
+        if (program.has(s.uniform)) read.push_back(i);
         switch (s.type) {
         case ParamType::Float: program.set(s.uniform, static_cast<float>(params.number_at(i))); break;
         case ParamType::Int:

@@ -188,6 +188,24 @@ std::vector<std::string> ShaderProgram::active_uniforms() const {
     return names;
 }
 
+std::vector<UniformDeclaration> ShaderProgram::active_uniform_kinds() const {
+    std::vector<UniformDeclaration> out;
+    for (const ActiveUniform& u : active_uniforms_of(name_.get())) {
+        if (u.name.rfind("gl_", 0) == 0) continue;
+        UniformDeclaration d;
+        const bool array = u.name.size() > 3 && u.name.compare(u.name.size() - 3, 3, "[0]") == 0;
+        d.name = array ? u.name.substr(0, u.name.size() - 3) : u.name;
+        if (is_sampler(u.type)) d.kind = UniformKind::Sampler;
+        else if (u.size > 1) d.kind = UniformKind::Other;
+        else if (u.type == GL_FLOAT) d.kind = UniformKind::Float;
+        else if (u.type == GL_INT) d.kind = UniformKind::Int;
+        else if (u.type == GL_BOOL) d.kind = UniformKind::Bool;
+        else if (u.type == GL_FLOAT_VEC3) d.kind = UniformKind::Vec3;
+        out.push_back(std::move(d));
+    }
+    return out;
+}
+
 GLint ShaderProgram::location(const std::string& uniform) const {
     auto it = locations_.find(uniform);
     if (it != locations_.end()) return it->second;

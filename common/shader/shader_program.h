@@ -18,6 +18,13 @@
 
 namespace gsv {
 
+// What an active uniform holds, as far as a parameter's value could be set on it (common/shader/param_uniforms.h).
+enum class UniformKind { Float, Int, Bool, Vec3, Sampler, Other };
+struct UniformDeclaration {
+    std::string name;  // an array's without its "[0]"
+    UniformKind kind = UniformKind::Other;  // an array of more than one element: Other, a sampler array: Sampler
+};
+
 struct ProgramSpec {
     std::string name;                              // for messages: "gooch"
     std::vector<std::filesystem::path> files;      // one per stage; the stage comes from the extension
@@ -63,6 +70,8 @@ public:
     // The names of the program's active uniforms as GL reports them ("uNodes[0]" for an array), samplers included,
     // built-ins (gl_DepthRange) left out.
     std::vector<std::string> active_uniforms() const;
+    // The same, each with what it holds.
+    std::vector<UniformDeclaration> active_uniform_kinds() const;
 
 private:
     void assign_texture_units(const std::string& program_name);

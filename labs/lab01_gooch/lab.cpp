@@ -21,35 +21,43 @@
 
 namespace {
 
+enum class Model { Sphere, Torus, Teapot, File };
+constexpr gsv::EnumName<Model> kModels[] = {
+    {Model::Sphere, "sphere"}, {Model::Torus, "torus"}, {Model::Teapot, "teapot"}, {Model::File, "file"}};
+enum class Shading { Phong, Gooch, Normals };
+constexpr gsv::EnumName<Shading> kShadings[] = {{Shading::Phong, "phong"}, {Shading::Gooch, "gooch"}, {Shading::Normals, "normals"}};
+enum class ShadingRate { Vertex, Fragment };
+constexpr gsv::EnumName<ShadingRate> kShadingRates[] = {{ShadingRate::Vertex, "vertex"}, {ShadingRate::Fragment, "fragment"}};
+
 class GoochLab final : public gsv::Lab {
 public:
     gsv::LabInfo info() const override { return {"lab01", "GLSL basics and Gooch shading"}; }
 
     void declare(gsv::Params& p) override {
-        p.add_choice("model", "sphere", {"sphere", "torus", "teapot", "file"},
-                     "the mesh: two procedural ones, the teapot from data/meshes, or any OBJ file (mesh_file)");
-        p.add_file("mesh_file", "", "an OBJ file: triangles or polygons, with or without normals (model=file)")
-            .applies_when("model", {"file"});
-        p.add_choice("shading", "gooch", {"phong", "gooch", "normals"},
-                     "the lighting model, or the eye-space normal as a colour (what L01-T1 computes, before any light)")
-            .at_compile_time();
-        p.add_choice("shading_rate", "fragment", {"vertex", "fragment"},
-                     "light each vertex and blend colours (Gouraud), or light each fragment").at_compile_time().series();
-        p.add_int("mesh_resolution", 64, 3, 1024, "segments around the sphere or torus (half as many the other way)")
-            .accuracy_knob({"6", "8", "12", "16", "24", "32", "64", "128", "256", "512"});
-        p.add_effect("specular", true, "the white Phong highlight");
-        p.add_effect("silhouette", false, "dark edges where the surface turns away from the eye");
+        model_ = p.add_enum("model", Model::Sphere, kModels,
+                            "the mesh: two procedural ones, the teapot from data/meshes, or any OBJ file (mesh_file)");
+        mesh_file_ = p.add_file("mesh_file", "", "an OBJ file: triangles or polygons, with or without normals (model=file)")
+                         .applies_when(model_, {Model::File});
+        const auto shading = p.add_enum("shading", Shading::Gooch, kShadings,
+                                        "the lighting model, or the eye-space normal as a colour (what L01-T1 computes, before any light)")
+                                 .at_compile_time();
+        shading_rate_ = p.add_enum("shading_rate", ShadingRate::Fragment, kShadingRates,
+                                   "light each vertex and blend colours (Gouraud), or light each fragment").at_compile_time().series();
+        mesh_resolution_ = p.add_int("mesh_resolution", 64, 3, 1024, "segments around the sphere or torus (half as many the other way)")
+                               .accuracy_knob({"6", "8", "12", "16", "24", "32", "64", "128", "256", "512"});
+        const auto specular = p.add_effect("specular", true, "the white Phong highlight");
+        silhouette_ = p.add_effect("silhouette", false, "dark edges where the surface turns away from the eye");
         p.add_vec3("diffuse_color", {0.75f, 0.35f, 0.25f}, 0, 1, "k_d, the surface colour");
-        p.add_float("blue", 0.55, 0, 1, "b in k_blue = (0, 0, b)").applies_when("shading", {"gooch"});
-        p.add_float("yellow", 0.45, 0, 1, "y in k_yellow = (y, y, 0)").applies_when("shading", {"gooch"});
-        p.add_float("alpha", 0.25, 0, 1, "share of k_d in the cool colour").applies_when("shading", {"gooch"});
-        p.add_float("beta", 0.5, 0, 1, "share of k_d in the warm colour").applies_when("shading", {"gooch"});
-        p.add_float("shininess", 32, 1, 256, "Phong exponent").with_step(4).applies_when("specular", {"on"});
-        p.add_float("specular_strength", 0.5, 0, 1, "highlight strength").applies_when("specular", {"on"});
-        p.add_float("edge_threshold", 0.25, 0, 1, "silhouette width, as a bound on |n.v|").applies_when("silhouette", {"on"});
-        p.add_vec3("light_position", {-3.0f, 3.0f, 1.0f}, -20, 20, "the point light, in world space");
-        p.add_vec3("scale", {1.0f, 1.0f, 1.0f}, 0.1, 4, "model scale; unequal axes need the inverse-transpose for normals");
-        p.add_float("cut", 2, -1, 2, "cut the model open beyond x = cut, so its back faces show");
+        p.add_float("blue", 0.55, 0, 1, "b in k_blue = (0, 0, b)").applies_when(shading, {Shading::Gooch});
+        p.add_float("yellow", 0.45, 0, 1, "y in k_yellow = (y, y, 0)").applies_when(shading, {Shading::Gooch});
+        p.add_float("alpha", 0.25, 0, 1, "share of k_d in the cool colour").applies_when(shading, {Shading::Gooch});
+        p.add_float("beta", 0.5, 0, 1, "share of k_d in the warm colour").applies_when(shading, {Shading::Gooch});
+        p.add_float("shininess", 32, 1, 256, "Phong exponent").with_step(4).applies_when(specular, true);
+        p.add_float("specular_strength", 0.5, 0, 1, "highlight strength").applies_when(specular, true);
+        p.add_float("edge_threshold", 0.25, 0, 1, "silhouette width, as a bound on |n.v|").applies_when(silhouette_, true);
+        light_position_ = p.add_vec3("light_position", {-3.0f, 3.0f, 1.0f}, -20, 20, "the point light, in world space");
+        scale_ = p.add_vec3("scale", {1.0f, 1.0f, 1.0f}, 0.1, 4, "model scale; unequal axes need the inverse-transpose for normals");
+        cut_ = p.add_float("cut", 2, -1, 2, "cut the model open beyond x = cut, so its back faces show");
         gsv::add_orbit_camera(p, 30, 20, 3.4f);
     }
 
@@ -66,12 +74,11 @@ public:
     // The mesh is remade only when the model or (for the procedural ones) its resolution changes.
     void params_changed(gsv::LabKit& kit) override {
         mesh_.update(kit.params(), [&] {
-            const auto& p = kit.params();
-            const std::string model = p.get_choice("model");
-            if (model == "teapot") return gsv::GpuMesh(teapot_, kit.profile());
-            if (model == "file") return gsv::GpuMesh(load_mesh_file(kit), kit.profile());
-            const int n = p.get_int("mesh_resolution");
-            if (model == "sphere") return gsv::GpuMesh(gsv::make_uv_sphere(n, std::max(2, n / 2)), kit.profile());
+            const Model model = model_.get();
+            if (model == Model::Teapot) return gsv::GpuMesh(teapot_, kit.profile());
+            if (model == Model::File) return gsv::GpuMesh(load_mesh_file(kit), kit.profile());
+            const int n = mesh_resolution_.get();
+            if (model == Model::Sphere) return gsv::GpuMesh(gsv::make_uv_sphere(n, std::max(2, n / 2)), kit.profile());
             return gsv::GpuMesh(gsv::make_torus(n, std::max(3, n / 2), 0.7f, 0.3f), kit.profile());
         });
     }
@@ -81,8 +88,8 @@ public:
     }
 
     // Any OBJ, scaled into the unit sphere the camera frames; the reader names the file and line of a fault.
-    static gsv::MeshData load_mesh_file(gsv::LabKit& kit) {
-        const std::string& typed = kit.params().get_file("mesh_file");
+    gsv::MeshData load_mesh_file(gsv::LabKit& kit) const {
+        const std::string typed = mesh_file_.get();
         if (typed.empty()) throw gsv::Error("model=file needs mesh_file=PATH, an OBJ file");
         gsv::MeshData mesh = gsv::load_obj(kit.assets().user_file(typed));
         gsv::normalize_to_unit_sphere(mesh);
@@ -101,7 +108,7 @@ public:
     }
 
     std::optional<gsv::Image> sweep_exact_image(gsv::LabKit& kit, const gsv::Frame& frame) override {
-        if (!exact_sphere_applies(kit.params())) return std::nullopt;
+        if (!exact_sphere_applies()) return std::nullopt;
         gsv::Framebuffer target(frame.width, frame.height, gsv::ColorFormat::RGBA8);
         target.bind();
         draw(kit, frame, *exact_sphere_, kBackground);
@@ -111,9 +118,9 @@ public:
     // What each rate lights a pixel with against the exact sphere's shading there; per fragment, also the normal
     // it lights with against the exact normal (per vertex lights with no interpolated normal).
     gsv::SweepMetrics sweep_metrics(gsv::LabKit& kit, const gsv::Frame& frame) override {
-        if (!exact_sphere_applies(kit.params())) return {};
+        if (!exact_sphere_applies()) return {};
         gsv::SweepMetrics metrics = lab01::shading_error(float_image(kit, frame, *shade_), float_image(kit, frame, *exact_sphere_));
-        if (kit.params().get_choice("shading_rate") == "fragment")
+        if (shading_rate_.get() == ShadingRate::Fragment)
             for (auto& m : lab01::normal_error(float_image(kit, frame, *normal_error_))) metrics.push_back(m);
         return metrics;
     }
@@ -121,17 +128,16 @@ public:
 private:
     static constexpr glm::vec4 kBackground{0.32f, 0.33f, 0.36f, 1.0f};
 
-    static bool exact_sphere_applies(const gsv::Params& p) {
-        const glm::vec3 scale = p.get_vec3("scale");
-        return p.get_choice("model") == "sphere" && p.get_float("cut") >= 1.0 && !p.get_bool("silhouette") &&
-               scale.x == scale.y && scale.y == scale.z;
+    bool exact_sphere_applies() const {
+        const glm::vec3 scale = scale_.get();
+        return model_.get() == Model::Sphere && cut_.get() >= 1.0 && !silhouette_.get() && scale.x == scale.y && scale.y == scale.z;
     }
 
     void draw(gsv::LabKit& kit, const gsv::Frame& frame, const gsv::ShaderLibrary::Entry& entry, glm::vec4 background) {
         const auto& p = kit.params();
         const gsv::OrbitCamera camera = gsv::orbit_camera(p);
         gsv::Transforms t;
-        t.model = glm::scale(glm::mat4(1.0f), p.get_vec3("scale"));
+        t.model = glm::scale(glm::mat4(1.0f), scale_.get());
         t.view = camera.view();
         t.projection = camera.projection(frame.aspect());
 
@@ -139,7 +145,7 @@ private:
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         const gsv::ShaderProgram& program = kit.use(entry);
         kit.set_transforms(program, t);
-        program.set("uLightEye", glm::vec3(t.view * glm::vec4(p.get_vec3("light_position"), 1.0f)));
+        program.set("uLightEye", glm::vec3(t.view * glm::vec4(light_position_.get(), 1.0f)));
         if (&entry == exact_sphere_) {
             program.set("uInverseProjection", glm::inverse(t.projection));
             glDisable(GL_DEPTH_TEST);
@@ -171,6 +177,13 @@ private:
         return target.read_rgba32f();
     }
 
+    gsv::EnumParam<Model> model_;
+    gsv::EnumParam<ShadingRate> shading_rate_;
+    gsv::Param<std::string> mesh_file_;
+    gsv::Param<int> mesh_resolution_;
+    gsv::Param<bool> silhouette_;
+    gsv::Param<glm::vec3> light_position_, scale_;
+    gsv::Param<float> cut_;
     const gsv::ShaderLibrary::Entry* shade_ = nullptr;
     const gsv::ShaderLibrary::Entry* normal_error_ = nullptr;
     const gsv::ShaderLibrary::Entry* exact_sphere_ = nullptr;

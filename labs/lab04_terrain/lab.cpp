@@ -25,35 +25,44 @@
 
 namespace {
 
+enum class Geometry { Bump, Mesh };
+constexpr gsv::EnumName<Geometry> kGeometries[] = {{Geometry::Bump, "bump"}, {Geometry::Mesh, "mesh"}};
+enum class Coloring { Levels, Plain };
+constexpr gsv::EnumName<Coloring> kColorings[] = {{Coloring::Levels, "levels"}, {Coloring::Plain, "plain"}};
+
 class TerrainLab final : public gsv::Lab {
 public:
     gsv::LabInfo info() const override { return {"lab04", "Bump-mapped terrain"}; }
 
     void declare(gsv::Params& p) override {
-        p.add_choice("terrain", "jacksboro", {"jacksboro", "topobathy", "franke", "sin_cos", "flat"},
-                     "real elevation models (data/terrain), or procedural ones whose exact normals are known");
-        p.add_int("grid", 256, 2, 2048, "samples per side of a procedural terrain").applies_when("terrain", {"franke", "sin_cos", "flat"});
-        p.add_choice("geometry", "bump", {"bump", "mesh"}, "one bump-mapped quad, or an N x N grid displaced by the heights")
-            .at_compile_time();
-        p.add_int("mesh_n", 64, 2, 1024, "N, vertices per side of the displaced grid (geometry=mesh)").applies_when("geometry", {"mesh"});
+        lab04::TerrainParams& t = terrain_params_;
+        t.terrain = p.add_enum("terrain", lab04::RealTerrain::Jacksboro, lab04::kRealTerrains, gsv::kTerrainKindNames,
+                               "real elevation models (data/terrain), or procedural ones whose exact normals are known");
+        t.grid = p.add_int("grid", 256, 2, 2048, "samples per side of a procedural terrain")
+                     .applies_when(t.terrain, {gsv::TerrainKind::Franke, gsv::TerrainKind::SinCos, gsv::TerrainKind::Flat});
+        geometry_ = p.add_enum("geometry", Geometry::Bump, kGeometries, "one bump-mapped quad, or an N x N grid displaced by the heights")
+                        .at_compile_time();
+        mesh_n_ = p.add_int("mesh_n", 64, 2, 1024, "N, vertices per side of the displaced grid (geometry=mesh)")
+                      .applies_when(geometry_, {Geometry::Mesh});
         p.add_float("delta", 1, 1e-5, 16, "finite-difference step, in samples (below about 1e-3 float32 cancels)")
             .with_step(0.5)
             .accuracy_knob({"16", "8", "4", "2", "1"});
         p.add_float("exaggeration", 3, 0, 100, "vertical exaggeration").with_step(0.5);
-        p.add_effect("mipmaps", false, "mipmapped heights: zoomed out, far samples average instead of alias");
-        p.add_int("mip_level", -1, -1, 10, "with mipmaps: -1 lets the hardware pick the level, k reads level k").applies_when("mipmaps", {"on"});
-        p.add_bool("heights8", false, "heights rounded to 256 levels, as an 8-bit texture would store them");
+        mipmaps_ = p.add_effect("mipmaps", false, "mipmapped heights: zoomed out, far samples average instead of alias");
+        p.add_int("mip_level", -1, -1, 10, "with mipmaps: -1 lets the hardware pick the level, k reads level k").applies_when(mipmaps_, true);
+        t.heights8 = p.add_bool("heights8", false, "heights rounded to 256 levels, as an 8-bit texture would store them");
         p.add_choice("shading", "lit", {"lit", "slopes"},
                      "lit by the normal and coloured by height, or the slope itself as a colour (east red, north green)")
             .at_compile_time();
-        p.add_choice("coloring", "levels", {"levels", "plain"}, "sea, green, brown and snow by height, or one colour")
-            .at_compile_time();
-        p.add_float("tree_line", 0.35, 0, 1, "where green turns brown, as a fraction of the land's height range").applies_when("coloring", {"levels"});
-        p.add_float("snow_line", 0.8, 0, 1, "where brown turns to snow").applies_when("coloring", {"levels"});
-        p.add_float("blend", 0.05, 0, 0.5, "half the width of each colour transition").with_step(0.01).applies_when("coloring", {"levels"});
+        coloring_ = p.add_enum("coloring", Coloring::Levels, kColorings, "sea, green, brown and snow by height, or one colour")
+                        .at_compile_time();
+        tree_line_ = p.add_float("tree_line", 0.35, 0, 1, "where green turns brown, as a fraction of the land's height range")
+                         .applies_when(coloring_, {Coloring::Levels});
+        snow_line_ = p.add_float("snow_line", 0.8, 0, 1, "where brown turns to snow").applies_when(coloring_, {Coloring::Levels});
+        p.add_float("blend", 0.05, 0, 0.5, "half the width of each colour transition").with_step(0.01).applies_when(coloring_, {Coloring::Levels});
         p.add_vec3("light_direction", {-1.0f, 1.2f, -0.6f}, -10, 10, "towards the light (x east, y up, z south)");
-        p.add_float("pan_east", 0, -1, 1, "the point looked at, east of the centre, in model units").with_step(0.05);
-        p.add_float("pan_south", 0, -1, 1, "the point looked at, south of the centre").with_step(0.05);
+        pan_east_ = p.add_float("pan_east", 0, -1, 1, "the point looked at, east of the centre, in model units").with_step(0.05);
+        pan_south_ = p.add_float("pan_south", 0, -1, 1, "the point looked at, south of the centre").with_step(0.05);
         gsv::add_orbit_camera(p, 0, 60, 2.6f);
     }
 
@@ -68,7 +77,7 @@ public:
         const auto& p = kit.params();
         const gsv::OrbitCamera camera = gsv::orbit_camera(p);
         gsv::Transforms t;
-        t.model = glm::translate(glm::mat4(1.0f), -glm::vec3(p.get_float("pan_east"), 0.0f, p.get_float("pan_south")));
+        t.model = glm::translate(glm::mat4(1.0f), -glm::vec3(pan_east_.get(), 0.0f, pan_south_.get()));
         t.view = camera.view();
         t.projection = camera.projection(frame.aspect());
 
@@ -102,8 +111,7 @@ public:
 
     // The colours by height as color.glsl draws them, over the terrain's heights.
     std::optional<gsv::Legend> legend(gsv::LabKit& kit) override {
-        const auto& p = kit.params();
-        if (p.get_choice("coloring") == "plain") return std::nullopt;
+        if (coloring_.get() == Coloring::Plain) return std::nullopt;
         update(kit);
         const gsv::HeightField& f = terrain_->field;
         const auto set_uniforms = [&](const gsv::ShaderProgram& program) { set_terrain_uniforms(program); };
@@ -121,8 +129,8 @@ public:
         legend.ticks = gsv::nice_ticks(legend.min, legend.max);
         // Where color.glsl centres its blends: fractions of the land's heights, sea level and up.
         const double land = std::max(legend.min, 0.0);
-        legend.marks.push_back({land + p.get_float("tree_line") * (legend.max - land), "tree line"});
-        legend.marks.push_back({land + p.get_float("snow_line") * (legend.max - land), "snow line"});
+        legend.marks.push_back({land + tree_line_.get() * (legend.max - land), "tree line"});
+        legend.marks.push_back({land + snow_line_.get() * (legend.max - land), "snow line"});
         if (legend.min < 0) legend.marks.push_back({0.0, "sea level"});
         return legend;
     }
@@ -130,15 +138,15 @@ public:
 private:
     void update(gsv::LabKit& kit) {
         const auto& p = kit.params();
-        terrain_.update(p, [&] { return lab04::load_terrain(kit); });
+        terrain_.update(p, [&] { return lab04::load_terrain(kit, terrain_params_); });
         heights_.update(p, [&] {
-            const bool mipmaps = p.get_bool("mipmaps");
+            const bool mipmaps = mipmaps_.get();
             gsv::Sampling sampling{mipmaps ? GLenum(GL_LINEAR_MIPMAP_LINEAR) : GLenum(GL_LINEAR), GL_LINEAR, GL_CLAMP_TO_EDGE};
             return gsv::Texture::create_2d(terrain_->field.width, terrain_->field.height, gsv::TexelFormat::R32F,
                                            terrain_->field.heights.data(), sampling);
         }, terrain_.version());
         grid_.update(p, [&] {
-            const int n = p.get_choice("geometry") == "mesh" ? p.get_int("mesh_n") : 2;
+            const int n = geometry_.get() == Geometry::Mesh ? mesh_n_.get() : 2;
             return gsv::GpuMesh(gsv::make_grid(n), kit.profile());
         });
     }
@@ -148,6 +156,12 @@ private:
         lab04::set_placement(program, *terrain_);
     }
 
+    lab04::TerrainParams terrain_params_;
+    gsv::EnumParam<Geometry> geometry_;
+    gsv::EnumParam<Coloring> coloring_;
+    gsv::Param<int> mesh_n_;
+    gsv::Param<bool> mipmaps_;
+    gsv::Param<float> tree_line_, snow_line_, pan_east_, pan_south_;
     const gsv::ShaderLibrary::Entry* shade_ = nullptr;
     const gsv::ShaderLibrary::Entry* probe_ = nullptr;
     gsv::GpuMesh quad_;

@@ -42,26 +42,30 @@ public:
     }
 
     void declare(gsv::Params& p) override {
-        p.add_choice("field", "abc", {"gravity", "rotation", "saddle", "abc"},
-                     "a fountain under gravity, or a velocity field: rotation (-y, x, 0), saddle (x, -y, 0), or the ABC flow")
-            .at_compile_time();
-        p.add_choice("source", "analytic", {"analytic", "texture"},
-                     "the field's formula in the shader, or its samples in a 3D texture (not for gravity)")
-            .at_compile_time();
-        p.add_int("grid", 32, 2, 256, "samples per side of the velocity texture (source=texture)").applies_when("source", {"texture"});
-        p.add_choice("integrator", "euler", {"euler", "midpoint", "rk4"}, "the step, compiled in").at_compile_time().series();
-        p.add_float("time_step", 0.05, 1e-4, 0.5, "h, the simulated time per step")
-            .with_step(0.01)
-            .accuracy_knob({"0.4", "0.2", "0.1", "0.05", "0.025"});
-        p.add_float("time", 2, 0, 20, "the simulated time shown: round(time / h) steps from the start").with_step(0.1).animated();
-        p.add_int("particles", 1048576, 1, 16777216, "how many particles");
-        p.add_int("local_size", 128, 1, 1024, "invocations per work group")
-            .at_compile_time()
-            .acts_through(gsv::gl_feature::kCompute.name);  // transform feedback takes no work groups
-        p.add_int("seed", 1, 0, 1000000, "where the particles start");
-        p.add_float("gravity", 2, 0, 20, "the fountain's downward acceleration (field=gravity)").with_step(0.5).applies_when("field", {"gravity"});
-        p.add_effect("color_by_speed", true, "colour each particle by its speed; off, the shader writes no colours");
-        p.add_float("speed_scale", 1.5, 0.01, 100, "the speed drawn red").with_step(0.1).applies_when("color_by_speed", {"on"});
+        lab05::ParticleParams& s = params_;
+        s.field = p.add_enum("field", gsv::ParticleScene::Abc, gsv::kParticleSceneNames,
+                             "a fountain under gravity, or a velocity field: rotation (-y, x, 0), saddle (x, -y, 0), or the ABC flow")
+                      .at_compile_time();
+        s.source = p.add_enum("source", lab05::Source::Analytic, lab05::kSources,
+                              "the field's formula in the shader, or its samples in a 3D texture (not for gravity)")
+                       .at_compile_time();
+        s.grid = p.add_int("grid", 32, 2, 256, "samples per side of the velocity texture (source=texture)")
+                     .applies_when(s.source, {lab05::Source::Texture});
+        s.integrator = p.add_enum("integrator", gsv::Integrator::Euler, gsv::kIntegratorNames, "the step, compiled in").at_compile_time().series();
+        s.time_step = p.add_float("time_step", 0.05, 1e-4, 0.5, "h, the simulated time per step")
+                          .with_step(0.01)
+                          .accuracy_knob({"0.4", "0.2", "0.1", "0.05", "0.025"});
+        time_ = p.add_float("time", 2, 0, 20, "the simulated time shown: round(time / h) steps from the start").with_step(0.1).animated();
+        count_ = p.add_int("particles", 1048576, 1, 16777216, "how many particles");
+        s.local_size = p.add_int("local_size", 128, 1, 1024, "invocations per work group")
+                           .at_compile_time()
+                           .acts_through(gsv::gl_feature::kCompute.name);  // transform feedback takes no work groups
+        seed_ = p.add_int("seed", 1, 0, 1000000, "where the particles start");
+        s.gravity = p.add_float("gravity", 2, 0, 20, "the fountain's downward acceleration (field=gravity)")
+                        .with_step(0.5)
+                        .applies_when(s.field, {gsv::ParticleScene::Gravity});
+        s.color_by_speed = p.add_effect("color_by_speed", true, "colour each particle by its speed; off, the shader writes no colours");
+        speed_scale_ = p.add_float("speed_scale", 1.5, 0.01, 100, "the speed drawn red").with_step(0.1).applies_when(s.color_by_speed, true);
         p.add_float("point_size", 1, 1, 16, "points' size in pixels").with_step(1);
         gsv::add_orbit_camera(p, 30, 20, 5.0f);
     }
@@ -83,20 +87,19 @@ public:
     }
 
     // Refuses what cannot run before the shaders rebuild, so the user reads the reason, not a link error.
-    void params_changed(gsv::LabKit& kit) override {
-        const auto& p = kit.params();
-        if (p.get_choice("field") == "gravity" && p.get_choice("source") == "texture")
+    void params_changed(gsv::LabKit&) override {
+        if (params_.field.get() == gsv::ParticleScene::Gravity && params_.source.get() == lab05::Source::Texture)
             throw gsv::Error("source=texture samples a velocity field; field=gravity has none (use source=analytic)");
         if (!compute_) return;
-        const auto local = static_cast<std::int64_t>(p.get_int("local_size"));
+        const auto local = static_cast<std::int64_t>(params_.local_size.get());
         if (local > limits_.max_group_size[0] || local > limits_.max_invocations)
             throw gsv::UnsupportedError("local_size=" + std::to_string(local) + " is over this GPU's work-group size limit of " +
                                         std::to_string(std::min(limits_.max_group_size[0], limits_.max_invocations)));
-        const std::size_t slots = lab05::capacity_for(static_cast<std::size_t>(p.get_int("particles")),
+        const std::size_t slots = lab05::capacity_for(static_cast<std::size_t>(count_.get()),
                                                       static_cast<std::uint32_t>(local), limits_);
         const auto bytes = static_cast<std::int64_t>(slots * sizeof(gsv::ParticleOrigin));
         if (bytes > limits_.max_storage_block_bytes)
-            throw gsv::UnsupportedError("particles=" + std::to_string(p.get_int("particles")) + " needs a " +
+            throw gsv::UnsupportedError("particles=" + std::to_string(count_.get()) + " needs a " +
                                         std::to_string(bytes >> 20) + " MiB storage buffer; this GPU allows " +
                                         std::to_string(limits_.max_storage_block_bytes >> 20) + " MiB");
     }
@@ -128,7 +131,7 @@ public:
     }
 
     gsv::SweepMetrics sweep_metrics(gsv::LabKit& kit, const gsv::Frame&) override {
-        gsv::SweepMetrics metrics = lab05::measure(kit, stepper(kit), initial_, done_);
+        gsv::SweepMetrics metrics = lab05::measure(stepper(kit), initial_, done_);
         state_.invalidate();  // measuring restarted the buffers
         return metrics;
     }
@@ -136,10 +139,10 @@ public:
 
     // The speed colours as speed_color.glsl gives them, and what a particle faster than the scale gets.
     std::optional<gsv::Legend> legend(gsv::LabKit& kit) override {
-        if (!kit.params().get_bool("color_by_speed")) return std::nullopt;
+        if (!params_.color_by_speed.get()) return std::nullopt;
         gsv::Legend legend;
         legend.title = "speed";
-        legend.max = kit.params().get_float("speed_scale");
+        legend.max = speed_scale_.get();
         legend.ramp = legend_probe_.ramp(kit, 0, legend.max, 256);
         legend.ticks = gsv::nice_ticks(0, legend.max);
         legend.specials.push_back({"faster than speed_scale", legend_probe_.colors(kit, {2 * legend.max})[0]});
@@ -154,26 +157,26 @@ public:
 
 private:
     lab05::Stepper stepper(gsv::LabKit& kit) {
-        return lab05::Stepper{kit, *advect_, buffers_, *velocity_texture_, limits_};
+        return lab05::Stepper{kit, params_, *advect_, buffers_, *velocity_texture_, limits_};
     }
 
     void update(gsv::LabKit& kit, const gsv::Frame& frame) {
         const auto& p = kit.params();
         // The scene is read inside each build, so that a change of field (the fountain starts its particles
         // elsewhere) remakes what depends on it.
-        auto scene = [&] { return gsv::particle_scene_from_name(p.get_choice("field")); };
+        auto scene = [&] { return params_.field.get(); };
         particles_.run_if_changed(p, [&] {
-            const auto count = static_cast<std::size_t>(p.get_int("particles"));
+            const auto count = static_cast<std::size_t>(count_.get());
             const std::size_t capacity =
-                lab05::capacity_for(count, static_cast<std::uint32_t>(p.get_int("local_size")), limits_);
+                lab05::capacity_for(count, static_cast<std::uint32_t>(params_.local_size.get()), limits_);
             initial_ = gsv::pad_particles(
-                gsv::make_particles(scene(), count, static_cast<std::uint64_t>(p.get_int("seed")), p.get_float("gravity")),
+                gsv::make_particles(scene(), count, static_cast<std::uint64_t>(seed_.get()), params_.gravity.get()),
                 capacity);
             buffers_ = lab05::allocate_particle_buffers(count, capacity, compute_);
         });
         velocity_texture_.update(p, [&] {
-            if (p.get_choice("source") != "texture") return gsv::Texture();
-            const gsv::VelocityGrid samples = gsv::VelocityGrid::sample(scene(), p.get_int("grid"));
+            if (params_.source.get() != lab05::Source::Texture) return gsv::Texture();
+            const gsv::VelocityGrid samples = gsv::VelocityGrid::sample(scene(), params_.grid.get());
             const gsv::Sampling sampling{GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE};
             return gsv::Texture::create_3d(samples.n, samples.n, samples.n, gsv::TexelFormat::RGB32F, samples.texels.data(),
                                            sampling);
@@ -185,14 +188,15 @@ private:
         // frame that asks for the state already shown recomputes it from the start, so its time is the cost of
         // the whole run; a later time (animate) carries on from the last frame, which gives the same numbers as
         // starting over.
-        const long target = lab05::steps_for(p.get_float("time"), p.get_float("time_step"));
+        const float h = params_.time_step.get();
+        const long target = lab05::steps_for(time_.get(), h);
         if (target < done_ || (!frame.interactive && target == done_)) state_.invalidate();
         if (state_.run_if_changed(p, [&] { stepper(kit).restart(initial_); }, particles_.version(),
-                                  velocity_texture_.version(), p.get_float("time_step")))
+                                  velocity_texture_.version(), h))
             done_ = 0;
         long steps = target - done_;
         if (frame.interactive) steps = std::min(steps, kMaxStepsPerFrame);
-        stepper(kit).run(steps, p.get_float("time_step"));
+        stepper(kit).run(steps, h);
         done_ += steps;
         if (done_ < target) kit.ask_for_another_frame();  // the picture is behind its time: the page draws on
     }
@@ -204,6 +208,9 @@ private:
         return out;
     }
 
+    lab05::ParticleParams params_;
+    gsv::Param<float> time_, speed_scale_;
+    gsv::Param<int> count_, seed_;
     const gsv::ShaderLibrary::Entry* advect_ = nullptr;
     const gsv::ShaderLibrary::Entry* draw_ = nullptr;
     bool compute_ = true;  // false: transform feedback steps the particles (OpenGL ES 3.0, WebGL 2)

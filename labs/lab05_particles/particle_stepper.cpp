@@ -30,7 +30,7 @@ void Stepper::run(long steps, float h) const {
     if (!kit.allows(gsv::gl_feature::kCompute)) return run_captured(steps);
     program.set("uCount", static_cast<int>(buffers.count));
     bind_particle_buffers(buffers);
-    const auto local = static_cast<std::uint32_t>(kit.params().get_int("local_size"));
+    const auto local = static_cast<std::uint32_t>(params.local_size.get());
     for (long i = 0; i < steps; ++i) {
         gsv::dispatch_items(buffers.count, local, limits);
         // The next step reads what this one wrote.

@@ -5,6 +5,7 @@
 #include "common/gl/compute.h"
 #include "common/gl/texture.h"
 #include "particle_buffers.h"
+#include "support/particles/particle_motion.h"
 
 #include <cstdint>
 
@@ -18,8 +19,25 @@ std::size_t capacity_for(std::size_t count, std::uint32_t local_size, const gsv:
 // round(time / h): the number of steps that shows the simulated time `time`.
 long steps_for(double time, double h);
 
+// Where the shader finds the field: its formula, or its samples in a 3D texture.
+enum class Source { Analytic, Texture };
+inline constexpr gsv::EnumName<Source> kSources[] = {{Source::Analytic, "analytic"}, {Source::Texture, "texture"}};
+
+// The lab's parameters a step and its measurement read: declared by the lab (lab.cpp), which keeps them.
+struct ParticleParams {
+    gsv::EnumParam<gsv::ParticleScene> field;
+    gsv::EnumParam<Source> source;
+    gsv::Param<int> grid;
+    gsv::EnumParam<gsv::Integrator> integrator;
+    gsv::Param<float> time_step;
+    gsv::Param<int> local_size;
+    gsv::Param<float> gravity;
+    gsv::Param<bool> color_by_speed;
+};
+
 struct Stepper {
     gsv::LabKit& kit;
+    const ParticleParams& params;
     const gsv::ShaderLibrary::Entry& advect;
     ParticleBuffers& buffers;
     const gsv::Texture& velocity_texture;  // no texture: the field's formula

@@ -34,20 +34,21 @@ public:
     gsv::LabInfo info() const override { return {"lab06", "Modular GPU volume raycasting"}; }
 
     void declare(gsv::Params& p) override {
-        p.add_file("network", "", "a network file, as typed or one in the lab folder (raycast.network, probe.network); "
-                                  "empty: built in code. Parameters the file sets win over these");
-        p.add_bool("probe", false, "an opaque sphere embedded in the volume: rays stop at it (network built in code)");
+        network_file_ = p.add_file("network", "", "a network file, as typed or one in the lab folder (raycast.network, probe.network); "
+                                                  "empty: built in code. Parameters the file sets win over these");
+        probe_ = p.add_bool("probe", false, "an opaque sphere embedded in the volume: rays stop at it (network built in code)");
         // The processors declare their own parameters (sources.cpp, ray_traversal.cpp, ...); the lab offers those of
         // the network built in code, probe included, and each processor follows them (apply_params).
         const gsv::Network network = lab06::build_network(true);
         for (const auto& processor : network.processors())
             p.adopt(processor->name(), processor->describe(), processor->params());
-        p.param<glm::vec3>("probe_position").applies_when("probe", {"on"});
-        p.param<float>("probe_radius").applies_when("probe", {"on"});
+        // Refined here, where the probe is a choice: the declarations are the processors'.
+        p.param<glm::vec3>("probe_position").applies_when(probe_, true);
+        p.param<float>("probe_radius").applies_when(probe_, true);
         p.param<std::string>("compositing").series();
         p.param<float>("samples_per_voxel").accuracy_knob({"0.25", "0.5", "1", "2", "4"});
-        p.add_bool("compare_shaders", false, "sweep: also time the uber-shader and the hand-written DVR")
-            .may_draw_the_same("it adds timings to a sweep; the picture is the chosen shader's");
+        compare_shaders_ = p.add_bool("compare_shaders", false, "sweep: also time the uber-shader and the hand-written DVR")
+                               .may_draw_the_same("it adds timings to a sweep; the picture is the chosen shader's");
         gsv::add_orbit_camera(p, 30, 25, framing_distance(), 0.1f);  // down to 0.1: inside the volume
     }
 
@@ -103,14 +104,14 @@ public:
     }
     bool sweep_reference_per_series() const override { return true; }
 
-    gsv::SweepMetrics sweep_metrics(gsv::LabKit& kit, const gsv::Frame&) override {
+    gsv::SweepMetrics sweep_metrics([[maybe_unused]] gsv::LabKit& kit, const gsv::Frame&) override {
         auto* raycaster = dynamic_cast<lab06::RayTraversal*>(network_ ? network_->find("raycaster") : nullptr);
         if (!raycaster) return {};
         gsv::SweepMetrics metrics;
 #ifdef GSV_HAVE_REFERENCE
         metrics = lab06::measure_hits(kit, *raycaster, view_);  // against the instructor's exact hits (reference/)
 #endif
-        if (kit.params().get_bool("compare_shaders")) {
+        if (compare_shaders_.get()) {
             const gsv::SweepMetrics times = lab06::compare_shaders(*raycaster);
             metrics.insert(metrics.end(), times.begin(), times.end());
         }
@@ -155,16 +156,16 @@ private:
     // The network file, or the network built in code: rebuilt when either choice changes, and when the file is
     // saved (its time is a key), as a shader reloads.
     void update_network(gsv::LabKit& kit) {
-        const std::string file = kit.params().get_file("network");
+        const std::string file = network_file_.get();
         const std::filesystem::path path = file.empty() ? std::filesystem::path() : network_path(kit.assets(), file);
         std::error_code ec;
         const auto saved = file.empty() ? 0 : std::filesystem::last_write_time(path, ec).time_since_epoch().count();
-        network_built_.run_if_changed(kit.params(), [&] { network_ = load_network(kit.params(), path); }, path.string(), saved);
+        network_built_.run_if_changed(kit.params(), [&] { network_ = load_network(path); }, path.string(), saved);
     }
 
-    std::unique_ptr<gsv::Network> load_network(const gsv::Params& p, const std::filesystem::path& path) {
-        auto network = std::make_unique<gsv::Network>(p.get_file("network").empty() ? lab06::build_network(p.get_bool("probe"))
-                                                                                     : gsv::read_network_file(path, registry_));
+    std::unique_ptr<gsv::Network> load_network(const std::filesystem::path& path) {
+        auto network = std::make_unique<gsv::Network>(network_file_.get().empty() ? lab06::build_network(probe_.get())
+                                                                                   : gsv::read_network_file(path, registry_));
         lab06::set_view(*network, &view_);
         return network;
     }
@@ -203,6 +204,8 @@ private:
         return report.text();
     }
 
+    gsv::Param<std::string> network_file_;
+    gsv::Param<bool> probe_, compare_shaders_;
     gsv::ProcessorRegistry registry_;
     std::unique_ptr<gsv::Network> network_;
     gsv::ChangeTracker network_built_;

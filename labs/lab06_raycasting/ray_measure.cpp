@@ -9,17 +9,20 @@ namespace lab06 {
 
 gsv::SweepMetrics compare_shaders(RayTraversal& raycaster) {
     // Set on its parameters, not with set_param: not marked as set, so the lab's parameter still leads.
-    const std::string chosen = raycaster.params().get_choice("shader");
+    const Shader chosen = raycaster.shader().get();
     gsv::RaycastConfig dvr;
     dvr.gradient = gsv::RaycastConfig::Gradient::Central;
     dvr.classification = gsv::RaycastConfig::Classification::TransferFunction;
     dvr.shading = gsv::RaycastConfig::Shading::Phong;
     dvr.early_termination = raycaster.config().early_termination;
-    std::vector<std::string> shaders{"specialised", "uber"};
-    if (gsv::effective_config(raycast_modules(), raycaster.config()) == dvr) shaders.push_back("handwritten");
+    std::vector<Shader> shaders{Shader::Specialised, Shader::Uber};
+    if (gsv::effective_config(raycast_modules(), raycaster.config()) == dvr) shaders.push_back(Shader::Handwritten);
+    const auto choose = [&raycaster](Shader shader) {
+        raycaster.params().set(raycaster.shader().name(), raycaster.shader().name_of(shader));
+    };
     std::vector<gsv::TimedWork> work;
-    for (const auto& shader : shaders)
-        work.push_back({[&raycaster, shader] { raycaster.params().set("shader", shader); }, [&raycaster] { raycaster.process(); }});
+    for (const Shader shader : shaders)
+        work.push_back({[choose, shader] { choose(shader); }, [&raycaster] { raycaster.process(); }});
     gsv::SweepMetrics m;
     try {
         const gsv::InterleavedTimes times = gsv::time_interleaved(work, gsv::kCompareWarmup, gsv::kCompareFrames, gsv::kCompareRounds);
@@ -31,10 +34,10 @@ gsv::SweepMetrics compare_shaders(RayTraversal& raycaster) {
             gsv::add_ratio(m, "specialised_over_handwritten", times.ratio(0, 2));
         }
     } catch (...) {
-        raycaster.params().set("shader", chosen);
+        choose(chosen);
         throw;
     }
-    raycaster.params().set("shader", chosen);
+    choose(chosen);
     return m;
 }
 

@@ -19,10 +19,12 @@ RayTraversal::RayTraversal()
       classification_(params().add_choice("classification", "tf", gsv::classification_names(raycast_modules()),
                                           "intensity as opacity, or the transfer function")),
       shading_(params().add_choice("shading", "phong", gsv::shading_names(raycast_modules()), "Phong needs a gradient")),
-      shader_(params().add_choice("shader", "specialised", {"specialised", "uber", "handwritten"},
-                                  "only the chosen modules compiled; all of them chosen by uniforms; DVR written by hand")
+      shader_(params().add_enum("shader", Shader::Specialised, kShaders,
+                                "only the chosen modules compiled; all of them chosen by uniforms; DVR written by hand")
                   .may_draw_the_same("each draws the specialised shader's picture (the hand-written one DVR only), at its own cost")),
-      transfer_function_name_(params().add_choice("transfer_function", "bands", kTransferFunctions, "the 1D transfer function")),
+      // Only the lab reads it: it makes the table the sampler uTransferFunction reads.
+      transfer_function_(params().add_enum("transfer_function", TransferFunction::Bands, kTransferFunctions, "the 1D transfer function")
+                             .without_uniform()),
       rays_(params()),
       dvr_(params()),
       iso_(params()),
@@ -32,7 +34,7 @@ RayTraversal::RayTraversal()
     add_input("entry", gsv::PortType::Image);
     add_input("exit", gsv::PortType::Image);
     add_output("image", gsv::PortType::Image);
-    params().param<float>("iso_value").applies_when("compositing", {"iso"});
+    gsv::Param<float>(iso_.iso_value()).applies_when(compositing_.name(), {"iso"});
 }
 
 Config RayTraversal::config() const {
@@ -46,10 +48,10 @@ Config RayTraversal::config() const {
     return c;
 }
 
-const gsv::ShaderLibrary::Entry& RayTraversal::program_for(const std::string& shader, const Config& config) {
+const gsv::ShaderLibrary::Entry& RayTraversal::program_for(Shader shader, const Config& config) {
     gsv::LabKit& k = kit();
     // Programs are named after this processor, so a compile error names who owns the shader.
-    if (shader == "uber") {
+    if (shader == Shader::Uber) {
         if (!uber_) {
             gsv::ProgramSpec spec;
             spec.name = describe() + " uber";
@@ -59,7 +61,7 @@ const gsv::ShaderLibrary::Entry& RayTraversal::program_for(const std::string& sh
         }
         return *uber_;
     }
-    if (shader == "handwritten") {
+    if (shader == Shader::Handwritten) {
         Config wanted;
         wanted.compositing = Config::Compositing::Dvr;
         wanted.gradient = Config::Gradient::Central;
@@ -89,11 +91,11 @@ const gsv::ShaderLibrary::Entry& RayTraversal::program_for(const std::string& sh
 }
 
 const gsv::Texture& RayTraversal::transfer_function() {
-    transfer_function_.update(params(), [&] {
-        const std::vector<float> table = transfer_function_table(transfer_function_name_.get());
+    transfer_function_table_.update(params(), [&] {
+        const std::vector<float> table = transfer_function_table(transfer_function_.get());
         return gsv::Texture::create_2d(kTransferFunctionEntries, 1, gsv::TexelFormat::RGBA32F, table.data());
     });
-    return *transfer_function_;
+    return *transfer_function_table_;
 }
 
 void RayTraversal::process() {
@@ -135,7 +137,7 @@ void RayTraversal::process() {
     dvr_.voxel_step = 1.0f / static_cast<float>(largest);
     modes_.config = requested;
     gsv::ShaderComponents components{&rays_, &voxels_, &gradients_, &table_, &phong_, &dvr_, &iso_};
-    if (shader_.get() == "uber") components.push_back(&modes_);
+    if (shader_.get() == Shader::Uber) components.push_back(&modes_);
     gsv::apply_components(program, components);
     if (!quad_.vertex_count()) quad_ = gsv::GpuMesh(gsv::make_fullscreen_quad(), kit().profile());
     quad_.draw();

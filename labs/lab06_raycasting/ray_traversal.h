@@ -13,10 +13,15 @@
 #include "common/shader/shader_library.h"
 #include "raycast_modules.h"
 #include "support/raycast/raycast_components.h"
+#include "transfer_function.h"
 
 #include <string>
 
 namespace lab06 {
+
+enum class Shader { Specialised, Uber, Handwritten };
+inline constexpr gsv::EnumName<Shader> kShaders[] = {
+    {Shader::Specialised, "specialised"}, {Shader::Uber, "uber"}, {Shader::Handwritten, "handwritten"}};
 
 class RayTraversal final : public LabProcessor {
 public:
@@ -31,11 +36,12 @@ public:
     const std::shared_ptr<ImageData>& image() const { return image_; }
     // The transfer function's table as the classification module reads it (the legend samples it there too).
     const gsv::Texture& transfer_function();
-    std::string transfer_function_name() const { return transfer_function_name_.get(); }
+    std::string transfer_function_name() const { return transfer_function_.param().get(); }
+    const gsv::EnumParam<Shader>& shader() const { return shader_; }
     double iso_value() const { return iso_.iso_value().in_double().get(); }
 
 private:
-    const gsv::ShaderLibrary::Entry& program_for(const std::string& shader, const gsv::RaycastConfig& config);
+    const gsv::ShaderLibrary::Entry& program_for(Shader shader, const gsv::RaycastConfig& config);
 
     const gsv::ShaderLibrary::Entry* specialised_ = nullptr;
     gsv::RaycastConfig specialised_config_;
@@ -44,7 +50,9 @@ private:
     const gsv::ShaderLibrary::Entry* last_ = nullptr;
     // In the order of the parameters (the lab's list, the panel): the module choices, then what each module's
     // component declares and sets (support/raycast/raycast_components.h).
-    gsv::Param<std::string> compositing_, gradient_, classification_, shading_, shader_, transfer_function_name_;
+    gsv::Param<std::string> compositing_, gradient_, classification_, shading_;
+    gsv::EnumParam<Shader> shader_;
+    gsv::EnumParam<TransferFunction> transfer_function_;
     gsv::RaySetup rays_;
     gsv::DvrCompositing dvr_;
     gsv::IsoCompositing iso_;
@@ -54,7 +62,7 @@ private:
     gsv::TransferFunctionLookup table_;
     gsv::UberModes modes_;
     gsv::GpuMesh quad_;
-    gsv::Tracked<gsv::Texture> transfer_function_;
+    gsv::Tracked<gsv::Texture> transfer_function_table_;
     std::shared_ptr<ImageData> image_;
 };
 

@@ -1,8 +1,5 @@
 #include "transfer_function.h"
 
-#include "common/core/error.h"
-#include "support/network/processor.h"
-
 #include <algorithm>
 #include <array>
 
@@ -11,9 +8,10 @@ namespace {
 
 using Point = std::array<float, 5>;  // intensity, r, g, b, opacity
 
-std::vector<Point> control_points(const std::string& name) {
-    if (name == "grey") return {{0.0f, 0, 0, 0, 0}, {0.15f, 0.2f, 0.2f, 0.2f, 0}, {1.0f, 1, 1, 1, 0.4f}};
-    if (name == "bands")
+std::vector<Point> control_points(TransferFunction preset) {
+    switch (preset) {
+    case TransferFunction::Grey: return {{0.0f, 0, 0, 0, 0}, {0.15f, 0.2f, 0.2f, 0.2f, 0}, {1.0f, 1, 1, 1, 0.4f}};
+    case TransferFunction::Bands:
         return {{0.0f, 0, 0, 0, 0},           {0.33f, 0.1f, 0.3f, 0.9f, 0},   {0.4f, 0.1f, 0.4f, 0.95f, 0.3f},
                 {0.45f, 0.1f, 0.3f, 0.9f, 0}, {0.47f, 0.95f, 0.85f, 0.2f, 0}, {0.52f, 0.95f, 0.85f, 0.2f, 0.6f},
                 {0.57f, 0.9f, 0.8f, 0.2f, 0}, {0.62f, 0.9f, 0.2f, 0.1f, 0},   {0.7f, 0.9f, 0.2f, 0.1f, 0.8f},
@@ -22,7 +20,7 @@ std::vector<Point> control_points(const std::string& name) {
     // 0.75-0.95, the brightest 0.5% of voxels at 1. The fluid of the ventricles opaque blue; grey matter all but clear, so
     // the structures inside show through it; white matter from faint to dense cream, the densest (the corpus
     // callosum's arc) opaque enough that MIP, which classifies one sample a ray, shows it bright.
-    if (name == "tissue")
+    case TransferFunction::Tissue:
         return {{0.0f, 0, 0, 0, 0},
                 {0.08f, 0.2f, 0.4f, 0.9f, 0},
                 {0.14f, 0.25f, 0.5f, 1.0f, 0.6f},
@@ -33,13 +31,14 @@ std::vector<Point> control_points(const std::string& name) {
                 {0.8f, 1.0f, 0.9f, 0.8f, 0.1f},
                 {0.9f, 1.0f, 0.96f, 0.92f, 0.45f},
                 {1.0f, 1, 1, 1, 0.8f}};
-    throw gsv::Error("unknown transfer function '" + name + "' (known: " + gsv::list_or_none(kTransferFunctions) + ")");
+    }
+    return {};
 }
 
 }  // namespace
 
-std::vector<float> transfer_function_table(const std::string& name) {
-    const std::vector<Point> points = control_points(name);
+std::vector<float> transfer_function_table(TransferFunction preset) {
+    const std::vector<Point> points = control_points(preset);
     std::vector<float> table;
     table.reserve(4 * kTransferFunctionEntries);
     for (int i = 0; i < kTransferFunctionEntries; ++i) {

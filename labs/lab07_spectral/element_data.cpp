@@ -16,7 +16,7 @@ void ElementData::bind(const gsv::ShaderProgram& program) const {
     program.set("uVerticesPerElement", (subdivisions + 1) * (subdivisions + 1));
 }
 
-void update_element_data(ElementData& data, const gsv::LabKit& kit) {
+void update_element_data(ElementData& data, const gsv::LabKit& kit, const ElementParams& params) {
     const gsv::Params& p = kit.params();
     const gsv::Profile profile = kit.profile();
     const gsv::BufferTextureStorage storage = kit.allows(gsv::gl_feature::kBufferTextures)
@@ -24,25 +24,25 @@ void update_element_data(ElementData& data, const gsv::LabKit& kit) {
                                                   : gsv::BufferTextureStorage::Rows;
     data.mesh_made.run_if_changed(p, [&] {
         gsv::ElementMesh mesh;
-        mesh.shape = p.get_choice("mesh") == "grid" ? gsv::ElementMesh::Shape::Grid : gsv::ElementMesh::Shape::Annulus;
-        mesh.columns = p.get_int("columns");
-        mesh.rows = p.get_int("rows");
-        mesh.inner = p.get_float("inner_radius");
+        mesh.shape = params.mesh.get();
+        mesh.columns = params.columns.get();
+        mesh.rows = params.rows.get();
+        mesh.inner = params.inner_radius.get();
         gsv::validate(mesh);
         data.mesh = mesh;
     });
     data.patches_made.run_if_changed(p, [&] {
-        data.subdivisions = p.get_int("subdivisions");
+        data.subdivisions = params.subdivisions.get();
         data.patches = gsv::GpuMesh(gsv::element_patches(data.mesh, data.subdivisions), profile);
     }, data.mesh_made.version());
     data.basis_made.run_if_changed(p, [&] {
-        data.degree = p.get_int("degree");
-        data.nodes = gsv::lagrange_nodes(gsv::parse_node_set(p.get_choice("node_set")), data.degree);
+        data.degree = params.degree.get();
+        data.nodes = gsv::lagrange_nodes(params.node_set.get(), data.degree);
         data.weights = gsv::barycentric_weights(data.nodes);
     });
     data.values_made.run_if_changed(p, [&] {
-        data.field = gsv::parse_spectral_field(p.get_choice("field"));
-        data.time = p.get_float("time");
+        data.field = params.field.get();
+        data.time = params.time.get();
         data.values = gsv::sample_element_values(data.mesh, data.field, data.nodes, data.time);
         data.value_texture = gsv::BufferTexture::create_r32f(data.values.data(), data.values.size(), storage);
         const auto [lo, hi] = std::minmax_element(data.values.begin(), data.values.end());

@@ -22,35 +22,45 @@
 
 namespace {
 
+enum class Evaluation { Full, Corners, Basis };
+constexpr gsv::EnumName<Evaluation> kEvaluations[] = {
+    {Evaluation::Full, "full"}, {Evaluation::Corners, "corners"}, {Evaluation::Basis, "basis"}};
+
 class SpectralLab final : public gsv::Lab {
 public:
     gsv::LabInfo info() const override { return {"lab07", "Rendering spectral elements"}; }
 
     void declare(gsv::Params& p) override {
-        p.add_choice("mesh", "annulus", {"annulus", "grid"}, "curved elements around a ring, or square elements tiling [-1,1]^2");
-        p.add_int("columns", 32, 1, 4096, "elements around the ring (annulus) or across (grid)");
-        p.add_int("rows", 4, 1, 4096, "elements across the ring (annulus) or up (grid)");
-        p.add_float("inner_radius", 0.35, 0, 0.95, "the annulus's inner radius (the outer is 1)").with_step(0.05).applies_when("mesh", {"annulus"});
-        p.add_choice("field", "waves", {"waves", "runge", "polynomial"},
-                     "travelling waves; Runge's function; a polynomial of degree 3 per variable");
-        p.add_int("degree", 4, 1, 16, "p: the polynomial degree per axis, p + 1 nodes per axis (the seed's order p - 1)")
-            .at_compile_time()
-            .accuracy_knob({"1", "2", "3", "4", "6", "8", "12", "16"});
-        p.add_choice("node_set", "gll", {"gll", "equispaced"}, "Gauss-Lobatto-Legendre or equispaced nodes").series();
-        p.add_choice("evaluation", "full", {"full", "corners", "basis"},
-                     "the polynomial per fragment, the bilinear blend of each element's corner values, or one basis "
-                     "function l_k(xi) in grey across every element").at_compile_time();
+        lab07::ElementParams& e = element_params_;
+        using Shape = gsv::ElementMesh::Shape;
+        e.mesh = p.add_enum("mesh", Shape::Annulus, gsv::ElementMesh::kShapeNames,
+                            "curved elements around a ring, or square elements tiling [-1,1]^2");
+        e.columns = p.add_int("columns", 32, 1, 4096, "elements around the ring (annulus) or across (grid)");
+        e.rows = p.add_int("rows", 4, 1, 4096, "elements across the ring (annulus) or up (grid)");
+        e.inner_radius = p.add_float("inner_radius", 0.35, 0, 0.95, "the annulus's inner radius (the outer is 1)")
+                             .with_step(0.05)
+                             .applies_when(e.mesh, {Shape::Annulus});
+        e.field = p.add_enum("field", gsv::SpectralField::Waves, gsv::kSpectralFieldNames,
+                             "travelling waves; Runge's function; a polynomial of degree 3 per variable");
+        e.degree = p.add_int("degree", 4, 1, 16, "p: the polynomial degree per axis, p + 1 nodes per axis (the seed's order p - 1)")
+                       .at_compile_time()
+                       .accuracy_knob({"1", "2", "3", "4", "6", "8", "12", "16"});
+        e.node_set = p.add_enum("node_set", gsv::NodeSet::GaussLobattoLegendre, gsv::kNodeSetNames,
+                                "Gauss-Lobatto-Legendre or equispaced nodes").series();
+        const auto evaluation = p.add_enum("evaluation", Evaluation::Full, kEvaluations,
+                                           "the polynomial per fragment, the bilinear blend of each element's corner values, "
+                                           "or one basis function l_k(xi) in grey across every element").at_compile_time();
         p.add_int("basis_index", 1, 0, 16, "k: the basis function drawn (evaluation=basis), clamped to the degree")
-            .applies_when("evaluation", {"basis"});
-        p.add_int("subdivisions", 6, 1, 64, "quads per element side, to follow curved elements (the field is per fragment)");
-        p.add_float("time", 0, 0, 6.2832, "the field's time: play it in the window").with_step(0.05).animated();
-        p.add_bool("auto_range", true, "colour range from the smallest to the largest node value");
-        p.add_float("range_min", -1, -100, 100, "with auto_range off: the value drawn blue").with_step(0.05).applies_when("auto_range", {"off"});
-        p.add_float("range_max", 1, -100, 100, "with auto_range off: the value drawn red").with_step(0.05).applies_when("auto_range", {"off"});
-        p.add_effect("element_edges", true, "a thin dark line along every element's edges");
-        p.add_float("zoom", 1, 0.5, 500, "magnification (1: the whole mesh)").with_step(0.25);
-        p.add_float("centre_x", 0, -1.2, 1.2, "the point looked at").with_step(0.02);
-        p.add_float("centre_y", 0, -1.2, 1.2, "the point looked at").with_step(0.02);
+            .applies_when(evaluation, {Evaluation::Basis});
+        e.subdivisions = p.add_int("subdivisions", 6, 1, 64, "quads per element side, to follow curved elements (the field is per fragment)");
+        e.time = p.add_float("time", 0, 0, 6.2832, "the field's time: play it in the window").with_step(0.05).animated();
+        auto_range_ = p.add_bool("auto_range", true, "colour range from the smallest to the largest node value");
+        range_min_ = p.add_float("range_min", -1, -100, 100, "with auto_range off: the value drawn blue").with_step(0.05).applies_when(auto_range_, false);
+        range_max_ = p.add_float("range_max", 1, -100, 100, "with auto_range off: the value drawn red").with_step(0.05).applies_when(auto_range_, false);
+        element_edges_ = p.add_effect("element_edges", true, "a thin dark line along every element's edges");
+        zoom_ = p.add_float("zoom", 1, 0.5, 500, "magnification (1: the whole mesh)").with_step(0.25);
+        centre_x_ = p.add_float("centre_x", 0, -1.2, 1.2, "the point looked at").with_step(0.02);
+        centre_y_ = p.add_float("centre_y", 0, -1.2, 1.2, "the point looked at").with_step(0.02);
     }
 
     void setup(gsv::LabKit& kit) override {
@@ -60,14 +70,14 @@ public:
     }
 
     void render(gsv::LabKit& kit, const gsv::Frame& frame) override {
-        lab07::update_element_data(data_, kit);
+        lab07::update_element_data(data_, kit, element_params_);
         glDisable(GL_DEPTH_TEST);
         glClearColor(0.12f, 0.12f, 0.14f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT);
         const gsv::ShaderProgram& program = kit.use(*programs_.color);
-        kit.set_transforms(program, transforms(kit.params(), frame));
+        kit.set_transforms(program, transforms(frame));
         data_.bind(program);
-        if (kit.params().get_bool("auto_range")) {
+        if (auto_range_.get()) {
             program.set("uRangeMin", data_.min_value);
             program.set("uRangeMax", data_.max_value);
         }
@@ -76,21 +86,20 @@ public:
 
     // The field's colours as color_map.glsl gives them over the range drawn, and its colours outside that range.
     std::optional<gsv::Legend> legend(gsv::LabKit& kit) override {
-        const gsv::Params& p = kit.params();
-        lab07::update_element_data(data_, kit);
-        const bool automatic = p.get_bool("auto_range");
-        const float low = automatic ? data_.min_value : p.get_float("range_min");
-        const float high = automatic ? data_.max_value : p.get_float("range_max");
+        lab07::update_element_data(data_, kit, element_params_);
+        const bool automatic = auto_range_.get();
+        const float low = automatic ? data_.min_value : range_min_.get();
+        const float high = automatic ? data_.max_value : range_max_.get();
         const auto set_range = [&](const gsv::ShaderProgram& program) {
             program.set("uRangeMin", low);
             program.set("uRangeMax", high);
         };
         gsv::Legend legend;
-        legend.title = "value of " + p.get_choice("field");
+        legend.title = "value of " + element_params_.field.param().get();
         legend.min = low;
         legend.max = high;
         legend.note = automatic ? "Range: the smallest to the largest node value (auto_range)." : "Range: range_min to range_max.";
-        if (p.get_bool("element_edges")) legend.note += " Dark lines: element edges.";
+        if (element_edges_.get()) legend.note += " Dark lines: element edges.";
         if (!(high > low)) {
             legend.specials.push_back({"empty range (max <= min)", legend_probe_.colors(kit, {low}, set_range)[0]});
             return legend;
@@ -116,7 +125,7 @@ public:
 #endif
 
     gsv::SweepMetrics sweep_metrics(gsv::LabKit& kit, const gsv::Frame& frame) override {
-        const gsv::Transforms t = transforms(kit.params(), frame);
+        const gsv::Transforms t = transforms(frame);
         gsv::SweepMetrics metrics;
 #ifdef GSV_HAVE_REFERENCE
         metrics = lab07::measure_values(kit, data_, programs_, t, frame.width, frame.height);
@@ -128,16 +137,19 @@ public:
 
 private:
     // A 2D view: the mesh spans [-1, 1]^2; zoom about (centre_x, centre_y), the aspect kept.
-    static gsv::Transforms transforms(const gsv::Params& p, const gsv::Frame& frame) {
-        const float half = 1.08f / p.get_float("zoom");
+    gsv::Transforms transforms(const gsv::Frame& frame) const {
+        const float half = 1.08f / zoom_.get();
         const float aspect = frame.aspect();
-        const glm::vec2 c(p.get_float("centre_x"), p.get_float("centre_y"));
+        const glm::vec2 c(centre_x_.get(), centre_y_.get());
         gsv::Transforms t;
         t.projection = glm::ortho(c.x - half * std::max(aspect, 1.0f), c.x + half * std::max(aspect, 1.0f),
                                   c.y - half / std::min(aspect, 1.0f), c.y + half / std::min(aspect, 1.0f), -1.0f, 1.0f);
         return t;
     }
 
+    lab07::ElementParams element_params_;
+    gsv::Param<bool> auto_range_, element_edges_;
+    gsv::Param<float> range_min_, range_max_, zoom_, centre_x_, centre_y_;
     lab07::MeasurePrograms programs_;
     lab07::ElementData data_;
     gsv::LegendProbe legend_probe_{"legend_probe.frag"};

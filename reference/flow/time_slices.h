@@ -3,10 +3,9 @@
 // lab 03's sliceCoordinate / nearestSlice / nextSlice (solutions/lab03_texture_arrays/flow_time.glsl).
 // T slices cover one period; slice k was sampled at time k * period / T. In reference/, the instructor's: linked by
 // the solutions and the tests, never by a student's build.
-namespace gsv {
+#include "support/flow/flow_field.h"  // TimeWrap, TimeBlend
 
-enum class TimeWrap { Repeat, Clamp };  // a periodic flow wraps: after slice T - 1 comes slice 0
-enum class TimeBlend { Nearest, Linear };
+namespace gsv {
 
 struct SliceMix {
     int first = 0, second = 0;  // slice indices in [0, T)

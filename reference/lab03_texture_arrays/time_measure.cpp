@@ -13,13 +13,6 @@ namespace {
 
 constexpr int kErrorTimes = 37;  // playheads over the period for the temporal error (prime)
 
-gsv::TimeWrap wrap_of(const gsv::Params& p) {
-    return p.get_choice("time_wrap") == "repeat" ? gsv::TimeWrap::Repeat : gsv::TimeWrap::Clamp;
-}
-gsv::TimeBlend blend_of(const gsv::Params& p) {
-    return p.get_choice("blend") == "linear" ? gsv::TimeBlend::Linear : gsv::TimeBlend::Nearest;
-}
-
 // The flow of `sequence` at the playhead as the shader should sample it, at texel (x, y).
 glm::dvec2 mixed(const gsv::FlowSequence& sequence, const gsv::SliceMix& m, int x, int y) {
     const glm::dvec2 a(sequence.frames[static_cast<std::size_t>(m.first)].at(x, y));
@@ -29,15 +22,14 @@ glm::dvec2 mixed(const gsv::FlowSequence& sequence, const gsv::SliceMix& m, int 
 
 // The flow itself at each of `times`, as the observer sees it: an analytic flow sampled there, or a file's frames,
 // spread over the period like slices, blended linearly in time.
-gsv::FlowSequence true_flow_at_times(gsv::LabKit& kit, const std::vector<double>& times) {
-    const auto& p = kit.params();
-    if (p.get_choice("field") != "file") return seen_by_observer(p, analytic_flow_at_times(kit, times));
-    const FileFlow file = load_file_flow(kit);
+gsv::FlowSequence true_flow_at_times(const gsv::LabKit& kit, const SliceParams& p, const std::vector<double>& times) {
+    if (p.field.get() != Field::File) return seen_by_observer(p, analytic_flow_at_times(p, times));
+    const FileFlow file = load_file_flow(kit, p);
     gsv::FlowSequence out;
     out.width = file.frames.width;
     out.height = file.frames.height;
     for (double time : times) {
-        const gsv::SliceMix m = gsv::slice_mix(time, kPeriod, static_cast<int>(file.frames.frames.size()), wrap_of(p),
+        const gsv::SliceMix m = gsv::slice_mix(time, kPeriod, static_cast<int>(file.frames.frames.size()), p.time_wrap.get(),
                                                gsv::TimeBlend::Linear);
         gsv::FlowField frame = file.frames.frames[static_cast<std::size_t>(m.first)];
         for (int y = 0; y < frame.height; ++y)
@@ -54,13 +46,12 @@ gsv::FlowSequence true_flow_at_times(gsv::LabKit& kit, const std::vector<double>
 
 }  // namespace
 
-gsv::SweepMetrics measure_sampling(gsv::LabKit& kit, const gsv::ShaderLibrary::Entry& probe, const gsv::GpuMesh& quad,
-                                   const gsv::FlowSequence& flow,
+gsv::SweepMetrics measure_sampling(gsv::LabKit& kit, const SliceParams& p, const gsv::ShaderLibrary::Entry& probe,
+                                   const gsv::GpuMesh& quad, const gsv::FlowSequence& flow,
                                    const std::function<void(const gsv::ShaderProgram&)>& bind_flow) {
-    const auto& p = kit.params();
     const int slices = static_cast<int>(flow.frames.size());
-    const gsv::TimeWrap wrap = wrap_of(p);
-    const gsv::TimeBlend blend = blend_of(p);
+    const gsv::TimeWrap wrap = p.time_wrap.get();
+    const gsv::TimeBlend blend = p.blend.get();
 
     // What the GPU sampled: one probe fragment per flow texel centre, so no spatial filtering mixes in.
     GLint previous_framebuffer = 0, viewport[4];
@@ -76,7 +67,7 @@ gsv::SweepMetrics measure_sampling(gsv::LabKit& kit, const gsv::ShaderLibrary::E
     glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
 
     const double speed = std::max(1e-30, static_cast<double>(flow.max_speed()));
-    const gsv::SliceMix now = gsv::slice_mix(p.get_float("time"), kPeriod, slices, wrap, blend);
+    const gsv::SliceMix now = gsv::slice_mix(p.time.get(), kPeriod, slices, wrap, blend);
     double sample_error = 0;
     for (int y = 0; y < flow.height; ++y)
         for (int x = 0; x < flow.width; ++x) {
@@ -89,7 +80,7 @@ gsv::SweepMetrics measure_sampling(gsv::LabKit& kit, const gsv::ShaderLibrary::E
     // (10 j + 3) / 370 of the period never fall on a slice of a power-of-two T: 5 never divides T.
     std::vector<double> times;
     for (int j = 0; j < kErrorTimes; ++j) times.push_back(kPeriod * (j + 0.3) / kErrorTimes);
-    const gsv::FlowSequence truth = true_flow_at_times(kit, times);
+    const gsv::FlowSequence truth = true_flow_at_times(kit, p, times);
     double squared = 0;
     long count = 0;
     for (int j = 0; j < kErrorTimes; ++j) {

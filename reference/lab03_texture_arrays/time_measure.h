@@ -5,6 +5,7 @@
 #include "common/app/app.h"
 #include "common/gl/gpu_mesh.h"
 #include "support/flow/flow_field.h"
+#include "time_flow.h"
 
 #include <functional>
 
@@ -14,8 +15,8 @@ namespace lab03 {
 // the same slices ("sample err": exactly 0 for an array; a 3D texture's filter shows here); the temporal error of
 // T slices against the flow itself (analytic, or a file's frames blended linearly in time), RMS over 37 playheads
 // of the period; and the slices' memory.
-gsv::SweepMetrics measure_sampling(gsv::LabKit& kit, const gsv::ShaderLibrary::Entry& probe, const gsv::GpuMesh& quad,
-                                   const gsv::FlowSequence& flow,
+gsv::SweepMetrics measure_sampling(gsv::LabKit& kit, const SliceParams& params, const gsv::ShaderLibrary::Entry& probe,
+                                   const gsv::GpuMesh& quad, const gsv::FlowSequence& flow,
                                    const std::function<void(const gsv::ShaderProgram&)>& bind_flow);
 
 }  // namespace lab03

@@ -52,14 +52,13 @@ double cpu_copy_bandwidth() {
 
 }  // namespace
 
-gsv::SweepMetrics measure(gsv::LabKit& kit, const Stepper& stepper, const gsv::ParticleSet& initial, long steps) {
-    const auto& p = kit.params();
+gsv::SweepMetrics measure(const Stepper& stepper, const gsv::ParticleSet& initial, long steps) {
+    const ParticleParams& p = stepper.params;
     const std::size_t count = stepper.buffers.count;
-    const double h = p.get_float("time_step");
-    gsv::StepSpec spec{gsv::particle_scene_from_name(p.get_choice("field")), gsv::integrator_from_name(p.get_choice("integrator")),
-                       h, p.get_float("gravity")};
+    const double h = p.time_step.get();
+    gsv::StepSpec spec{p.field.get(), p.integrator.get(), h, p.gravity.get()};
     std::optional<gsv::VelocityGrid> grid;
-    if (p.get_choice("source") == "texture") grid = gsv::VelocityGrid::sample(spec.scene, p.get_int("grid"));
+    if (p.source.get() == Source::Texture) grid = gsv::VelocityGrid::sample(spec.scene, p.grid.get());
     spec.grid = grid ? &*grid : nullptr;
 
     // Accuracy: the GPU's particles against the same particles in double precision, integrated by RK4 in
@@ -100,7 +99,7 @@ gsv::SweepMetrics measure(gsv::LabKit& kit, const Stepper& stepper, const gsv::P
     const double gpu_rate = static_cast<double>(count) / (times.stats[0].median_ms / 1000.0);
     const double cpu_rate = static_cast<double>(count) / (times.stats[1].median_ms / 1000.0);
     // Without colours the shader writes 16 bytes a particle fewer.
-    const double bytes = gsv::bytes_per_particle_step(spec) - (p.get_bool("color_by_speed") ? 0.0 : 16.0);
+    const double bytes = gsv::bytes_per_particle_step(spec) - (p.color_by_speed.get() ? 0.0 : 16.0);
 
     gsv::SweepMetrics m{{"steps", static_cast<double>(steps)}};
     gsv::add_time(m, "gpu_ms_per_step", times.stats[0]);

@@ -10,6 +10,6 @@
 namespace lab05 {
 
 // The buffers hold `steps` steps from `initial` at the current settings; measuring restarts them.
-gsv::SweepMetrics measure(gsv::LabKit& kit, const Stepper& stepper, const gsv::ParticleSet& initial, long steps);
+gsv::SweepMetrics measure(const Stepper& stepper, const gsv::ParticleSet& initial, long steps);
 
 }  // namespace lab05

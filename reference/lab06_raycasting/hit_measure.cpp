@@ -2,6 +2,7 @@
 
 #include "reference/volume/gradient.h"
 #include "support/geometry/ray_box.h"
+#include "sources.h"
 #include "support/volume/marschner_lobb.h"
 
 #include <glm/gtc/matrix_inverse.hpp>
@@ -21,15 +22,16 @@ glm::dvec3 unproject(const glm::dmat4& inverse, double x, double y, double z) {
 }  // namespace
 
 gsv::SweepMetrics measure_hits(gsv::LabKit& kit, const RayTraversal& raycaster, const FrameView& view) {
+    using Config = gsv::RaycastConfig;
     const gsv::Params& p = kit.params();
-    const std::string& compositing = p.get_choice("compositing");
-    if (p.get_choice("volume") != "marschner_lobb" || compositing != "iso" ||
-        p.get_bool("probe") || !p.get_file("network").empty() || p.get_vec3("clip_normal") != glm::vec3(0.0f) ||
-        !raycaster.image())
+    // The network built in code, whose ray caster follows the lab's parameters: its configuration is theirs.
+    const Config config = raycaster.config();
+    if (gsv::parse_enum(kVolumeKinds, "volume", p.get_choice("volume")) != VolumeKind::MarschnerLobb ||
+        config.compositing != Config::Compositing::Isosurface || p.get_bool("probe") || !p.get_file("network").empty() ||
+        p.get_vec3("clip_normal") != glm::vec3(0.0f) || !raycaster.image())
         return {};
     const gsv::Volume volume = gsv::make_marschner_lobb_volume(p.get_int("ml_size"));
-    const std::string gradient = p.get_choice("gradient");
-    const bool normals = gradient == "forward" || gradient == "central";
+    const bool normals = config.gradient == Config::Gradient::Forward || config.gradient == Config::Gradient::Central;
     const double iso = p.get_float("iso_value");
     const ImageData& image = *raycaster.image();
     const std::vector<float> depth = kit.read_depth(image);
@@ -71,7 +73,8 @@ gsv::SweepMetrics measure_hits(gsv::LabKit& kit, const RayTraversal& raycaster, 
             // edge, where the texture clamps: the schemes are compared on the isosurface only.
             if (normals && !cut_face) {
                 const glm::dvec3 t = gsv::marschner_lobb_texcoord(hit);
-                const glm::dvec3 g = gradient == "forward" ? gsv::forward_difference(volume, t) : gsv::central_difference(volume, t);
+                const glm::dvec3 g = config.gradient == Config::Gradient::Forward ? gsv::forward_difference(volume, t)
+                                                                                    : gsv::central_difference(volume, t);
                 const glm::dvec3 exact_g = gsv::marschner_lobb_gradient(hit);  // same point: the scheme alone
                 const double c = glm::dot(gsv::safe_normalize(g), gsv::safe_normalize(exact_g));
                 const double a = std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / 3.141592653589793;

@@ -25,39 +25,45 @@
 
 namespace {
 
+enum class Playhead { Time, Slice };
+constexpr gsv::EnumName<Playhead> kPlayheads[] = {{Playhead::Time, "time"}, {Playhead::Slice, "slice"}};
+
 class TextureArrayLab final : public gsv::Lab {
 public:
     gsv::LabInfo info() const override { return {"lab03", "Texture arrays: time-varying LIC"}; }
 
     void declare(gsv::Params& p) override {
-        p.add_choice("field", "double_gyre", {"double_gyre", "vortex_street", "file"},
-                     "the time-varying flow: analytic, or the sequence in field_file");
-        p.add_file("field_file", "flows/vortex_street.flow", "a .flow sequence (data/README.md) for field=file").applies_when("field", {"file"});
-        p.add_int("slices", 16, 1, 4096, "T: time slices stored over one period (of a file's frames, the one nearest each slice's time)")
-            .at_compile_time()
-            .accuracy_knob({"1", "2", "4", "8", "16", "32", "64"});
-        p.add_choice("blend", "nearest", {"nearest", "linear"}, "the nearest slice, or linear in time between two")
-            .at_compile_time()
-            .series();
-        p.add_choice("storage", "array", {"array", "volume", "separate"},
-                     "one 2D texture array, one 3D texture, or T separate 2D textures")
-            .at_compile_time()
-            .may_draw_the_same("the same slices held another way: the same picture, at another cost");
-        p.add_choice("time_wrap", "repeat", {"repeat", "clamp"}, "a periodic flow wraps; any other stops at the last slice")
-            .at_compile_time()
-            .may_draw_the_same("the two differ only once the playhead is past the last slice");
-        p.add_float("time", 3.3f, 0, 10, "the playhead over one period").with_step(0.1).animated();
-        p.add_choice("playhead", "time", {"time", "slice"},
-                     "the slice axis from the playhead's time, or a position on it set directly (slice)")
-            .at_compile_time();
+        lab03::SliceParams& s = slice_params_;
+        s.field = p.add_enum("field", gsv::UnsteadyKind::DoubleGyre, gsv::kUnsteadyKindNames, lab03::kFields,
+                             "the time-varying flow: analytic, or the sequence in field_file");
+        s.field_file = p.add_file("field_file", "flows/vortex_street.flow", "a .flow sequence (data/README.md) for field=file")
+                           .applies_when(s.field, {lab03::Field::File});
+        s.slices = p.add_int("slices", 16, 1, 4096, "T: time slices stored over one period (of a file's frames, the one nearest each slice's time)")
+                       .at_compile_time()
+                       .accuracy_knob({"1", "2", "4", "8", "16", "32", "64"});
+        s.blend = p.add_enum("blend", gsv::TimeBlend::Nearest, gsv::kTimeBlendNames, "the nearest slice, or linear in time between two")
+                      .at_compile_time()
+                      .series();
+        s.storage = p.add_enum("storage", lab03::Storage::Array, lab03::kStorages,
+                               "one 2D texture array, one 3D texture, or T separate 2D textures")
+                        .at_compile_time()
+                        .may_draw_the_same("the same slices held another way: the same picture, at another cost");
+        s.time_wrap = p.add_enum("time_wrap", gsv::TimeWrap::Repeat, gsv::kTimeWrapNames, "a periodic flow wraps; any other stops at the last slice")
+                          .at_compile_time()
+                          .may_draw_the_same("the two differ only once the playhead is past the last slice");
+        s.time = p.add_float("time", 3.3f, 0, 10, "the playhead over one period").with_step(0.1).animated();
+        const auto playhead = p.add_enum("playhead", Playhead::Time, kPlayheads,
+                                         "the slice axis from the playhead's time, or a position on it set directly (slice)")
+                                  .at_compile_time();
         p.add_float("slice", 0, 0, 4095, "s, the position on the slice axis in slice units (playhead=slice): in [0, T) on a periodic axis, at most T - 1 on a clamped one")
             .with_step(0.25)
-            .applies_when("playhead", {"slice"});
+            .applies_when(playhead, {Playhead::Slice});
         p.add_int("length", 20, 0, 200, "LIC steps each way");
-        p.add_int("grid", 256, 16, 1024, "flow texels across (the domain is twice as wide as high)");
-        p.add_float("speed", 1.0, 0, 4, "largest speed, in flow texels per step").with_step(0.1);
-        p.add_int("seed", 1, 0, 1000000, "the white noise");
-        gsv::add_lic_view_params(p);
+        s.grid = p.add_int("grid", 256, 16, 1024, "flow texels across (the domain is twice as wide as high)");
+        s.speed = p.add_float("speed", 1.0, 0, 4, "largest speed, in flow texels per step").with_step(0.1);
+        seed_ = p.add_int("seed", 1, 0, 1000000, "the white noise");
+        view_ = gsv::add_lic_view_params(p);
+        s.observer_velocity = view_.observer_velocity;
     }
 
     void setup(gsv::LabKit& kit) override {
@@ -72,10 +78,10 @@ public:
     void render(gsv::LabKit& kit, const gsv::Frame& frame) override {
         // The slices are uploaded only when what they were made from changes: playing the time costs no upload.
         const gsv::Params& p = kit.params();
-        flow_.update(p, [&] { return lab03::make_time_flow(kit); });
-        uploaded_.run_if_changed(p, [&] { upload(p); }, flow_.version());
-        noise_.update(p, [&] { return make_noise(p, frame); }, frame.width, frame.height);
-        contrast_.draw(kit, frame, gsv::lic_contrast_from_name(p.get_choice("contrast")), quad_, [&] {
+        flow_.update(p, [&] { return lab03::make_time_flow(kit, slice_params_); });
+        uploaded_.run_if_changed(p, [&] { upload(); }, flow_.version());
+        noise_.update(p, [&] { return make_noise(frame); }, frame.width, frame.height);
+        contrast_.draw(kit, frame, view_.contrast.get(), quad_, [&] {
             glDisable(GL_DEPTH_TEST);
             const gsv::ShaderProgram& program = kit.use(*lic_);
             program.bind("uNoise", *noise_);
@@ -91,24 +97,24 @@ public:
     std::string sweep_reference_name() const override { return "the flow blended linearly between 256 slices per period"; }
 
     // Without the instructor's reference/ (a student's build), the sweep has the images' errors and times only.
-    gsv::SweepMetrics sweep_metrics(gsv::LabKit& kit, const gsv::Frame&) override {
-        gsv::check_sweepable(gsv::lic_contrast_from_name(kit.params().get_choice("contrast")));
+    gsv::SweepMetrics sweep_metrics([[maybe_unused]] gsv::LabKit& kit, const gsv::Frame&) override {
+        gsv::check_sweepable(view_.contrast.get());
 #ifdef GSV_HAVE_REFERENCE
-        return lab03::measure_sampling(kit, *probe_, quad_, *flow_, [&](const gsv::ShaderProgram& p) { bind_flow(p); });
+        return lab03::measure_sampling(kit, slice_params_, *probe_, quad_, *flow_, [&](const gsv::ShaderProgram& p) { bind_flow(p); });
 #else
         return {};
 #endif
     }
 
 private:
-    void check_limits(gsv::LabKit& kit) const { lab03::check_storage_limits(kit); }
+    void check_limits(gsv::LabKit& kit) const { lab03::check_storage_limits(kit, slice_params_); }
 
-    static gsv::Texture make_noise(const gsv::Params& p, const gsv::Frame& frame) {
-        const std::vector<float> noise = gsv::white_noise(frame.width, frame.height, static_cast<std::uint64_t>(p.get_int("seed")));
+    gsv::Texture make_noise(const gsv::Frame& frame) const {
+        const std::vector<float> noise = gsv::white_noise(frame.width, frame.height, static_cast<std::uint64_t>(seed_.get()));
         return gsv::Texture::create_2d(frame.width, frame.height, gsv::TexelFormat::R32F, noise.data());
     }
 
-    void upload(const gsv::Params& p) {
+    void upload() {
         const int slices = static_cast<int>(flow_->frames.size());
         const int w = flow_->width, h = flow_->height;
         // TODO(L03-T1): one buffer with all T slices, slice k straight after slice k - 1 (at
@@ -122,15 +128,15 @@ private:
 //        packed.assign(static_cast<std::size_t>(slices) * static_cast<std::size_t>(w * h * 2), 0.0f);
 //        std::copy(flow_->frames[0].velocity.begin(), flow_->frames[0].velocity.end(), packed.begin());
 //@end
-        const std::string storage = p.get_choice("storage");
+        const lab03::Storage storage = slice_params_.storage.get();
         array_ = gsv::Texture();
         volume_ = gsv::Texture();
         separate_.clear();
         gsv::Sampling sampling;  // linear in s and t, clamped at the borders of the domain
-        if (storage == "array") {
+        if (storage == lab03::Storage::Array) {
             array_ = gsv::Texture::create_2d_array(w, h, slices, gsv::TexelFormat::RG32F, packed.data(), sampling);
-        } else if (storage == "volume") {
-            sampling.wrap_r = p.get_choice("time_wrap") == "repeat" ? GL_REPEAT : GL_CLAMP_TO_EDGE;
+        } else if (storage == lab03::Storage::Volume) {
+            sampling.wrap_r = slice_params_.time_wrap.get() == gsv::TimeWrap::Repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;
             volume_ = gsv::Texture::create_3d(w, h, slices, gsv::TexelFormat::RG32F, packed.data(), sampling);
         } else {
             for (const gsv::FlowField& slice : flow_->frames)
@@ -151,6 +157,9 @@ private:
         }
     }
 
+    lab03::SliceParams slice_params_;
+    gsv::Param<int> seed_;
+    gsv::LicViewParams view_;
     const gsv::ShaderLibrary::Entry* lic_ = nullptr;
     const gsv::ShaderLibrary::Entry* probe_ = nullptr;
     gsv::GpuMesh quad_;

@@ -18,22 +18,21 @@ void round_to_8_bits(gsv::HeightField& field) {
 
 }  // namespace
 
-Terrain load_terrain(gsv::LabKit& kit) {
-    const auto& p = kit.params();
-    const std::string name = p.get_choice("terrain");
+Terrain load_terrain(const gsv::LabKit& kit, const TerrainParams& p) {
+    const TerrainChoice choice = p.terrain.get();
     Terrain terrain;
-    if (name == "jacksboro" || name == "topobathy") {
-        terrain.field = gsv::load_height_field(
-            kit.assets().data_file(std::string("terrain/") + (name == "jacksboro" ? "jacksboro_fault" : "topobathy") + ".height"));
+    if (const auto real = choice.as<RealTerrain>()) {
+        terrain.field = gsv::load_height_field(kit.assets().data_file(
+            std::string("terrain/") + (*real == RealTerrain::Jacksboro ? "jacksboro_fault" : "topobathy") + ".height"));
     } else {
         gsv::ProceduralTerrain procedural;
-        procedural.kind = gsv::terrain_kind_from_name(name);
+        procedural.kind = *choice.as<gsv::TerrainKind>();
         procedural.extent_m = kProceduralExtentM;
         procedural.amplitude_m = procedural.kind == gsv::TerrainKind::SinCos ? 300 : 1000;
-        terrain.field = gsv::make_procedural(procedural, p.get_int("grid"), p.get_int("grid"));
+        terrain.field = gsv::make_procedural(procedural, p.grid.get(), p.grid.get());
         terrain.procedural = procedural;
     }
-    if (p.get_bool("heights8")) round_to_8_bits(terrain.field);
+    if (p.heights8.get()) round_to_8_bits(terrain.field);
     return terrain;
 }
 

@@ -15,9 +15,21 @@ struct Terrain {
     std::optional<gsv::ProceduralTerrain> procedural;    // set when the exact normals are known
 };
 
+// The real elevation models in data/terrain, then support/terrain's procedural ones (gsv::kTerrainKindNames).
+enum class RealTerrain { Jacksboro, Topobathy };
+inline constexpr gsv::EnumName<RealTerrain> kRealTerrains[] = {{RealTerrain::Jacksboro, "jacksboro"}, {RealTerrain::Topobathy, "topobathy"}};
+using TerrainChoice = gsv::OneOf<RealTerrain, gsv::TerrainKind>;
+
+// The lab's parameters a terrain is made from: declared by the lab (lab.cpp), which keeps them.
+struct TerrainParams {
+    gsv::EnumParam<TerrainChoice> terrain;
+    gsv::Param<int> grid;
+    gsv::Param<bool> heights8;
+};
+
 // A real model from data/terrain (one line naming the file if it is missing or corrupt), or a procedural
 // terrain on a grid x grid samples over 10 km.
-Terrain load_terrain(gsv::LabKit& kit);
+Terrain load_terrain(const gsv::LabKit& kit, const TerrainParams& p);
 
 // The uniforms that place the terrain in the world: the larger side spans 2 model units, heights at the
 // same scale (times the exaggeration), the middle height at y = 0; and the spacing and height range.

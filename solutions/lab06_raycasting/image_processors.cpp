@@ -39,7 +39,8 @@ Canvas::Canvas() : LabProcessor("Canvas") {
     add_input("image", gsv::PortType::Image);
     add_optional_input("geometry", gsv::PortType::Image);
     add_output("image", gsv::PortType::Image);
-    background_ = params().add_vec3("background", {0.08f, 0.09f, 0.12f}, 0, 1, "the canvas behind everything");
+    // The canvas sets it on canvas.frag itself (process()); the ray caster's uBackground is another, a vec4 (RaySetup).
+    background_ = params().add_vec3("background", {0.08f, 0.09f, 0.12f}, 0, 1, "the canvas behind everything").without_uniform();
 }
 
 void Canvas::process() {

@@ -9,9 +9,9 @@
 namespace lab06 {
 namespace {
 
-gsv::Volume load_volume(const std::string& kind, const std::string& file, int ml_size, const gsv::Assets& assets) {
-    if (kind == "marschner_lobb") return gsv::make_marschner_lobb_volume(ml_size);
-    if (kind == "anatomical") {
+gsv::Volume load_volume(VolumeKind kind, const std::string& file, int ml_size, const gsv::Assets& assets) {
+    if (kind == VolumeKind::MarschnerLobb) return gsv::make_marschner_lobb_volume(ml_size);
+    if (kind == VolumeKind::Anatomical) {
         // The scan's own range runs up to a few dozen bright voxels at up to 2.3 times the white matter: normalised
         // over it, all the tissue would fall in [0.17, 0.45]. Windowed like a viewer opens it, from the 0.1th to
         // the 99.5th percentile, cerebrospinal fluid, grey and white matter spread over [0, 1] (about 0.1-0.35,
@@ -23,7 +23,7 @@ gsv::Volume load_volume(const std::string& kind, const std::string& file, int ml
         // exchange undoes the mirror (x to the subject's left, y up, z forward is a right-handed frame).
         return head.normalized().with_y_and_z_exchanged();
     }
-    if (kind == "constant") {
+    if (kind == VolumeKind::Constant) {
         gsv::Volume v;
         v.nx = v.ny = v.nz = 16;
         v.values.assign(16 * 16 * 16, 0.5f);
@@ -45,10 +45,13 @@ gsv::MeshData to_texture_space(gsv::MeshData mesh, const gsv::VolumeBox& box) {
 VolumeSource::VolumeSource() : LabProcessor("VolumeSource") {
     add_output("volume", gsv::PortType::Volume);
     gsv::Params& p = params();
-    kind_ = p.add_choice("volume", "marschner_lobb", {"marschner_lobb", "anatomical", "constant", "file"},
-                         "the test signal (exact values known), the MRI head, a constant (zero gradient), or volume_file");
-    file_ = p.add_file("volume_file", "", "a NIfTI-1 volume (.nii or .nii.gz), with volume=file").applies_when("volume", {"file"});
-    ml_size_ = p.add_int("ml_size", 41, 8, 256, "voxels per side of the Marschner-Lobb volume").applies_when("volume", {"marschner_lobb"});
+    // Only the processor reads it: it picks what goes into the texture the ray caster samples as uVolume.
+    kind_ = p.add_enum("volume", VolumeKind::MarschnerLobb, kVolumeKinds,
+                       "the test signal (exact values known), the MRI head, a constant (zero gradient), or volume_file")
+                .without_uniform();
+    file_ = p.add_file("volume_file", "", "a NIfTI-1 volume (.nii or .nii.gz), with volume=file").applies_when(kind_, {VolumeKind::File});
+    ml_size_ = p.add_int("ml_size", 41, 8, 256, "voxels per side of the Marschner-Lobb volume")
+                   .applies_when(kind_, {VolumeKind::MarschnerLobb});
 }
 
 void VolumeSource::process() {

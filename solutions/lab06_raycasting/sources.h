@@ -10,6 +10,12 @@
 
 namespace lab06 {
 
+enum class VolumeKind { MarschnerLobb, Anatomical, Constant, File };
+inline constexpr gsv::EnumName<VolumeKind> kVolumeKinds[] = {{VolumeKind::MarschnerLobb, "marschner_lobb"},
+                                                             {VolumeKind::Anatomical, "anatomical"},
+                                                             {VolumeKind::Constant, "constant"},
+                                                             {VolumeKind::File, "file"}};
+
 // Reads or generates the volume and uploads it as an R32F 3D texture (linear, clamp to edge).
 //   volume: marschner_lobb (the test signal, ml_size^3 over [-1,1]^3, values rho in [0, 1] as they are),
 //           anatomical (the MRI head from python3-nibabel, normalised), constant (16^3 of 0.5: a zero
@@ -20,7 +26,8 @@ public:
     void process() override;
 
 private:
-    gsv::Param<std::string> kind_, file_;
+    gsv::EnumParam<VolumeKind> kind_;
+    gsv::Param<std::string> file_;
     gsv::Param<int> ml_size_;
     gsv::Tracked<std::shared_ptr<VolumeData>> data_;
 };

@@ -14,6 +14,18 @@
 
 namespace lab07 {
 
+// The lab's parameters the element data are made from: declared by the lab (lab.cpp), which keeps them.
+struct ElementParams {
+    gsv::EnumParam<gsv::ElementMesh::Shape> mesh;
+    gsv::Param<int> columns, rows;
+    gsv::Param<float> inner_radius;
+    gsv::EnumParam<gsv::SpectralField> field;
+    gsv::Param<int> degree;
+    gsv::EnumParam<gsv::NodeSet> node_set;
+    gsv::Param<int> subdivisions;
+    gsv::Param<float> time;
+};
+
 struct ElementData {
     gsv::ElementMesh mesh;
     gsv::SpectralField field = gsv::SpectralField::Waves;
@@ -40,6 +52,6 @@ struct ElementData {
 // gsv::Error naming a bad mesh, gsv::UnsupportedError for more values than a buffer texture holds. The values
 // go into a buffer texture where the run has them, else into its stand-in (OpenGL ES 3.0, 3.1: rows of a 2D
 // texture, gsv/buffer_fetch.glsl).
-void update_element_data(ElementData& data, const gsv::LabKit& kit);
+void update_element_data(ElementData& data, const gsv::LabKit& kit, const ElementParams& params);
 
 }  // namespace lab07

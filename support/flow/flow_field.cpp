@@ -27,12 +27,6 @@ namespace {
 
 constexpr double kPi = glm::pi<double>();
 
-constexpr EnumName<FlowKind> kKinds[] = {{FlowKind::Rotation, "rotation"},
-                                {FlowKind::Saddle, "saddle"},
-                                {FlowKind::Source, "source"},
-                                {FlowKind::DoubleGyre, "double_gyre"},
-                                {FlowKind::Vortices, "vortices"}};
-
 // The double gyre of Shadden, Lekien and Marsden, "Definition and properties of Lagrangian coherent
 // structures from finite-time Lyapunov exponents in two-dimensional aperiodic flows", Physica D 212
 // (2005) 271-304, section 6.1, with their parameters A = 0.1, eps = 0.25, omega = 2 pi / 10. It is the
@@ -69,9 +63,9 @@ float FlowField::max_speed() const {
     return static_cast<float>(largest);
 }
 
-FlowKind flow_kind_from_name(const std::string& name) { return parse_enum(kKinds, "flow", name); }
+FlowKind flow_kind_from_name(const std::string& name) { return parse_enum(kFlowKindNames, "flow", name); }
 
-const char* flow_kind_name(FlowKind kind) { return name_of(kKinds, kind); }
+const char* flow_kind_name(FlowKind kind) { return name_of(kFlowKindNames, kind); }
 
 namespace {
 

@@ -18,6 +18,8 @@
 //   (GL texture order), and nothing after them. Every value must be finite, and the values may take at
 //   most kMaxFlowBytes (1 GiB). The optional fourth field keeps version 1: every file written before
 //   sequences existed still reads the same.
+#include "common/core/enum_names.h"
+
 #include <glm/glm.hpp>
 
 #include <cstdint>
@@ -57,9 +59,13 @@ inline constexpr int kMaxFlowFrames = 4096;
 inline constexpr std::uint64_t kMaxFlowBytes = std::uint64_t(1) << 30;
 
 enum class FlowKind { Rotation, Saddle, Source, DoubleGyre, Vortices };
+inline constexpr EnumName<FlowKind> kFlowKindNames[] = {{FlowKind::Rotation, "rotation"},
+                                                        {FlowKind::Saddle, "saddle"},
+                                                        {FlowKind::Source, "source"},
+                                                        {FlowKind::DoubleGyre, "double_gyre"},
+                                                        {FlowKind::Vortices, "vortices"}};
 
-// "rotation", "saddle", "source", "double_gyre", "vortices"; any other name throws gsv::Error listing
-// these.
+// A name of kFlowKindNames; any other throws gsv::Error listing them.
 FlowKind flow_kind_from_name(const std::string& name);
 const char* flow_kind_name(FlowKind kind);
 
@@ -149,10 +155,20 @@ FlowSequence make_double_gyre_sequence(int width, int height, int frames, double
 // The time-varying flows, each periodic with period 10 (the double gyre's; one vortex spacing of drift
 // for the street).
 enum class UnsteadyKind { DoubleGyre, VortexStreet };
+inline constexpr EnumName<UnsteadyKind> kUnsteadyKindNames[] = {{UnsteadyKind::DoubleGyre, "double_gyre"},
+                                                                {UnsteadyKind::VortexStreet, "vortex_street"}};
 inline constexpr double kUnsteadyPeriod = 10.0;
+
+// How T time slices of such a flow are read at a playhead (lab 03; reference/flow/time_slices.h mixes them on the CPU):
+// a periodic flow wraps, after slice T - 1 comes slice 0, any other stops at the last; the nearest slice, or linear
+// in time between two.
+enum class TimeWrap { Repeat, Clamp };
+enum class TimeBlend { Nearest, Linear };
+inline constexpr EnumName<TimeWrap> kTimeWrapNames[] = {{TimeWrap::Repeat, "repeat"}, {TimeWrap::Clamp, "clamp"}};
+inline constexpr EnumName<TimeBlend> kTimeBlendNames[] = {{TimeBlend::Nearest, "nearest"}, {TimeBlend::Linear, "linear"}};
 inline constexpr int kUnsteadyScaleTimes = 64;
 
-// "double_gyre", "vortex_street"; any other name throws gsv::Error listing these.
+// A name of kUnsteadyKindNames; any other throws gsv::Error listing them.
 UnsteadyKind unsteady_kind_from_name(const std::string& name);
 
 // Frames at the given times, scaled by ONE factor that depends on the flow and the grid only, not on the

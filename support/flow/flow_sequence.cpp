@@ -26,9 +26,7 @@ FlowSequence make_double_gyre_sequence(int width, int height, int frames, double
 }
 
 UnsteadyKind unsteady_kind_from_name(const std::string& name) {
-    static constexpr EnumName<UnsteadyKind> kNames[] = {{UnsteadyKind::DoubleGyre, "double_gyre"},
-                                                        {UnsteadyKind::VortexStreet, "vortex_street"}};
-    return parse_enum(kNames, "time-varying flow", name);
+    return parse_enum(kUnsteadyKindNames, "time-varying flow", name);
 }
 
 namespace {

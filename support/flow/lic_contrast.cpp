@@ -9,9 +9,6 @@
 namespace gsv {
 namespace {
 
-constexpr EnumName<LicContrast> kContrasts[] = {
-    {LicContrast::Off, "off"}, {LicContrast::Stretch, "stretch"}, {LicContrast::Equalize, "equalize"}};
-
 // The value below which `share` of the sorted values lie, linear between neighbours.
 float percentile(const std::vector<float>& sorted, double share) {
     const double position = share * static_cast<double>(sorted.size() - 1);
@@ -37,16 +34,7 @@ std::vector<float> cumulative_shares(const std::vector<float>& sorted, float low
 
 }  // namespace
 
-LicContrast lic_contrast_from_name(const std::string& name) { return parse_enum(kContrasts, "contrast", name); }
-
-const std::vector<std::string>& lic_contrast_names() {
-    static const std::vector<std::string> names = [] {
-        std::vector<std::string> out;
-        for (const auto& entry : kContrasts) out.push_back(entry.name);
-        return out;
-    }();
-    return names;
-}
+LicContrast lic_contrast_from_name(const std::string& name) { return parse_enum(kLicContrastNames, "contrast", name); }
 
 float ToneCurve::operator()(float grey) const {
     if (identity() || std::isnan(grey)) return grey;
@@ -86,7 +74,7 @@ ToneCurve make_tone_curve(const std::vector<float>& grey, LicContrast contrast) 
 
 void check_sweepable(LicContrast contrast) {
     if (contrast != LicContrast::Off)
-        throw Error(std::string("contrast=") + name_of(kContrasts, contrast) +
+        throw Error(std::string("contrast=") + name_of(kLicContrastNames, contrast) +
                     " draws each image through a tone curve of its own, so a sweep's errors would measure the curves "
                     "too: sweep with contrast=off");
 }

@@ -9,16 +9,19 @@
 //             level is equally common.
 // The curve is found on the CPU from the image's luminance and applied to every channel alike, so a grey image
 // stays grey.
+#include "common/core/enum_names.h"
+
 #include <string>
 #include <vector>
 
 namespace gsv {
 
 enum class LicContrast { Off, Stretch, Equalize };
+inline constexpr EnumName<LicContrast> kLicContrastNames[] = {
+    {LicContrast::Off, "off"}, {LicContrast::Stretch, "stretch"}, {LicContrast::Equalize, "equalize"}};
 
-// "off", "stretch", "equalize"; any other name throws gsv::Error listing these.
+// A name of kLicContrastNames; any other throws gsv::Error listing them.
 LicContrast lic_contrast_from_name(const std::string& name);
-const std::vector<std::string>& lic_contrast_names();
 
 // The percentiles a stretch maps to black and white.
 inline constexpr double kStretchLowShare = 0.005;

@@ -17,18 +17,10 @@ double uniform(std::uint64_t seed, std::uint64_t index, double lo, double hi) {
     return lo + (hi - lo) * unit_double(hash64(seed, index));
 }
 
-constexpr EnumName<ParticleScene> kSceneNames[] = {{ParticleScene::Gravity, "gravity"},
-                                                   {ParticleScene::Rotation, "rotation"},
-                                                   {ParticleScene::Saddle, "saddle"},
-                                                   {ParticleScene::Abc, "abc"}};
-constexpr EnumName<Integrator> kIntegratorNames[] = {{Integrator::Euler, "euler"},
-                                                     {Integrator::Midpoint, "midpoint"},
-                                                     {Integrator::Rk4, "rk4"}};
-
 }  // namespace
 
-ParticleScene particle_scene_from_name(const std::string& name) { return parse_enum(kSceneNames, "particle scene", name); }
-const char* particle_scene_name(ParticleScene scene) { return name_of(kSceneNames, scene); }
+ParticleScene particle_scene_from_name(const std::string& name) { return parse_enum(kParticleSceneNames, "particle scene", name); }
+const char* particle_scene_name(ParticleScene scene) { return name_of(kParticleSceneNames, scene); }
 Integrator integrator_from_name(const std::string& name) { return parse_enum(kIntegratorNames, "integrator", name); }
 const char* integrator_name(Integrator integrator) { return name_of(kIntegratorNames, integrator); }
 

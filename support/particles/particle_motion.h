@@ -5,6 +5,8 @@
 //
 // The domain is D = [-1,1]^3. A particle that leaves it starts over at its origin, so a finite buffer shows a
 // steady stream instead of emptying.
+#include "common/core/enum_names.h"
+
 #include <glm/glm.hpp>
 
 #include <cstddef>
@@ -38,9 +40,14 @@ enum class Integrator { Euler, Midpoint, Rk4 };
 inline constexpr ParticleScene kParticleScenes[] = {ParticleScene::Gravity, ParticleScene::Rotation,
                                                     ParticleScene::Saddle, ParticleScene::Abc};
 inline constexpr Integrator kIntegrators[] = {Integrator::Euler, Integrator::Midpoint, Integrator::Rk4};
+inline constexpr EnumName<ParticleScene> kParticleSceneNames[] = {{ParticleScene::Gravity, "gravity"},
+                                                                  {ParticleScene::Rotation, "rotation"},
+                                                                  {ParticleScene::Saddle, "saddle"},
+                                                                  {ParticleScene::Abc, "abc"}};
+inline constexpr EnumName<Integrator> kIntegratorNames[] = {
+    {Integrator::Euler, "euler"}, {Integrator::Midpoint, "midpoint"}, {Integrator::Rk4, "rk4"}};
 
-// "gravity", "rotation", "saddle", "abc" and "euler", "midpoint", "rk4"; any other name throws gsv::Error
-// naming it and listing these.
+// Names of those tables; any other name throws gsv::Error naming it and listing them.
 ParticleScene particle_scene_from_name(const std::string& name);
 const char* particle_scene_name(ParticleScene scene);
 Integrator integrator_from_name(const std::string& name);

@@ -43,10 +43,6 @@ std::vector<double> gll_nodes(int p) {
 
 }  // namespace
 
-namespace {
-constexpr EnumName<NodeSet> kNodeSetNames[] = {{NodeSet::GaussLobattoLegendre, "gll"}, {NodeSet::Equispaced, "equispaced"}};
-}  // namespace
-
 const char* name_of(NodeSet set) { return name_of(kNodeSetNames, set); }
 NodeSet parse_node_set(const std::string& name) { return parse_enum(kNodeSetNames, "node set", name); }
 

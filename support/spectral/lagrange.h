@@ -6,6 +6,8 @@
 // Convention: "degree p" means a polynomial of degree p per axis, through p + 1 nodes per axis, (p + 1)^2
 // values per 2D element. (The seed, Peng and Forsberg 2002, counts n + 2 points per axis for "order n":
 // its order n is degree n + 1 here.)
+#include "common/core/enum_names.h"
+
 #include <string>
 #include <vector>
 
@@ -15,6 +17,7 @@ enum class NodeSet {
     GaussLobattoLegendre,  // the endpoints and the roots of P'_p: the spectral element method's nodes
     Equispaced,            // -1 + 2 j / p: Runge's phenomenon at high degree
 };
+inline constexpr EnumName<NodeSet> kNodeSetNames[] = {{NodeSet::GaussLobattoLegendre, "gll"}, {NodeSet::Equispaced, "equispaced"}};
 
 const char* name_of(NodeSet set);              // "gll", "equispaced"
 NodeSet parse_node_set(const std::string& name);  // throws gsv::Error naming the known ones

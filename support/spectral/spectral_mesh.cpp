@@ -37,13 +37,8 @@ void validate(const ElementMesh& mesh) {
                     " need 0 <= inner < outer");
 }
 
-namespace {
-constexpr EnumName<SpectralField> kFieldNames[] = {
-    {SpectralField::Waves, "waves"}, {SpectralField::Runge, "runge"}, {SpectralField::Polynomial, "polynomial"}};
-}  // namespace
-
-const char* name_of(SpectralField field) { return name_of(kFieldNames, field); }
-SpectralField parse_spectral_field(const std::string& name) { return parse_enum(kFieldNames, "field", name); }
+const char* name_of(SpectralField field) { return name_of(kSpectralFieldNames, field); }
+SpectralField parse_spectral_field(const std::string& name) { return parse_enum(kSpectralFieldNames, "field", name); }
 
 double spectral_field(SpectralField field, glm::dvec2 p, double time) {
     switch (field) {

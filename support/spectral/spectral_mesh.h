@@ -19,6 +19,7 @@ struct ElementMesh {
         Annulus,  // columns around x rows across the ring inner <= r <= outer: curved elements
     };
     Shape shape = Shape::Annulus;
+    static constexpr EnumName<Shape> kShapeNames[] = {{Shape::Annulus, "annulus"}, {Shape::Grid, "grid"}};
     int columns = 32, rows = 4;
     double inner = 0.35, outer = 1.0;
 
@@ -36,6 +37,8 @@ enum class SpectralField {
     Runge,       // 1 / ((1 + 25 x^2)(1 + 25 y^2)): Runge's function; equispaced nodes diverge on it
     Polynomial,  // x^3 y^2 - 2 x y^3 + x - 0.5: degree 3 in each variable, reproduced exactly from degree 3 up
 };
+inline constexpr EnumName<SpectralField> kSpectralFieldNames[] = {
+    {SpectralField::Waves, "waves"}, {SpectralField::Runge, "runge"}, {SpectralField::Polynomial, "polynomial"}};
 const char* name_of(SpectralField field);
 SpectralField parse_spectral_field(const std::string& name);  // throws naming the known ones
 double spectral_field(SpectralField field, glm::dvec2 p, double time);

@@ -84,13 +84,8 @@ glm::dvec2 sin_cos_gradient(double u, double v) {
     return {w * std::cos(w * u) * std::cos(w * v), -w * std::sin(w * u) * std::sin(w * v)};
 }
 
-namespace {
-constexpr EnumName<TerrainKind> kTerrainNames[] = {
-    {TerrainKind::Flat, "flat"}, {TerrainKind::Franke, "franke"}, {TerrainKind::SinCos, "sin_cos"}};
-}  // namespace
-
-TerrainKind terrain_kind_from_name(const std::string& name) { return parse_enum(kTerrainNames, "terrain", name); }
-const char* terrain_kind_name(TerrainKind kind) { return name_of(kTerrainNames, kind); }
+TerrainKind terrain_kind_from_name(const std::string& name) { return parse_enum(kTerrainKindNames, "terrain", name); }
+const char* terrain_kind_name(TerrainKind kind) { return name_of(kTerrainKindNames, kind); }
 
 double terrain_height(const ProceduralTerrain& terrain, glm::dvec2 ground_m) {
     check_terrain(terrain, ground_m);

@@ -8,6 +8,7 @@
 // stretches it over a ground square of extent_m metres and scales it by amplitude_m:
 //   h(x, z) = amplitude_m * f(x / extent_m, z / extent_m),   (dh/dx, dh/dz) = amplitude_m / extent_m * grad f,
 // with x along the field's columns and z along its rows (x east, z north).
+#include "common/core/enum_names.h"
 #include "support/terrain/height_field.h"
 
 #include <glm/glm.hpp>
@@ -30,8 +31,10 @@ glm::dvec2 sin_cos_gradient(double u, double v);
 
 // Flat is height 0 everywhere: its normal is exactly up, the case where any error is a bug.
 enum class TerrainKind { Flat, Franke, SinCos };
+inline constexpr EnumName<TerrainKind> kTerrainKindNames[] = {
+    {TerrainKind::Franke, "franke"}, {TerrainKind::SinCos, "sin_cos"}, {TerrainKind::Flat, "flat"}};
 
-// "flat", "franke", "sin_cos"; any other name throws gsv::Error listing these.
+// A name of kTerrainKindNames; any other throws gsv::Error listing them.
 TerrainKind terrain_kind_from_name(const std::string& name);
 const char* terrain_kind_name(TerrainKind kind);
 
