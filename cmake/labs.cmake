@@ -1,8 +1,20 @@
 # Every lab is built twice from the same framework: the student's work in labs/<dir> (as shipped: the
 # starter generated from the solution) as <id>, and the reference in solutions/<dir> as <id>_solution.
 # grader/submission reuses this with GSV_LABS_ROOT at a submission and only the starter variant.
-set(GSV_LAB_LIST lab01:lab01_gooch lab02:lab02_lic lab03:lab03_texture_arrays lab04:lab04_terrain
-    lab05:lab05_particles lab06:lab06_raycasting lab07:lab07_spectral)
+# The labs are the kit's folders (cmake/lab_list.cmake), each with its description (lab.json), read here for the tests
+# and the web edition. The grader's build of a submission, whose walls hide the kit's lab folders, takes the list the
+# kit's build wrote (GSV_KIT_LAB_LIST, gsv-build-settings.cmake): the kit's labs, never a folder a submission adds.
+include(${CMAKE_CURRENT_LIST_DIR}/lab_list.cmake)
+get_filename_component(GSV_KIT_ROOT ${CMAKE_CURRENT_LIST_DIR}/.. ABSOLUTE)
+if(DEFINED GSV_KIT_LAB_LIST)
+  set(GSV_LAB_LIST ${GSV_KIT_LAB_LIST})
+else()
+  gsv_lab_list(${GSV_KIT_ROOT} GSV_LAB_LIST)
+  foreach(lab IN LISTS GSV_LAB_LIST)
+    string(REPLACE ":" ";" lab_pair ${lab})
+    gsv_lab_description(${GSV_KIT_ROOT} ${lab_pair})
+  endforeach()
+endif()
 
 set(GSV_LABS "" CACHE INTERNAL "")
 if(NOT DEFINED GSV_LABS_ROOT)
@@ -69,6 +81,11 @@ function(gsv_add_lab id dir)
       file(GLOB lab_sources CONFIGURE_DEPENDS ${GSV_LABS_ROOT}/${src}/*.cpp)
     endif()
     if(NOT lab_sources)
+      # A lab whose starter has not been generated yet: the rest of the kit configures and builds without it.
+      if(variant STREQUAL "starter" AND EXISTS ${GSV_LABS_ROOT}/solutions/${dir} AND NOT GSV_GLOB_ONCE)
+        message(WARNING "${id}: no starter yet in labs/${dir}/, so no ${id} target: generate it from solutions/${dir}/ "
+                        "with `scripts/kit starters` (build/bin/gsv-make-starters --write), which configures again")
+      endif()
       continue()
     endif()
     add_executable(${target} ${lab_sources})
@@ -94,4 +111,17 @@ function(gsv_add_lab id dir)
   gsv_add_lab_mistakes(${id} ${dir})
   set(GSV_LABS ${GSV_LABS} ${id} CACHE INTERNAL "")
   set(GSV_LAB_DIR_${id} ${dir} CACHE INTERNAL "")
+endfunction()
+
+# The list as the build has it, for the tests to read when they run (tests/lab_runner.h): written only when it
+# changes, so a lab added relinks the tests (their list of tests is made from it) and recompiles none.
+function(gsv_write_lab_list file)
+  gsv_lab_list_json(${GSV_KIT_ROOT} json)
+  set(old "")
+  if(EXISTS ${file})
+    file(READ ${file} old)
+  endif()
+  if(NOT old STREQUAL json)
+    file(WRITE ${file} "${json}")
+  endif()
 endfunction()

@@ -9,16 +9,10 @@ include(${CMAKE_CURRENT_LIST_DIR}/labs.cmake)
 # What each lab's page reads beyond its own package (its folder, the shaders, its case file and golden images): the
 # folders of data/ that its code or its cases open (a fixed data_file, a file parameter's default, the public and
 # hidden cases' settings), each a package of its own in shared/ (below) that the browser fetches once and keeps for
-# every page that reads it. The page is told its list (data-packages in its HTML) and fetches only those
-# (web/page/lab.js). A folder read but not declared stops the page's lab at "cannot find data file"; the web test's
-# self-check draws every public case, so it would show.
-set(GSV_LAB_DATA_lab01 meshes)        # the teapot (model=teapot), read when the lab starts
-set(GSV_LAB_DATA_lab02 flows images)  # the photo (input=photo), read when the lab starts; field=file's .flow
-set(GSV_LAB_DATA_lab03 flows)         # field=file's vortex_street.flow
-set(GSV_LAB_DATA_lab04 terrain)       # terrain=jacksboro (the default) and topobathy
-set(GSV_LAB_DATA_lab05 "")            # its fields are formulas, or sampled into a texture by the lab
-set(GSV_LAB_DATA_lab06 volumes)       # volume=anatomical, and volume_file=volumes/marschner_lobb_thick_slices.nii
-set(GSV_LAB_DATA_lab07 "")            # its fields are polynomials made by the lab
+# every page that reads it. Each lab says which in its lab.json ("data", GSV_LAB_DATA_<id>: cmake/lab_list.cmake). The
+# page is told its list (data-packages in its HTML) and fetches only those (web/page/lab.js). A folder read but not
+# declared stops the page's lab at "cannot find data file"; the web test's self-check draws every public case, so it
+# would show.
 # What every page reads whatever its lab: the font of the self-check's comparison labels (compose_comparison).
 set(GSV_WEB_PAGE_PACKAGES font)
 
@@ -199,12 +193,9 @@ gsv_add_web_package(font ${GSV_WEB_FONT}@${GSV_WEB_FONT} ${GSV_WEB_FONT})
 foreach(lab IN LISTS GSV_LAB_LIST)
   string(REPLACE ":" ";" lab_pair ${lab})
   list(GET lab_pair 0 id)
-  if(NOT DEFINED GSV_LAB_DATA_${id})
-    message(FATAL_ERROR "${id} does not say which folders of data/ it reads: set GSV_LAB_DATA_${id} in cmake/web.cmake")
-  endif()
   foreach(package ${GSV_LAB_DATA_${id}} ${GSV_WEB_PAGE_PACKAGES})
     if(NOT package IN_LIST GSV_WEB_PACKAGES)
-      message(FATAL_ERROR "${id} reads the package '${package}', which is none of data/'s folders nor the font: "
+      message(FATAL_ERROR "${id} reads the package '${package}' (its lab.json's data), which is none of data/'s folders nor the font: "
                           "${GSV_WEB_PACKAGES}")
     endif()
   endforeach()

@@ -26,10 +26,10 @@ import sys
 import tempfile
 import time
 
-LABS = {
-    "lab01": "lab01_gooch", "lab02": "lab02_lic", "lab03": "lab03_texture_arrays", "lab04": "lab04_terrain",
-    "lab05": "lab05_particles", "lab06": "lab06_raycasting", "lab07": "lab07_spectral",
-}
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import kit_labs  # noqa: E402  (the kit's list of labs)
+
+LABS = {lab["id"]: lab["dir"] for lab in kit_labs.labs()}
 DONE = {"starter": [], "solutions": list(LABS), "done-lab02": ["lab02"], "done-lab04": ["lab04"],
         "done-lab06": ["lab06"], "done-lab05-cpp": ["lab05"]}
 

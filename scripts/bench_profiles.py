@@ -42,7 +42,7 @@ def main():
         if unknown:
             sys.exit(f"bench_profiles: no {', '.join(unknown)}_solution in {args.bin_dir}")
         labs = wanted
-    print(f"frame time, OpenGL ES (the lab's lowest version) against the core profile (4.1; lab05 4.3): "
+    print(f"frame time, OpenGL ES (the lab's lowest version) against the core profile (4.1, or 4.3 where a lab's lab.json says so): "
           f"{args.rounds} interleaved rounds of {args.frames} frames at {args.size}")
     print(f"{'lab':6} {'ES':4} {'core ms':>8} {'es ms':>8} {'es/core':>8}  spread (rounds)")
     with tempfile.TemporaryDirectory(prefix="gsv-bench-profiles-") as folder:

@@ -15,9 +15,9 @@ const { execFileSync } = require('child_process');
 const { chromium } = require(path.join(__dirname, '../web/node_modules/playwright-core'));
 
 const [base, buildWeb, bin, kit] = process.argv.slice(2);
-// GSV_BENCH_LABS=lab05,lab07 times only those.
+// Every lab of the kit's list (scripts/kit_labs.py); GSV_BENCH_LABS=lab05,lab07 times only those.
 const labs = process.env.GSV_BENCH_LABS ? process.env.GSV_BENCH_LABS.split(',')
-                                        : ['lab01', 'lab02', 'lab03', 'lab04', 'lab05', 'lab06', 'lab07'];
+  : execFileSync('python3', [path.join(kit, 'scripts', 'kit_labs.py'), '--kit', kit, '--ids'], { encoding: 'utf8' }).trim().split(',');
 const rounds = 3, frames = 10;
 const median = (v) => { const s = [...v].sort((a, b) => a - b); return s.length % 2 ? s[(s.length - 1) / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2; };
 const kib = (bytes) => (bytes / 1024).toFixed(0);

@@ -25,7 +25,11 @@ figures="$out/figures"
 for tool in pandoc gnuplot; do
   command -v "$tool" >/dev/null || { echo "build-slides: $tool is missing (scripts/setup.sh installs it)" >&2; exit 1; }
 done
-[ -x "$bin/lab07_solution" ] || { echo "build-slides: no lab binaries in $bin; build first (scripts/kit build)" >&2; exit 1; }
+# Every lab of the kit's list (scripts/kit_labs.py): its sweeps and figures are rendered by its reference.
+labs=$(python3 "$root/scripts/kit_labs.py" --kit "$root" --ids) || exit 1
+for lab in ${labs//,/ }; do
+  [ -x "$bin/${lab}_solution" ] || { echo "build-slides: no ${lab}_solution in $bin; build first (scripts/kit build)" >&2; exit 1; }
+done
 rm -rf "$figures"
 mkdir -p "$figures"
 

@@ -67,10 +67,15 @@ esac
 # The labs not released (--labs): their folders, case files and golden images stay behind.
 withheld=()
 if [ -n "$release_labs" ]; then
-  # The list may run over several lines: from "set(GSV_LAB_LIST" to the first ")".
-  known=$(sed -n '/^set(GSV_LAB_LIST/,/)/p' "$root/cmake/labs.cmake" | tr '\n' ' ' |
-          sed -n 's/^set(GSV_LAB_LIST \([^)]*\)).*/\1/p' | tr -s ' ')
-  [ -n "$known" ] || die "cannot read the lab list from cmake/labs.cmake"
+  # The kit's labs are its folders solutions/labNN_name/ (cmake/lab_list.cmake), read here without CMake: the export
+  # needs no set-up.
+  known=""
+  for folder in "$root"/solutions/lab[0-9][0-9]_*/; do
+    [ -d "$folder" ] || continue
+    dir=$(basename "$folder")
+    known+=" ${dir:0:5}:$dir"
+  done
+  [ -n "$known" ] || die "no lab folders (solutions/labNN_name/) in $root"
   IFS=, read -r -a wanted <<<"$release_labs"
   for lab in "${wanted[@]}"; do
     case " $known " in *" $lab:"*) ;; *) die "--labs: unknown lab '$lab' (the kit has: $(echo "$known" | sed 's/:[^ ]*//g'))" ;; esac

@@ -1,19 +1,28 @@
 #!/usr/bin/env python3
 """What accuracy costs, across the kit: one line per lab from the <lab>-summary.csv each sweep writes (the
 cheapest and the most accurate setting, each one's error and time, and the ratios between them).
-Usage: tradeoffs.py [--markdown] DIR   (DIR holds lab01/ ... lab07/, as scripts/sweeps.sh leaves them)"""
+Every lab of the kit's list (scripts/kit_labs.py) has its line: a lab whose summary is missing is an error naming it,
+never a table without it.
+Usage: tradeoffs.py [--markdown] DIR   (DIR holds a folder per lab, lab01/ ..., as scripts/sweeps.sh leaves them)"""
 import csv
-import glob
 import os
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import kit_labs  # noqa: E402  (the kit's list of labs)
+
 
 def rows(folder):
-    found = []
-    for path in sorted(glob.glob(os.path.join(folder, "lab0[1-7]", "lab0[1-7]-summary.csv"))):
+    """The summaries' rows, lab by lab, and the labs whose summary is missing."""
+    found, missing = [], []
+    for lab in kit_labs.ids():
+        path = os.path.join(folder, lab, lab + "-summary.csv")
+        if not os.path.isfile(path):
+            missing.append(lab)
+            continue
         with open(path, newline="") as f:
             found.extend(csv.DictReader(f))
-    return found
+    return found, missing
 
 
 COLUMNS = [("lab", "lab"), ("knob", "knob"), ("error", "error measure"),
@@ -28,9 +37,10 @@ def main(argv):
     if len(args) != 1:
         print(__doc__.strip().splitlines()[-1], file=sys.stderr)
         return 2
-    table = rows(args[0])
-    if not table:
-        print("tradeoffs: no lab0?/lab0?-summary.csv under " + args[0] + " (run the sweeps first)", file=sys.stderr)
+    table, missing = rows(args[0])
+    if missing:
+        print("tradeoffs: no " + ", ".join(f"{lab}/{lab}-summary.csv" for lab in missing) + " under " + args[0] +
+              " (run the sweeps first: scripts/sweeps.sh, run_sweeps; a lab's sweep is in its lab.json)", file=sys.stderr)
         return 1
     heads = [title for _, title in COLUMNS]
     cells = [[r.get(key, "-") for key, _ in COLUMNS] for r in table]

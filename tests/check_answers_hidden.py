@@ -72,9 +72,9 @@ def solution_lines(path):
 
 
 def lab_dirs(root):
-    text = open(os.path.join(root, "cmake", "labs.cmake"), encoding="utf-8").read()
-    entries = re.search(r"set\(GSV_LAB_LIST ([^)]*)\)", text).group(1).split()
-    return dict(entry.split(":") for entry in entries)
+    sys.path.insert(0, os.path.join(root, "scripts"))
+    import kit_labs  # the kit's list of labs (cmake/lab_list.cmake)
+    return {lab["id"]: lab["dir"] for lab in kit_labs.labs(root)}
 
 
 def held_table(root):

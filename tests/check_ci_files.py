@@ -103,28 +103,38 @@ for path in sorted(ci.glob("*.yml")):
 slurm = ci / "slurm-grade.sh"
 check_commands(slurm.name, slurm.read_text())
 
-# Classroom: one reporter runner per lab with a case file, each fed by the points step's output of that lab.
+# Classroom: the reporter's runners and each runner's results come from the points step, which names every lab with a
+# case file; the workflow names none (a lab added gives its points unedited).
 classroom = yaml.safe_load((ci / "github-classroom.yml").read_text())
 steps = classroom["jobs"]["self-check"]["steps"]
 reporter = [s for s in steps if "autograding-grading-reporter" in s.get("uses", "")]
 labs = sorted(p.stem for p in (kit / "grader" / "cases").glob("lab*.json"))
 if len(reporter) != 1:
     problems.append("github-classroom.yml: no autograding-grading-reporter step")
-else:
-    runners = reporter[0]["with"]["runners"].split(",")
-    if runners != labs:
-        problems.append(f"github-classroom.yml: the reporter's runners {runners} are not the labs {labs}")
+elif reporter[0]["with"]["runners"] != "${{ steps.points.outputs.runners }}":
+    problems.append(f"github-classroom.yml: the reporter's runners are {reporter[0]['with']['runners']}, not the points step's")
+if re.search(r"\blab[0-9][0-9]\b", (ci / "github-classroom.yml").read_text()):
+    problems.append("github-classroom.yml names a lab: the points step gives the labs (every lab with a case file)")
+# The points step, run as GitHub runs it on a results.json with no checks: every lab a runner, each with its results
+# in the reporter's environment, worth 0 of its public points.
+with tempfile.TemporaryDirectory() as tmp:
+    tmp = pathlib.Path(tmp)
+    (tmp / "output").write_text("")
+    (tmp / "env").write_text("")
+    run = subprocess.run([sys.executable, ci / "classroom_points.py", tmp / "none.json", "--cases-dir", kit / "grader" / "cases"],
+                         capture_output=True, text=True,
+                         env=dict(os.environ, GITHUB_OUTPUT=str(tmp / "output"), GITHUB_ENV=str(tmp / "env")))
+    outputs = dict(line.split("=", 1) for line in (tmp / "output").read_text().splitlines())
+    envs = dict(line.split("=", 1) for line in (tmp / "env").read_text().splitlines())
+    if run.returncode != 0 or outputs.get("runners", "").split(",") != labs:
+        problems.append(f"classroom_points.py: runners {outputs.get('runners')} are not the labs with a case file {labs} ({run.stderr.strip()})")
     for lab in labs:
-        wired = reporter[0].get("env", {}).get(f"{lab.upper()}_RESULTS", "")
-        if f"steps.points.outputs.{lab}" not in wired:
-            problems.append(f"github-classroom.yml: {lab.upper()}_RESULTS is not the points step's {lab}")
+        if f"{lab.upper()}_RESULTS" not in envs:
+            problems.append(f"classroom_points.py: no {lab.upper()}_RESULTS for the reporter's environment")
 if classroom["jobs"]["self-check"].get("name") != "Autograding Tests":
     problems.append("github-classroom.yml: the job is not named 'Autograding Tests' (the reporter looks it up by name)")
 if not any("actions/cache" in s.get("uses", "") for s in steps):
     problems.append("github-classroom.yml: no build cache")
-env = classroom["jobs"]["self-check"]["env"]
-if env["LABS"].split(",") != labs:
-    problems.append(f"github-classroom.yml: LABS {env['LABS']} are not the labs {labs}")
 if not any("grader/ci/classroom_points.py" in s.get("run", "") for s in steps) or not (ci / "classroom_points.py").is_file():
     problems.append("github-classroom.yml: no step runs grader/ci/classroom_points.py")
 

@@ -85,7 +85,8 @@ check_floors grader/src
 
 # A lab's own file names (its shaders, its C++) have no business in the framework or the shared domain code, not even
 # in a comment: a lab's module table (lab 06's raycast_modules.cpp) names its files, and support/ generates from it.
-names=$(find solutions -mindepth 2 -maxdepth 2 -type f ! -name lab.cpp ! -name README.md -printf '%f\n' | sort -u)
+# Every lab's lab.cpp, README.md and lab.json (its description: cmake/lab_list.cmake) are the kit's names, not a lab's.
+names=$(find solutions -mindepth 2 -maxdepth 2 -type f ! -name lab.cpp ! -name README.md ! -name lab.json -printf '%f\n' | sort -u)
 for name in $names; do
   hits=$(grep -rnwF "$name" common support || true)
   [ -z "$hits" ] || breach "the framework or support/ names lab file '$name':"$'\n'"$hits"

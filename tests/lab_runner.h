@@ -1,11 +1,13 @@
 #pragma once
 // Runs the built lab binaries the way a student, the grader or CI would.
+#include "common/core/error.h"
 #include "common/image/image.h"
 #include "common/image/image_compare.h"
 #include "common/io/json.h"
 #include "grader/src/run/process.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -14,16 +16,55 @@ namespace gsv::test {
 
 inline std::filesystem::path bin_dir() { return std::filesystem::path(GSV_BINARY_DIR) / "bin"; }
 
-// Every lab the build has ("lab01", ...), from CMake's list.
+// A lab of the build's list (cmake/lab_list.cmake: the kit's folders solutions/labNN_name/, and each one's lab.json).
+struct LabEntry {
+    std::string id, dir;      // "lab05", "lab05_particles"
+    std::string needs_gl;     // "4.1", or "4.3" for a lab that macOS's OpenGL cannot run
+    bool needs_gl43() const { return needs_gl != "4.1"; }
+};
+
+// Where the list is: build/labs.json, written at configure time and read when the tests run, so a lab added recompiles
+// no test. GSV_LAB_LIST names another (a scratch kit's list: what its tests would be).
+inline std::filesystem::path lab_list_file() {
+    const char* other = std::getenv("GSV_LAB_LIST");
+    return other && *other ? std::filesystem::path(other) : std::filesystem::path(GSV_BINARY_DIR) / "labs.json";
+}
+
+// The build's labs, in order; throws gsv::Error naming the file when it cannot be read.
+inline const std::vector<LabEntry>& lab_list() {
+    static const std::vector<LabEntry> labs = [] {
+        std::vector<LabEntry> list;
+        const Json file = read_json_file(lab_list_file());  // kept: a range-for would not keep a temporary's member
+        for (const Json& lab : file.array_at("labs").as_array())
+            list.push_back({lab.string_at("id"), lab.string_at("dir"), lab.string_at("needs_gl")});
+        return list;
+    }();
+    return labs;
+}
+
+// Every lab the build has ("lab01", ...).
 inline std::vector<std::string> all_labs() {
     std::vector<std::string> labs;
-    std::string list = GSV_LABS;
-    for (std::size_t start = 0; start < list.size();) {
-        const std::size_t comma = std::min(list.find(',', start), list.size());
-        if (comma > start) labs.push_back(list.substr(start, comma - start));
-        start = comma + 1;
-    }
+    for (const LabEntry& lab : lab_list()) labs.push_back(lab.id);
     return labs;
+}
+
+// The labs macOS's OpenGL 4.1 core profile runs: every lab whose lab.json asks for no more.
+inline std::vector<std::string> labs_on_gl41() {
+    std::vector<std::string> labs;
+    for (const LabEntry& lab : lab_list())
+        if (!lab.needs_gl43()) labs.push_back(lab.id);
+    return labs;
+}
+
+// A rule every lab is held to, its number as tests/lab_rules.json states it (the one place it is stated): "public_cases"
+// is at least 8 public cases a lab, say. Throws gsv::Error for a rule the file does not state with a number.
+inline int lab_rule(const std::string& name) {
+    const std::filesystem::path file = std::filesystem::path(GSV_SOURCE_ROOT) / "tests" / "lab_rules.json";
+    const Json rules = read_json_file(file);
+    for (const Json& rule : rules.array_at("rules").as_array())
+        if (rule.string_at("name") == name && rule.contains("least")) return static_cast<int>(rule.number_at("least"));
+    throw Error(file.string() + ": no rule '" + name + "' with a number (\"least\")");
 }
 
 struct LabRun {

@@ -342,8 +342,10 @@ TEST_CASE("cases: a tolerance's neighbourhood is read per lab and per case, a ba
     const LabCases plain = load_lab_cases(file("", ""));
     CHECK(plain.golden_tolerance.neighbourhood == 0);
     CHECK(plain.live_tolerance.neighbourhood == 0);
-    for (const char* lab : {"lab01", "lab02", "lab03", "lab04", "lab06", "lab07"}) {
-        const LabCases shipped = load_lab_cases(test::source_root() / "grader" / "cases" / (std::string(lab) + ".json"));
+    for (const std::string& lab : test::all_labs()) {
+        const LabCases shipped = load_lab_cases(test::source_root() / "grader" / "cases" / (lab + ".json"));
+        if (shipped.arrays_are == "particles") continue;  // lab 05's, below
+        INFO(lab);
         CHECK(shipped.golden_tolerance.neighbourhood == 0);
         for (const auto& c : shipped.cases) CHECK(shipped.tolerance(c, false).neighbourhood == 0);
     }

@@ -2,6 +2,7 @@
 // told of it; and where a failure it explains is put (grader/src/judge/needs.h). Without GL: the ranking works on which
 // cases each mistake's pictures explain; test_grader_diagnosis_gl.cpp grades real mistakes.
 #include "catch.hpp"
+#include "lab_runner.h"
 #include "grader/src/diagnose/diagnosis.h"
 #include "grader/src/judge/needs.h"
 #include "grader/src/report/report_format.h"
@@ -143,7 +144,7 @@ TEST_CASE("diagnosis: a failure a known mistake explains is put on the mistake's
 TEST_CASE("diagnosis: a TODO's starter code is found in the starter and not in the solution, in every lab", "[unit]") {
     const std::filesystem::path kit = GSV_SOURCE_ROOT;
     int todos = 0;
-    for (const char* lab : {"lab01", "lab02", "lab03", "lab04", "lab05", "lab06", "lab07"}) {
+    for (const std::string& lab : test::all_labs()) {
         const KnownMistakes known = known_mistakes(kit, lab);
         for (const KnownMistake& m : known.mistakes) {
             if (!m.not_started) continue;

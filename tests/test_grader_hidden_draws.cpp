@@ -4,6 +4,7 @@
 // it, each by one process that serves all the seeds' cases; each mistake must fail under the case's live tolerance
 // (its image, its arrays, the whole picture's place), as instructor grading judges a hidden case.
 #include "grader_fixture.h"
+#include "per_lab.h"
 
 #include "common/app/kit_layout.h"
 #include "grader/src/cases/case_row.h"
@@ -143,10 +144,4 @@ void every_draw_tests_its_todo(const std::string& lab_id) {
 
 }  // namespace
 
-TEST_CASE("lab01: every seed's hidden cases fail each mistake they must fail", "[grader][mutants]") { every_draw_tests_its_todo("lab01"); }
-TEST_CASE("lab02: every seed's hidden cases fail each mistake they must fail", "[grader][mutants]") { every_draw_tests_its_todo("lab02"); }
-TEST_CASE("lab03: every seed's hidden cases fail each mistake they must fail", "[grader][mutants]") { every_draw_tests_its_todo("lab03"); }
-TEST_CASE("lab04: every seed's hidden cases fail each mistake they must fail", "[grader][mutants]") { every_draw_tests_its_todo("lab04"); }
-TEST_CASE("lab05: every seed's hidden cases fail each mistake they must fail", "[grader][mutants][gl43]") { every_draw_tests_its_todo("lab05"); }
-TEST_CASE("lab06: every seed's hidden cases fail each mistake they must fail", "[grader][mutants]") { every_draw_tests_its_todo("lab06"); }
-TEST_CASE("lab07: every seed's hidden cases fail each mistake they must fail", "[grader][mutants]") { every_draw_tests_its_todo("lab07"); }
+GSV_PER_LAB_TEST("every seed's hidden cases fail each mistake they must fail", "[grader][mutants]", every_draw_tests_its_todo)

@@ -1,6 +1,7 @@
 // Proof that the grader works on shader edits: known-wrong variants of the reference (mutants) each fail
 // the case that names their bug, and planted faults each get their own status while the rest is graded.
 #include "grader_fixture.h"
+#include "per_lab.h"
 #include "serve_compare.h"
 
 #include "grader/src/diagnose/known_mistakes.h"
@@ -97,7 +98,7 @@ void mutation_test(const std::string& lab) {
         }
         for (const auto& [todo, files] : todos) {
             INFO(lab << ": classic bugs of " << todo << " in tests/mutants/" << lab << ".json");
-            if (!std::any_of(files.begin(), files.end(), is_cpp_file)) CHECK(classic[todo] >= 3);
+            if (!std::any_of(files.begin(), files.end(), is_cpp_file)) CHECK(classic[todo] >= test::lab_rule("mistakes_per_todo"));
         }
         for (const bool self_check : {true, false}) {
             int killed = 0, classic_diagnosed = 0, classic_named = 0;
@@ -156,16 +157,14 @@ void mutation_test(const std::string& lab) {
 
 }  // namespace
 
-TEST_CASE("lab01: every TODO left undone or with a classic bug loses points, live and in the self-check, variants do not", "[grader][mutants]") { mutation_test("lab01"); }
-TEST_CASE("lab02: every TODO left undone or with a classic bug loses points, live and in the self-check, variants do not", "[grader][mutants]") { mutation_test("lab02"); }
-TEST_CASE("lab03: every TODO left undone or with a classic bug loses points, live and in the self-check, variants do not", "[grader][mutants]") { mutation_test("lab03"); }
-TEST_CASE("lab04: every TODO left undone or with a classic bug loses points, live and in the self-check, variants do not", "[grader][mutants]") { mutation_test("lab04"); }
-TEST_CASE("lab05: every TODO left undone or with a classic bug loses points, live and in the self-check, variants do not", "[grader][mutants][gl43]") { mutation_test("lab05"); }
-TEST_CASE("lab06: every TODO left undone or with a classic bug loses points, live and in the self-check, variants do not", "[grader][mutants]") { mutation_test("lab06"); }
-TEST_CASE("lab07: every TODO left undone or with a classic bug loses points, live and in the self-check, variants do not", "[grader][mutants]") { mutation_test("lab07"); }
+constexpr const char* kMutationTest =
+    "every TODO left undone or with a classic bug loses points, live and in the self-check, variants do not";
+GSV_PER_LAB_TEST(kMutationTest, "[grader][mutants]", mutation_test)
 
 TEST_CASE("every lab has a mutation test above", "[grader][mutants]") {
-    CHECK(test::labs_with_mutants() == std::vector<std::string>{"lab01", "lab02", "lab03", "lab04", "lab05", "lab06", "lab07"});
+    // Every lab of the list has its list of mistakes (tests/lab_rules.json, mistakes_per_todo) and its test.
+    CHECK(test::labs_with_mutants() == test::all_labs());
+    CHECK(test::labs_missing_test(kMutationTest, test::PerLab::Every).empty());
 }
 
 TEST_CASE("grader: planted shader faults each get their own status, and every case is still graded", "[grader]") {
@@ -252,7 +251,7 @@ TEST_CASE("every C++ TODO: left undone or with a classic bug it loses points, li
         for (const auto& todo : cpp_todos) {
             const auto n = std::count_if(mutants.begin(), mutants.end(), [&](const auto& m) { return m.first == todo; });
             INFO(lab << ": classic bugs of " << todo << " in cpp_mutants");
-            CHECK(n - 1 >= 3);
+            CHECK(n - 1 >= test::lab_rule("mistakes_per_todo"));
         }
         for (const bool self_check : {true, false})
             for (const auto& [todo, name] : mutants) {

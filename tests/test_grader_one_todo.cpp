@@ -5,6 +5,7 @@
 // done, one grading per group and kind. A C++ TODO left undone is the starter's binary (each lab has
 // at most one C++ TODO: its build is the kit's own starter build).
 #include "grader_fixture.h"
+#include "per_lab.h"
 
 #include "common/app/kit_layout.h"
 #include "tools/starter.h"
@@ -94,10 +95,5 @@ void one_todo_at_a_time(const std::string& lab) {
 
 }  // namespace
 
-TEST_CASE("lab01: each case passes with its TODO and the TODOs it declares done, the rest the starter's", "[grader][mutants]") { one_todo_at_a_time("lab01"); }
-TEST_CASE("lab02: each case passes with its TODO and the TODOs it declares done, the rest the starter's", "[grader][mutants]") { one_todo_at_a_time("lab02"); }
-TEST_CASE("lab03: each case passes with its TODO and the TODOs it declares done, the rest the starter's", "[grader][mutants]") { one_todo_at_a_time("lab03"); }
-TEST_CASE("lab04: each case passes with its TODO and the TODOs it declares done, the rest the starter's", "[grader][mutants]") { one_todo_at_a_time("lab04"); }
-TEST_CASE("lab05: each case passes with its TODO and the TODOs it declares done, the rest the starter's", "[grader][mutants][gl43]") { one_todo_at_a_time("lab05"); }
-TEST_CASE("lab06: each case passes with its TODO and the TODOs it declares done, the rest the starter's", "[grader][mutants]") { one_todo_at_a_time("lab06"); }
-TEST_CASE("lab07: each case passes with its TODO and the TODOs it declares done, the rest the starter's", "[grader][mutants]") { one_todo_at_a_time("lab07"); }
+GSV_PER_LAB_TEST("each case passes with its TODO and the TODOs it declares done, the rest the starter's", "[grader][mutants]",
+                 one_todo_at_a_time)

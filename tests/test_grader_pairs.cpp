@@ -5,6 +5,7 @@
 // (their pictures are the golden's: lab 05's missing bounds check changes a buffer only), and pairs that fail where no
 // picture explains (NaN, a crash: the mutation tests skip such a mistake alone too).
 #include "grader_fixture.h"
+#include "per_lab.h"
 
 #include "common/app/kit_layout.h"
 #include "common/app/known_mistake_pictures.h"
@@ -128,10 +129,4 @@ void pairs_named(const std::string& lab) {
 
 }  // namespace
 
-TEST_CASE("lab01: two mistakes in two TODOs are both named in 80% of 20 pairs", "[grader][mutants]") { pairs_named("lab01"); }
-TEST_CASE("lab02: two mistakes in two TODOs are both named in 80% of 20 pairs", "[grader][mutants]") { pairs_named("lab02"); }
-TEST_CASE("lab03: two mistakes in two TODOs are both named in 80% of 20 pairs", "[grader][mutants]") { pairs_named("lab03"); }
-TEST_CASE("lab04: two mistakes in two TODOs are both named in 80% of 20 pairs", "[grader][mutants]") { pairs_named("lab04"); }
-TEST_CASE("lab05: two mistakes in two TODOs are both named in 80% of 20 pairs", "[grader][mutants][gl43]") { pairs_named("lab05"); }
-TEST_CASE("lab06: two mistakes in two TODOs are both named in 80% of 20 pairs", "[grader][mutants]") { pairs_named("lab06"); }
-TEST_CASE("lab07: two mistakes in two TODOs are both named in 80% of 20 pairs", "[grader][mutants]") { pairs_named("lab07"); }
+GSV_PER_LAB_TEST("two mistakes in two TODOs are both named in 80% of 20 pairs", "[grader][mutants]", pairs_named)

@@ -2,6 +2,7 @@
 // (common/image/picture_signature.h) that still tell a mistake from the golden and from another, a file that reads
 // back as written and names what is wrong with it, and shipped files made from the kit's lists as they are now.
 #include "catch.hpp"
+#include "lab_runner.h"
 #include "common/app/kit_layout.h"
 #include "common/app/known_mistake_pictures.h"
 #include "common/core/error.h"
@@ -136,7 +137,7 @@ TEST_CASE("known mistake pictures: written and read back the same, one picture k
 }
 
 TEST_CASE("known mistake pictures: each lab ships its mistakes' pictures, made from its lists, cases, goldens and solution as they are", "[unit]") {
-    for (const std::string lab : {"lab01", "lab02", "lab03", "lab04", "lab05", "lab06", "lab07"}) {
+    for (const std::string& lab : test::all_labs()) {
         const KnownMistakes known = known_mistakes(kit_root(), lab);
         const KnownMistakePictures shipped = read_known_mistake_pictures(kit_root(), lab);
         INFO(lab << ": grader/golden/" << lab << "/mistakes.json is stale or missing; after the goldens, run "

@@ -13,6 +13,9 @@ struct KitLayout {
     std::filesystem::path data() const { return root / "data"; }
     std::filesystem::path labs() const { return root / "labs"; }
     std::filesystem::path solutions() const { return root / "solutions"; }
+    // Beside a lab's code, what the kit's lists need to know of it (cmake/lab_list.cmake): read by the build and the
+    // scripts, never by the lab.
+    static constexpr const char* kLabDescription = "lab.json";
     std::filesystem::path tests() const { return root / "tests"; }
     // Public cases (shipped to students): a lab's named cases, graded ones and demos.
     std::filesystem::path case_dir() const { return root / "grader" / "cases"; }

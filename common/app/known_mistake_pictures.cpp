@@ -178,7 +178,7 @@ std::string mistake_pictures_inputs(const fs::path& kit_root, const std::string&
     f.add(file_bytes(kit.tests() / "mutants" / (lab + ".json")));
     f.add(file_bytes(kit.case_file(lab)));
     add_folder(f, kit.golden_dir(lab), {"mistakes.json", kPictureFile});
-    add_folder(f, kit.solutions() / lab_dir);
+    add_folder(f, kit.solutions() / lab_dir, {KitLayout::kLabDescription});  // no picture comes from the description
     return f.hex();
 }
 

@@ -1,11 +1,14 @@
 #!/usr/bin/env python3
 """GitHub Classroom points per lab from the grader's results.json.
 
-    classroom_points.py RESULTS_JSON LAB[,LAB...] [--cases-dir grader/cases]
+    classroom_points.py RESULTS_JSON [LAB[,LAB...]] [--cases-dir grader/cases]
 
-For each lab, one result in the shape classroom-resources/autograding-grading-reporter reads from
-<LAB>_RESULTS (base64 JSON: version, status, max_score, tests with name, status, score, message), written to
-$GITHUB_OUTPUT as `<lab>=<base64>` (or printed as `<lab> <json>` without GITHUB_OUTPUT). Points are the grader's,
+For each lab (default: every lab with a case file in the cases folder, the labs this copy of the kit holds), one
+result in the shape classroom-resources/autograding-grading-reporter reads from <LAB>_RESULTS (base64 JSON: version,
+status, max_score, tests with name, status, score, message), written to $GITHUB_ENV as `<LAB>_RESULTS=<base64>` (the
+reporter's step reads it from its environment) and to $GITHUB_OUTPUT as `<lab>=<base64>`, with `runners=lab01,...`
+(the reporter's runners); printed as `<lab> <json>` without GITHUB_OUTPUT. So the workflow names no lab: a lab added to
+the kit gives its points without an edit. Points are the grader's,
 case by case: partial credit, not all or nothing. A lab with no checks in the results (the build or the grader
 failed before it) is an error worth 0 of its public points in grader/cases/<lab>.json, so the maximum a student
 sees does not shrink; so is every lab when RESULTS_JSON does not exist (the build failed before grading). Exit 2
@@ -49,14 +52,23 @@ def lab_result(results, lab, cases_dir):
 
 
 def main(argv):
-    if len(argv) not in (3, 5) or (len(argv) == 5 and argv[3] != "--cases-dir"):
-        fail("usage: classroom_points.py RESULTS_JSON LAB[,LAB...] [--cases-dir DIR]")
-    cases_dir = pathlib.Path(argv[4] if len(argv) == 5 else "grader/cases")
-    labs = [lab for lab in argv[2].split(",") if lab]
-    bad = [lab for lab in labs if not re.fullmatch(r"lab[0-9]{2}", lab)]
-    if bad or not labs:
-        fail(f"labs must be like lab01, got '{argv[2]}'")
-    path = pathlib.Path(argv[1])
+    args = argv[1:]
+    cases_dir = pathlib.Path("grader/cases")
+    if len(args) >= 2 and args[-2] == "--cases-dir":
+        cases_dir = pathlib.Path(args[-1])
+        args = args[:-2]
+    if len(args) not in (1, 2) or any(a.startswith("--") for a in args):
+        fail("usage: classroom_points.py RESULTS_JSON [LAB[,LAB...]] [--cases-dir DIR]")
+    if len(args) == 2:
+        labs = [lab for lab in args[1].split(",") if lab]
+        bad = [lab for lab in labs if not re.fullmatch(r"lab[0-9]{2}", lab)]
+        if bad or not labs:
+            fail(f"labs must be like lab01, got '{args[1]}'")
+    else:
+        labs = sorted(p.stem for p in cases_dir.glob("lab*.json") if re.fullmatch(r"lab[0-9]{2}", p.stem))
+        if not labs:
+            fail(f"no lab's case file (labNN.json) in {cases_dir}")
+    path = pathlib.Path(args[0])
     if not path.exists():
         print(f"classroom_points: no {path}: the build or the grader failed before grading; 0 points", file=sys.stderr)
         results = {"output": f"no {path}: the build or the grader failed before grading (see the self-check step)"}
@@ -74,6 +86,12 @@ def main(argv):
         with open(out, "a") as f:
             for lab, _, encoded in lines:
                 f.write(f"{lab}={encoded}\n")
+            f.write("runners=" + ",".join(lab for lab, _, _ in lines) + "\n")
+    env = os.environ.get("GITHUB_ENV")
+    if env:
+        with open(env, "a") as f:
+            for lab, _, encoded in lines:
+                f.write(f"{lab.upper()}_RESULTS={encoded}\n")
     for lab, payload, _ in lines:
         r = json.loads(payload)
         print(f"{lab}: {sum(t['score'] for t in r['tests']):g} / {r['max_score']:g} ({r['status']})" if out else f"{lab} {payload}")

@@ -32,7 +32,9 @@ const rasterizers = {
 };
 const out = path.join(args.out, args.rasterizer);
 fs.mkdirSync(out, { recursive: true });
-const labs = args.labs === 'none' ? [] : (args.labs || 'lab01,lab02,lab03,lab04,lab05,lab06,lab07').split(',');
+// Every lab of the kit's list (scripts/kit_labs.py), unless --labs names some (or none).
+const labs = args.labs === 'none' ? [] : (args.labs || execFileSync('python3',
+  [path.join(args.kit, 'scripts', 'kit_labs.py'), '--kit', args.kit, '--ids'], { encoding: 'utf8' }).trim()).split(',');
 let failures = 0, checks = 0;
 function check(ok, line) {
   checks++;
