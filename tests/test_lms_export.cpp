@@ -46,7 +46,7 @@ std::vector<ClassCaseRow> class_cases() {
             {"bo", "lab02", "L02-T1", "gyre", "image", "passed", 10, 10},    {"bo", "lab02", "L02-T1", "gyre", "timing", "passed", 4, 4}};
 }
 
-// A batch's --out as gsv-grade --batch leaves it: class-cases.csv, then batch.json (which keeps its rows).
+// A batch's --out as gsv-grade --batch leaves it: class-cases.csv and batch.json (which keeps its rows).
 BatchRecord write_batch(const fs::path& out, const std::vector<BatchEntry>& entries, const std::vector<ClassCaseRow>& cases) {
     fs::create_directories(out);
     std::ofstream(out / "class-cases.csv") << class_cases_csv(cases);
@@ -57,7 +57,7 @@ BatchRecord write_batch(const fs::path& out, const std::vector<BatchEntry>& entr
         record.roster.push_back(e.name);
         record.entries.push_back(e);
     }
-    write_batch_record(record, out);
+    write_batch_record(record, out, cases);
     return read_batch_record(out);
 }
 

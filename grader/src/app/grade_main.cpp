@@ -138,8 +138,7 @@ int grade_class(const gsv::GradeCommand& command, const char* argv0) {
     batch_start = std::chrono::steady_clock::now();
     record.entries = gsv::grade_batch(b, print_batch_progress, &record.roster);
     std::printf("%s", gsv::class_table(record.entries).c_str());
-    gsv::write_class_tables(record.entries, options.out_dir);
-    gsv::write_batch_record(record, options.out_dir);
+    gsv::write_batch_record(record, options.out_dir, gsv::write_class_tables(record.entries, options.out_dir));
     std::printf("per-submission reports in %s/<name>/, the class in %s/class.csv\n", options.out_dir.c_str(), options.out_dir.c_str());
     // The kit's fault is no student's 0: the run says what is wrong and fails, so the grades are not taken as given.
     const auto kit_faults = std::count_if(record.entries.begin(), record.entries.end(), [](const gsv::BatchEntry& e) { return e.kit_fault; });

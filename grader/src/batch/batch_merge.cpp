@@ -94,8 +94,7 @@ BatchRecord merge_shards(const std::vector<fs::path>& shard_dirs, const fs::path
         throw Error("merge: cannot write into '" + out.string() + "': " + e.code().message() +
                     (e.path1().empty() ? "" : " ('" + e.path1().string() + "')"));
     }
-    write_class_tables(merged.entries, out);
-    write_batch_record(merged, out);
+    write_batch_record(merged, out, write_class_tables(merged.entries, out));
     return merged;
 }
 

@@ -40,7 +40,7 @@ std::vector<std::string> recorded_options(const std::vector<std::string>& pass_t
     return kept;
 }
 
-void write_batch_record(const BatchRecord& record, const fs::path& out_dir) {
+void write_batch_record(const BatchRecord& record, const fs::path& out_dir, const std::vector<ClassCaseRow>& cases) {
     Json root = Json::object();
     root["format"] = kRecordFormat;
     root["seed"] = std::to_string(record.seed);  // a string: a JSON number holds 53 bits, a seed 64
@@ -66,10 +66,9 @@ void write_batch_record(const BatchRecord& record, const fs::path& out_dir) {
         rows.push_back(row);
     }
     root["entries"] = rows;
-    // The class case by case, as class-cases.csv has it (write_class_tables wrote it first): for a script that reads
-    // JSON rather than CSV.
-    Json cases = Json::array();
-    for (const ClassCaseRow& r : read_class_cases_csv(out_dir / "class-cases.csv")) {
+    // The class case by case, as class-cases.csv has it: for a script that reads JSON rather than CSV.
+    Json case_rows = Json::array();
+    for (const ClassCaseRow& r : cases) {
         Json row = Json::object();
         row["submission"] = r.submission;
         row["lab"] = r.lab;
@@ -79,9 +78,9 @@ void write_batch_record(const BatchRecord& record, const fs::path& out_dir) {
         row["status"] = r.status;
         row["points"] = r.points;
         row["max_points"] = r.max_points;
-        cases.push_back(row);
+        case_rows.push_back(row);
     }
-    root["cases"] = cases;
+    root["cases"] = case_rows;
     const fs::path file = out_dir / "batch.json";
     std::ofstream out(file);
     out << root.dump(2) << "\n";
@@ -133,7 +132,7 @@ std::optional<std::vector<ClassCaseRow>> read_batch_cases(const fs::path& out_di
     return rows;
 }
 
-void write_class_tables(const std::vector<BatchEntry>& entries, const fs::path& out_dir) {
+std::vector<ClassCaseRow> write_class_tables(const std::vector<BatchEntry>& entries, const fs::path& out_dir) {
     ClassColumns columns;
     // The last run's scores, from its batch.json, before this run's replaces it.
     if (fs::is_regular_file(out_dir / "batch.json")) {
@@ -145,7 +144,8 @@ void write_class_tables(const std::vector<BatchEntry>& entries, const fs::path& 
         }
     }
     // Case by case, per TODO, and the history of changes (class_cases.h); per lab for class.csv.
-    for (const ClassCaseRow& r : write_class_cases(out_dir, entries)) {
+    std::vector<ClassCaseRow> cases = write_class_cases(out_dir, entries);
+    for (const ClassCaseRow& r : cases) {
         if (std::find(columns.labs.begin(), columns.labs.end(), r.lab) == columns.labs.end()) columns.labs.push_back(r.lab);
         auto& sum = columns.lab_points[{r.submission, r.lab}];
         sum.first += r.points;
@@ -159,6 +159,7 @@ void write_class_tables(const std::vector<BatchEntry>& entries, const fs::path& 
     }
     // The class by its mistakes (class_report.h): class-report.html and class-mistakes.csv.
     write_class_report(out_dir, entries);
+    return cases;
 }
 
 }  // namespace gsv

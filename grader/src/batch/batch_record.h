@@ -26,14 +26,16 @@ struct BatchRecord {
 // The options of a batch as recorded: --kit and --bin with their values left out (they name this machine's folders).
 std::vector<std::string> recorded_options(const std::vector<std::string>& pass_through);
 
-void write_batch_record(const BatchRecord& record, const std::filesystem::path& out_dir);
+// `cases`: the class case by case as write_class_tables returned it (batch.json's "cases", for scripts that read JSON).
+void write_batch_record(const BatchRecord& record, const std::filesystem::path& out_dir, const std::vector<ClassCaseRow>& cases = {});
 // Throws gsv::Error naming the folder when it holds no batch.json or one that is not a batch record.
 BatchRecord read_batch_record(const std::filesystem::path& out_dir);
 // The record's class case by case ("cases": class-cases.csv's rows when it was written); none where the record was
 // written before it kept them. Throws gsv::Error naming the file and the key of a malformed row.
 std::optional<std::vector<ClassCaseRow>> read_batch_cases(const std::filesystem::path& out_dir);
 
-// Writes <out>/class.csv and <out>/class.txt (the table gsv-grade prints) for these rows.
-void write_class_tables(const std::vector<BatchEntry>& entries, const std::filesystem::path& out_dir);
+// Writes <out>/class.csv and <out>/class.txt (the table gsv-grade prints) for these rows, and the class case by case
+// (class_cases.h), whose rows it returns.
+std::vector<ClassCaseRow> write_class_tables(const std::vector<BatchEntry>& entries, const std::filesystem::path& out_dir);
 
 }  // namespace gsv

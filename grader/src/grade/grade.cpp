@@ -11,6 +11,7 @@
 #include "grader/src/judge/image_check.h"
 #include "grader/src/judge/needs.h"
 #include "grader/src/judge/timing_check.h"
+#include "grader/src/report/report.h"
 #include "grader/src/report/report_format.h"
 
 #include <fstream>
@@ -27,8 +28,7 @@ namespace {
 // A passed case in a class's folders (--passed-pictures thumbnail): its picture matched, so a small JPEG of it stands in
 // for the two full PNGs (a lab of 25 cases is 6 MB of them); what a failing case shows is kept whole.
 void keep_thumbnail_only(const fs::path& out, const fs::path& dir, const Image& picture, CaseResult& r) {
-    constexpr int kSide = 128, kQuality = 80;
-    const std::vector<std::uint8_t> jpeg = encode_jpeg(thumbnail(picture, kSide), kQuality);
+    const std::vector<std::uint8_t> jpeg = encode_jpeg(thumbnail(picture, kThumbnailSide), kThumbnailQuality);
     const fs::path file = dir / "actual.jpg";
     std::ofstream(file, std::ios::binary | std::ios::trunc).write(reinterpret_cast<const char*>(jpeg.data()),
                                                                    static_cast<std::streamsize>(jpeg.size()));

@@ -20,6 +20,10 @@ std::string junit_xml(const GradeReport& report);
 // the student (public cases' descriptions, details and the diagnosis; a hidden case its status and points only; no
 // seed; images as small JPEG thumbnails of the failing cases only, so the file stays well under 2 MB).
 enum class ReportReader { Instructor, Student };
+// A thumbnail, wherever the grader makes one (a student's report, a passed case's picture in a class's folders): this
+// many pixels along its longer side, a JPEG of this quality.
+inline constexpr int kThumbnailSide = 128;
+inline constexpr int kThumbnailQuality = 80;
 
 // How the instructor's report shows a failing case's pictures: embedded whole, or (a class's reports: --passed-pictures
 // thumbnail) embedded as thumbnails, each a link to its whole PNG beside the report. A passed case's are thumbnails.

@@ -67,11 +67,8 @@ std::string read_png_bytes(const fs::path& out_dir, const std::string& relative,
     }
 }
 
-// A student's report shows each picture this large at most, as a JPEG of this quality: a lab's failing cases in a few
-// hundred kilobytes.
-constexpr int kThumbnailSide = 128;
-constexpr int kThumbnailQuality = 80;
-// And embeds pictures up to this many bytes in all (base64 adds a third): past it, a line saying where to see them.
+// A student's report embeds thumbnails up to this many bytes in all (base64 adds a third): past it, a line saying
+// where to see them.
 constexpr std::size_t kStudentPictureBytes = 1200u << 10;
 
 // The picture as a student's report embeds it: a thumbnail, JPEG; empty with `why` where it cannot be read.
