@@ -141,12 +141,19 @@ public:
 
     // An interactive frame that did only part of what its values ask (lab 05 catches its simulation up a few steps a
     // frame): the page, which draws only on a change, draws again until the lab stops asking (the window draws on).
-    void ask_for_another_frame() { another_frame_ = true; }
+    // `progress` says how far the picture has got ("catching up: step 12 of 40"), shown while it is behind.
+    void ask_for_another_frame(std::string progress = {}) {
+        another_frame_ = true;
+        progress_ = std::move(progress);
+    }
     bool take_another_frame_request() {
         const bool asked = another_frame_;
         another_frame_ = false;
+        if (!asked) progress_.clear();
         return asked;
     }
+    // The progress the last frame that asked for another gave; empty once a frame did all its work.
+    const std::string& progress() const { return progress_; }
 
 private:
     Context& context_;
@@ -156,6 +163,7 @@ private:
     ShaderLibrary shaders_;
     DepthReadback depth_readback_;
     bool another_frame_ = false;
+    std::string progress_;
 };
 
 // Declares the camera parameters (camera_yaw, camera_pitch, camera_distance) that window mode drives with

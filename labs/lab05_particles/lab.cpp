@@ -11,6 +11,8 @@
 #include "common/gl/compute.h"
 #include "common/gl/gl.h"
 #include "common/gl/texture.h"
+#include "common/timing/timing.h"
+#include "common/timing/work_pacer.h"
 #include "particle_buffers.h"
 #include "particle_stepper.h"
 #include "support/particles/particle_grid.h"
@@ -27,8 +29,11 @@
 
 namespace {
 
-// Window mode catches the simulation up at most this many steps a frame, so a demo stays interactive.
+// Window mode and the page catch the simulation up a few steps a frame, so a demo stays interactive: at most this
+// many, and as many as the time a frame takes here allows (gsv::WorkPacer), starting from what this many steps of the
+// page's 65,536 particles cost.
 constexpr long kMaxStepsPerFrame = 32;
+constexpr double kFirstParticleSteps = kMaxStepsPerFrame * 65536.0;
 
 class ParticleLab final : public gsv::Lab {
 public:
@@ -195,10 +200,14 @@ private:
                                   velocity_texture_.version(), h))
             done_ = 0;
         long steps = target - done_;
-        if (frame.interactive) steps = std::min(steps, kMaxStepsPerFrame);
+        if (frame.interactive && steps > 0)
+            steps = pacer_.steps(steps, static_cast<double>(count_.get()), kMaxStepsPerFrame, gsv::now_seconds());
         stepper(kit).run(steps, h);
         done_ += steps;
-        if (done_ < target) kit.ask_for_another_frame();  // the picture is behind its time: the page draws on
+        pacer_.done(done_ < target);
+        // The picture is behind its time: the page draws on, saying how far it has got.
+        if (done_ < target)
+            kit.ask_for_another_frame("catching up: step " + std::to_string(done_) + " of " + std::to_string(target));
     }
 
     static std::vector<float> flatten(const std::vector<glm::vec4>& v) {
@@ -211,6 +220,7 @@ private:
     lab05::ParticleParams params_;
     gsv::Param<float> time_, speed_scale_;
     gsv::Param<int> count_, seed_;
+    gsv::WorkPacer pacer_{kFirstParticleSteps};
     const gsv::ShaderLibrary::Entry* advect_ = nullptr;
     const gsv::ShaderLibrary::Entry* draw_ = nullptr;
     bool compute_ = true;  // false: transform feedback steps the particles (OpenGL ES 3.0, WebGL 2)
