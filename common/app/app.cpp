@@ -94,6 +94,8 @@ void Session::open(Backend backend, int extra_width) {
     context_options.height = options.height;
     context_options.title = title();
     context_options.keep_display = keep_display;
+    // Only window mode shows its window: a headless mode on the window backend draws in a hidden one.
+    context_options.visible = options.mode == RunMode::Window;
     try {
         context = create_context(context_options);
     } catch (const UnsupportedError& e) {
@@ -110,6 +112,17 @@ void Session::open(Backend backend, int extra_width) {
                                                            " has; this context is " + api_name(options.profile, kit->gl_version()));
     lab->setup(*kit);
     compiled_defines_ = param_defines(params);
+}
+
+Backend Session::headless_backend() {
+    if (options.backend) return *options.backend;
+    if (is_compiled(Backend::Egl)) return Backend::Egl;
+    if (!told_hidden_window) {
+        std::fprintf(stderr, "%s: no EGL in this build (Windows, macOS): drawing headless in a hidden window\n",
+                     info.id.c_str());
+        told_hidden_window = true;
+    }
+    return Backend::Window;
 }
 
 const Assets& Session::find_assets() {

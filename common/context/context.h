@@ -63,6 +63,7 @@ protected:
 std::unique_ptr<Context> create_context(const ContextOptions& options);
 
 std::vector<Backend> compiled_backends();
+bool is_compiled(Backend backend);
 const char* backend_name(Backend backend);
 Backend parse_backend(const std::string& text);   // "window" | "egl" | "osmesa" | "web"; throws naming the value
 Profile parse_profile(const std::string& text);   // "core" | "compat" | "es"
