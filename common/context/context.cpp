@@ -117,7 +117,7 @@ GlVersion parse_gl_version(const std::string& text, Profile profile) {
 }
 
 GlVersion Context::effective_version() const {
-    return info_.obtained < info_.requested ? info_.obtained : info_.requested;
+    return info_.obtained < info_.held_to ? info_.obtained : info_.held_to;
 }
 
 void Context::require(GlVersion needed, const std::string& what_for) const {
@@ -156,6 +156,7 @@ void Context::load_gl(void* (*get_proc)(const char*), const ContextOptions& opti
                                  " functions through the " + backend_name(options.backend) + " backend");
     info_.backend = options.backend;
     info_.requested = options.version;
+    info_.held_to = options.up_to && options.version < *options.up_to ? *options.up_to : options.version;
     info_.obtained = GlVersion{GLAD_VERSION_MAJOR(loaded), GLAD_VERSION_MINOR(loaded)};
     info_.renderer = gl_string(GL_RENDERER);
     info_.vendor = gl_string(GL_VENDOR);
