@@ -33,6 +33,10 @@ struct LabInfo {
     std::string title;            // "GLSL basics and Gooch shading"
     GlVersion needs{4, 1};        // labs other than 05 run on macOS's 4.1 core
     std::string needs_why = "the kit's baseline";
+    // A desktop version above `needs` whose features the lab takes where the driver offers them, and does without
+    // below it (lab 05: 4.3's compute shaders, transform feedback on macOS's 4.1). The run holds to it, not to `needs`,
+    // unless --gl says otherwise. None: the lab holds to `needs`.
+    std::optional<GlVersion> uses{};
     // Its named cases, relative to the kit's root; empty: the public case file (KitLayout::case_file).
     std::string case_file{};
     // The lowest OpenGL ES version it runs on with --profile es: 3.0 is WebGL 2's feature set.

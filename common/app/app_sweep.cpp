@@ -89,7 +89,7 @@ public:
     SweepRun(Session& s, const SweepPlan& plan)
         : s_(s), plan_(plan), knob_name_(plan.axis.name), knob_values_(plan.axis.values), series_name_(plan.series_name),
           series_values_(plan.series_values) {
-        s.open(s.options.backend.value_or(Backend::Egl));
+        s.open(s.headless_backend());
         target_ = Framebuffer(s.options.width, s.options.height, ColorFormat::RGBA8);
         frame_ = Frame{s.options.width, s.options.height, 0.0};
         warmup_ = s.options.warmup >= 0 ? s.options.warmup : 2;

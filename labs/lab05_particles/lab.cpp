@@ -38,9 +38,11 @@ constexpr double kFirstParticleSteps = kMaxStepsPerFrame * 65536.0;
 class ParticleLab final : public gsv::Lab {
 public:
     gsv::LabInfo info() const override {
-        gsv::LabInfo info{"lab05", "SSBOs and compute-shader particle advection", {4, 3},
-                          "compute shaders and storage buffers"};
-        // Below ES 3.1 (WebGL 2 is ES 3.0) transform feedback steps the particles instead (advect_captured.vert).
+        gsv::LabInfo info{"lab05", "SSBOs and compute-shader particle advection", {4, 1},
+                          "transform feedback where there are no compute shaders"};
+        // Compute shaders from OpenGL 4.3 and ES 3.1; below them (macOS's 4.1, WebGL 2's ES 3.0) transform feedback
+        // steps the particles instead (advect_captured.vert), and the work groups of L05-T2 are not run.
+        info.uses = gsv::GlVersion{4, 3};
         info.needs_es = {3, 0};
         info.needs_es_why = "transform feedback where there are no compute shaders";
         return info;
