@@ -273,7 +273,8 @@ EOF
 # whole, from its heading to the next section of the same level or the end.
 for sheet in "$dest_abs"/labs/*/README.md; do
   [ -f "$sheet" ] || continue
-  awk '/^## For the instructor$/ { skip = 1; next } skip && /^##? / { skip = 0 } !skip' "$sheet" >"$sheet.tmp" &&
+  awk '/^## For the instructor$/ { skip = 1; next } skip && /^##? / { skip = 0 } skip { next }
+       /^$/ { blank++; next } { for (; blank > 0; blank--) print ""; print }' "$sheet" >"$sheet.tmp" &&
     mv "$sheet.tmp" "$sheet"
   sed -i -e 's/ and `build\/bin\/\(lab[0-9]*\)_solution` for the reference//' \
          -e 's/\(lab[0-9][0-9]\)_solution/\1/g' \
