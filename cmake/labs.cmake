@@ -97,10 +97,11 @@ function(gsv_add_lab id dir)
     if(COMMAND gsv_warnings)
       gsv_warnings(${target})
     endif()
-    # The reference also measures against the instructor's CPU yardsticks (reference/): its own measuring code in
-    # reference/<dir>/ (which includes the lab's headers) and gsv_reference. Neither exists in the student
-    # edition or the grader's submission build; there the lab compiles without GSV_HAVE_REFERENCE.
-    if(variant STREQUAL "solution" AND TARGET gsv_reference)
+    # The reference's sweeps follow the instructor's sweep plan, reference/<dir>/sweep_plan.cpp (common/app/sweep_plan.h),
+    # with its measuring code beside it (which includes the lab's headers, its SweepView among them) and the CPU
+    # yardsticks of gsv_reference. None of it is in the student edition or the grader's submission build; there, and
+    # for a lab with no plan, the lab's sweeps take the default plan (GSV_HAVE_REFERENCE undefined, common/app/app.h).
+    if(variant STREQUAL "solution" AND TARGET gsv_reference AND EXISTS ${PROJECT_SOURCE_DIR}/reference/${dir}/sweep_plan.cpp)
       file(GLOB reference_sources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/reference/${dir}/*.cpp)
       target_sources(${target} PRIVATE ${reference_sources})
       target_include_directories(${target} PRIVATE ${GSV_LABS_ROOT}/${src})

@@ -268,12 +268,15 @@ the grader uses its own); `shaders/` shared GLSL; `data/` meshes and data sets (
 the kit's conventions for names and GLSL.
 EOF
 
-# The lab sheets as a student reads them: nothing that points at the reference or the test suite.
+# The lab sheets as a student reads them: nothing that points at the reference or the test suite. The instructor's
+# rows (where the answers, tests and sweep plan are) are a section of their own, "## For the instructor", left out
+# whole, from its heading to the next section of the same level or the end.
 for sheet in "$dest_abs"/labs/*/README.md; do
   [ -f "$sheet" ] || continue
-  sed -i -e "/instructor's kit/d" \
-         -e '/^| your code | /d' \
-         -e 's/ and `build\/bin\/\(lab[0-9]*\)_solution` for the reference//' \
+  awk '/^## For the instructor$/ { skip = 1; next } skip && /^##? / { skip = 0 } skip { next }
+       /^$/ { blank++; next } { for (; blank > 0; blank--) print ""; print }' "$sheet" >"$sheet.tmp" &&
+    mv "$sheet.tmp" "$sheet"
+  sed -i -e 's/ and `build\/bin\/\(lab[0-9]*\)_solution` for the reference//' \
          -e 's/\(lab[0-9][0-9]\)_solution/\1/g' \
          -e 's/`*tests\/test_[a-z0-9_]*\.cpp`*\(, `*tests\/test_[a-z0-9_]*\.cpp`*\)*/the kit'"'"'s tests/g' \
          "$sheet"

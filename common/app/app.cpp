@@ -235,13 +235,15 @@ int with_exit_status(const Session& session, const std::string& stage, const std
     }
 }
 
-int run_lab(const LabFactory& make_lab, const char* lab_dir, const char* variant, int argc, const char* const* argv) {
+int run_lab(const LabFactory& make_lab, const char* lab_dir, const char* variant, int argc, const char* const* argv,
+            const SweepPlanFactory& make_sweep_plan) {
     // On the heap: web mode hands it to the page, which draws with it after main() has returned.
     auto owned = std::make_unique<Session>();
     Session& session = *owned;
     std::string stage = "command line";
     return with_exit_status(session, stage, [&]() -> int {
         start_session(session, make_lab(), lab_dir, variant, Assets::executable_path(argc > 0 ? argv[0] : nullptr));
+        session.make_sweep_plan = make_sweep_plan;
         try {
             session.options = parse_cli(argc, argv);
             // Served, each case brings its own settings: the command line's are not the cases'.

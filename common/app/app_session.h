@@ -18,6 +18,7 @@ struct Session {
     Session() = default;
     ~Session();  // the lab's GL objects go before the context that owns them
     std::unique_ptr<Lab> lab;
+    SweepPlanFactory make_sweep_plan;  // the instructor's (reference/), in a solution build; else none: the default plan
     LabInfo info;
     std::string variant;  // "starter" or "solution"
     CliOptions options;

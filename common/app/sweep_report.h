@@ -1,6 +1,6 @@
 #pragma once
 // The accuracy-versus-time table of a sweep: printed, written as CSV, and plotted with gnuplot.
-#include "common/app/app.h"
+#include "common/app/sweep_plan.h"
 
 #include <filesystem>
 #include <string>

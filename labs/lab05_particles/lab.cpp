@@ -15,11 +15,9 @@
 #include "common/timing/work_pacer.h"
 #include "particle_buffers.h"
 #include "particle_stepper.h"
+#include "sweep_view.h"
 #include "support/particles/particle_grid.h"
 #include "support/particles/particle_motion.h"
-#ifdef GSV_HAVE_REFERENCE
-#include "reference/lab05_particles/particle_measure.h"  // the instructor's measurements (cmake/labs.cmake)
-#endif
 
 #include <algorithm>
 #include <cmath>
@@ -35,7 +33,7 @@ namespace {
 constexpr long kMaxStepsPerFrame = 32;
 constexpr double kFirstParticleSteps = kMaxStepsPerFrame * 65536.0;
 
-class ParticleLab final : public gsv::Lab {
+class ParticleLab final : public gsv::Lab, public lab05::SweepView {
 public:
     gsv::LabInfo info() const override {
         gsv::LabInfo info{"lab05", "SSBOs and compute-shader particle advection", {4, 1},
@@ -128,22 +126,6 @@ public:
         lab05::draw_particles(buffers_);
     }
 
-    std::vector<std::string> sweep_reference() const override { return {"time_step=0.00625", "integrator=rk4"}; }
-#ifdef GSV_HAVE_REFERENCE
-    // Against the instructor's CPU integrators (reference/); a student's sweep has the images' errors and times only.
-    std::string sweep_error_column() const override { return "pos_err_rms"; }
-    std::string sweep_reference_name() const override {
-        return "positions (pos_err): the same particles in double precision, RK4 in substeps of at most 0.001, far below "
-               "float32's error; images: RK4 at the smallest step";
-    }
-
-    gsv::SweepMetrics sweep_metrics(gsv::LabKit& kit, const gsv::Frame&) override {
-        gsv::SweepMetrics metrics = lab05::measure(stepper(kit), initial_, done_);
-        state_.invalidate();  // measuring restarted the buffers
-        return metrics;
-    }
-#endif
-
     // The speed colours as speed_color.glsl gives them, and what a particle faster than the scale gets.
     std::optional<gsv::Legend> legend(gsv::LabKit& kit) override {
         if (!params_.color_by_speed.get()) return std::nullopt;
@@ -162,8 +144,13 @@ public:
                 {"velocities", 4, flatten(lab05::read_vec4s(buffers_.velocities, buffers_.capacity))}};
     }
 
+    // What its sweep plan reads (sweep_view.h).
+    const gsv::ParticleSet& initial_particles() const override { return initial_; }
+    long steps_done() const override { return done_; }
+    void buffers_restarted() override { state_.invalidate(); }
+
 private:
-    lab05::Stepper stepper(gsv::LabKit& kit) {
+    lab05::Stepper stepper(gsv::LabKit& kit) override {
         return lab05::Stepper{kit, params_, *advect_, buffers_, *velocity_texture_, limits_};
     }
 
