@@ -7,7 +7,7 @@
 #   check_windows.sh wine KIT_ROOT BUILD    that build run under Wine on Xvfb (Mesa's llvmpipe through Wine's
 #                                           opengl32), in a Wine prefix made afresh:
 #     - the zip unpacked into the prefix's C: drive: every lab's `list` from there, lab 01's `render` (the headless
-#       default: a hidden window, said in one line) and its window, each started from the zip with nothing else on
+#       default: a hidden window, said in one line), `compare` (against the zip's golden image) and its window, each started from the zip with nothing else on
 #       its path (the DLLs beside the executables are the only C++ runtime in the prefix);
 #     - every public case of every lab's solution drawn by `render --backend window` and judged against its golden by
 #       the grader's comparator under the case's golden tolerance (gsv-golden-judge: the self-check's verdicts; the
@@ -78,12 +78,18 @@ for lab in "${labs[@]}"; do
   grep -q "$first" "$out/$lab-list.log" || { cat "$out/$lab-list.log"; fail "$lab.exe list does not name its case $first"; }
   echo "$lab.exe list, from the zip: $(wc -l < "$out/$lab-list.log") lines, its cases named"
 done
-GSV_ROOT= wine "$zip_dir\\lab01.exe" render --case phong --out 'C:\starter-phong.png' >"$out/zip-render.log" 2>&1 ||
+GSV_ROOT= wine "$zip_dir\\lab01.exe" render --case phong --out 'C:\starter-phong.png' </dev/null >"$out/zip-render.log" 2>&1 ||
   { cat "$out/zip-render.log"; fail "lab01.exe render failed, started from the zip"; }
 grep -q "drawing headless in a hidden window" "$out/zip-render.log" || { cat "$out/zip-render.log"; fail "render did not say it draws in a hidden window"; }
 cp "$WINEPREFIX/drive_c/starter-phong.png" "$out/zip-starter-phong.png"
 echo "lab01.exe render --case phong, from the zip: $(grep -c . "$out/zip-render.log") lines, $(identify -format '%wx%h' "$out/zip-starter-phong.png")"
-GSV_ROOT= wine "$zip_dir\\lab01.exe" window --screenshot-after 8 --quit-after 12 --out 'C:\starter-window.png' >"$out/zip-window.log" 2>&1 ||
+# compare, the Windows student's check of a case: against the golden image in the zip's gsv-assets\ (no solution there).
+GSV_ROOT= wine "$zip_dir\\lab01.exe" compare --case phong </dev/null >"$out/zip-compare.log" 2>&1 ||
+  { cat "$out/zip-compare.log"; fail "lab01.exe compare failed, started from the zip"; }
+grep -q "against golden image grader/golden/lab01/phong.png" "$out/zip-compare.log" && [ -s "$out/lab01-compare-phong.png" ] ||
+  { cat "$out/zip-compare.log"; fail "lab01.exe compare did not compare with the zip's golden image"; }
+echo "lab01.exe compare --case phong, from the zip: $(grep -m1 -o 'against golden image.*' "$out/zip-compare.log")"
+GSV_ROOT= wine "$zip_dir\\lab01.exe" window --screenshot-after 8 --quit-after 12 --out 'C:\starter-window.png' </dev/null >"$out/zip-window.log" 2>&1 ||
   { cat "$out/zip-window.log"; fail "lab01.exe window failed, started from the zip"; }
 cp "$WINEPREFIX/drive_c/starter-window-window.png" "$out/zip-starter-window.png"
 
@@ -100,7 +106,7 @@ for lab in "${labs[@]}"; do
 done
 
 # The solution's window with its panel, and the X screen beside it.
-wine "$win/kit/bin/lab01_solution.exe" window --screenshot-after 10 --quit-after 30 --out "$out/lab01-window.png" >"$out/window.log" 2>&1 &
+wine "$win/kit/bin/lab01_solution.exe" window --screenshot-after 10 --quit-after 30 --out "$out/lab01-window.png" </dev/null >"$out/window.log" 2>&1 &
 pid=$!
 for i in $(seq 1 300); do [ -s "$out/lab01-window-window.png" ] && break; sleep 0.1; done
 sleep 0.5
