@@ -9,7 +9,7 @@
 #   scripts/windows-build.sh [build] [--dir DIR]   from DIR/sources: the libraries into DIR/deps (once), the labs
 #                                                   (starters and solutions) into DIR/kit, the zip DIR/gsv-windows.zip
 #
-# DIR defaults to build-win/ in the kit. The zip holds the starters (labNN.exe), the C++ runtime's DLLs beside them
+# DIR defaults to build-win/ in the kit (the instructor's kit or the student edition). The zip holds the starters (labNN.exe), the C++ runtime's DLLs beside them
 # (mingw's libstdc++, libgcc and winpthread: a Windows machine has none of them), and in gsv-assets/ what the labs read
 # (labs/, shaders/, the data the labs use, the public cases and their golden images); no solution.
 # Needs: mingw-w64 (x86_64-w64-mingw32-g++-posix), cmake, ninja, zip; for `sources`, apt-get and network.
@@ -157,7 +157,12 @@ cmake -S "$root" -B "$kit" -G Ninja -DCMAKE_TOOLCHAIN_FILE="$toolchain" -DGSV_WI
 grep -q "ImGui ON" "$dir/configure.log" || { cat "$dir/configure.log"; die "configured without Dear ImGui (no panel)"; }
 mapfile -t labs < <(python3 -c 'import json, sys; print("\n".join(l["id"] for l in json.load(open(sys.argv[1]))["labs"]))' "$kit/labs.json")
 targets=()
-for lab in "${labs[@]}"; do targets+=("$lab" "${lab}_solution"); done
+# The solutions where the kit has them (the instructor's: the windows test draws the goldens' cases with them); the
+# student edition builds its starters alone.
+for lab in "${labs[@]}"; do
+  targets+=("$lab")
+  [ -d "$root/solutions" ] && targets+=("${lab}_solution")
+done
 cmake --build "$kit" -j"$jobs" --target "${targets[@]}" >"$dir/build.log" 2>&1 || { grep -B2 -A12 -m3 "error\|FAILED" "$dir/build.log"; die "the labs did not build (log: $dir/build.log)"; }
 warnings=$(grep -c "warning:" "$dir/build.log" || true)
 [ "$warnings" = 0 ] || { grep -A4 "warning:" "$dir/build.log" | head -40; die "$warnings warnings in the Windows build"; }
