@@ -6,6 +6,7 @@
 #                                           BUILD/windows/sources by `scripts/windows-build.sh sources`, CI's set-up)
 #   check_windows.sh wine KIT_ROOT BUILD    that build run under Wine on Xvfb (Mesa's llvmpipe through Wine's
 #                                           opengl32), in a Wine prefix made afresh:
+#     - every DLL the zip's programs import is beside them or Windows' own (checked on the host, before Wine);
 #     - the zip unpacked into the prefix's C: drive: every lab's `list` from there, lab 01's `render` (the headless
 #       default: a hidden window, said in one line), `compare` (against the zip's golden image) and its window, each started from the zip with nothing else on
 #       its path (the DLLs beside the executables are the only C++ runtime in the prefix);
@@ -59,6 +60,16 @@ export WINEPREFIX=$out/prefix WINEDEBUG=-all WINEARCH=win64 WINEDLLOVERRIDES="ms
 # The kit's files for the solutions (built in BUILD/windows/kit/bin, not shipped), as Wine names the host's /.
 export GSV_ROOT="Z:${root//\//\\}"
 mapfile -t labs < <(python3 -c 'import json, sys; print("\n".join(l["id"] for l in json.load(open(sys.argv[1]))["labs"]))' "$build/labs.json")
+
+# Every DLL the zip's programs import is beside them or one every Windows has (opengl32 is loaded by GLFW at run time).
+package=$win/package/gsv-windows
+for f in "$package"/*.exe "$package"/*.dll; do
+  for dll in $(x86_64-w64-mingw32-objdump -p "$f" | awk '/DLL Name:/ {print $3}'); do
+    case "${dll,,}" in kernel32.dll|user32.dll|gdi32.dll|shell32.dll|advapi32.dll|msvcrt.dll|opengl32.dll|ole32.dll) continue ;; esac
+    [ -f "$package/$dll" ] || fail "$(basename "$f") imports $dll, which is neither in the zip nor part of Windows"
+  done
+done
+echo "the zip's programs import only Windows' own DLLs and the $(ls "$package"/*.dll | wc -l) DLLs beside them"
 
 # One X server and one wineserver for the whole session (a script in a file: Wine must not read its stdin).
 cat > "$out/session.sh" <<'SCRIPT'
