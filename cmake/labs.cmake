@@ -30,8 +30,12 @@ endif()
 # The lab's known C++ mistakes in one build, <id>_mistakes (tools/known_mistake_switch.cpp): the reference with each C++
 # TODO block switched at run time, so the grader's diagnosis renders each mistake's pictures with GSV_KNOWN_MISTAKE set
 # (grader/src/grade/mistake_pictures.cpp). Only where the instructor's lists are (tests/mutants/<id>.json, so not in the
-# student edition) and they hold C++ mistakes.
+# student edition) and they hold C++ mistakes. Not in a cross-build (Windows with mingw-w64): its sources are written by
+# gsv-make-starters, a program of that build the host cannot run, and the grader that uses them is Linux's.
 function(gsv_add_lab_mistakes id dir)
+  if(CMAKE_CROSSCOMPILING)
+    return()
+  endif()
   set(list ${PROJECT_SOURCE_DIR}/tests/mutants/${id}.json)
   if(NOT "solution" IN_LIST GSV_LAB_VARIANTS OR NOT EXISTS ${list} OR NOT EXISTS ${GSV_LABS_ROOT}/solutions/${dir})
     return()

@@ -220,7 +220,11 @@ scripts/kit grade --todo L01-T3    # build one lab and self-check one TODO's cas
 ```
 
 `scripts/kit grade --labs lab02` self-checks one lab. On macOS and Windows, `scripts/setup.sh` prints the Homebrew
-and vcpkg equivalents; then `cmake --preset default && cmake --build --preset default`.
+and vcpkg equivalents; then `cmake --preset default && cmake --build --preset default`. On Windows without a
+compiler, the labs also come as a zip your instructor makes (`scripts/kit windows` on Debian): unpacked anywhere,
+`lab01.exe` runs the lab, `lab01.exe compare --case phong` checks a case against its golden image, and your shaders
+are in its `gsv-assets\labs\` (its `README.txt` says more). Or do the labs in the browser edition, with nothing to
+install.
 
 ## Your work
 
