@@ -184,11 +184,12 @@ async function pageWeight(page, lab) {
   }
 }
 
-// Cases past WebGL 2's ES 3.0 (lab 05's compute shaders) are named under the self-check with the points they hold, and
+// Cases past WebGL 2's ES 3.0 (lab 05's compute shaders, "feature": "compute") are named under the self-check with the points they hold, and
 // marked in the case list; a lab without them says nothing there.
 async function desktopOnly(page, lab) {
   const cases = JSON.parse(fs.readFileSync(path.join(args.kit, 'grader/cases', lab + '.json'), 'utf8')).cases;
-  const desktop = cases.filter((c) => c.es && c.es !== '3.0');
+  // A case past ES 3.0 by its "es" or by a "feature" WebGL 2 lacks (lab 05's "compute": ES 3.1's).
+  const desktop = cases.filter((c) => (c.es && c.es !== '3.0') || c.feature === 'compute');
   const sum = (list) => list.reduce((s, c) => s + (c.points === undefined ? 1 : c.points), 0);
   const seen = await page.evaluate(() => ({ note: document.getElementById('self-check-desktop').textContent,
     marked: Array.from(document.getElementById('case').options).filter((o) => /desktop only/.test(o.textContent)).map((o) => o.value) }));
