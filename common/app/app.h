@@ -17,6 +17,7 @@
 #include "common/scene/transforms.h"
 #include "common/shader/shader_library.h"
 #include "common/shader/transform_uniforms.h"
+#include "common/timing/frame_work.h"
 
 #include <filesystem>
 #include <functional>
@@ -85,6 +86,10 @@ public:
     // The error the sweep's plot shows: one of sweep_metrics' columns, where the image's RMSE against the
     // reference says little (lab 05: particles restart at times that depend on the step); empty: the RMSE.
     virtual std::string sweep_error_column() const { return {}; }
+    // What a frame with the current settings asks of the device (common/timing/frame_work.h): texture fetches by
+    // format, storage bytes, fragments, arithmetic, counted from the lab's own loops; shown by `list`, in sweeps and
+    // against the device's ceilings. Empty: not stated.
+    virtual FrameWork frame_work(const Frame&) const { return {}; }
     // What render mode writes beside the image for the grader to compare with the reference's; most labs none.
     virtual std::vector<DataArray> readback(LabKit&) { return {}; }
     // Where colour is data (a height, a speed, an intensity's colour and opacity): what the colours of the frame last

@@ -2,6 +2,7 @@
 // arrays a lab hands in (common/io/data_array.h). Under the grader the same three go over its hand-in socket instead
 // of into files, and the timed frames answer its challenges (common/io/handin.h).
 #include "common/app/app_session.h"
+#include "common/app/fetch_counter.h"
 #include "common/core/error.h"
 #include "common/gl/framebuffer.h"
 #include "common/gl/gl.h"
@@ -17,6 +18,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 namespace gsv {
 
@@ -38,6 +40,25 @@ Json gl_json(const Context& context) {
     gl["requested"] = info.requested.str();
     gl["effective"] = context.effective_version().str();
     return gl;
+}
+
+// The lab's stated work: one entry per resource, as Lab::frame_work counts it.
+Json work_json(const FrameWork& work) {
+    Json items = Json::array();
+    for (const auto& item : work.items) {
+        Json entry = Json::object();
+        entry["ceiling"] = item.ceiling_key();
+        entry["kind"] = work_kind_name(item.kind);
+        entry["path"] = shader_path_name(item.path);
+        if (!item.texture.empty()) entry["texture"] = item.texture;
+        entry["amount"] = item.amount;
+        entry["what"] = item.what;
+        items.push_back(entry);
+    }
+    Json out = Json::object();
+    out["items"] = items;
+    out["upper_bound"] = work.upper_bound;
+    return out;
 }
 
 Json timing_json(const TimingStats& t, int warmup) {
@@ -151,6 +172,18 @@ int run_render(Session& s) {
     }, warmup, frames);
     check_gl_error("rendering the frame");
 
+    // The instrumented build (GSV_COUNT_FETCHES): one more frame, its lookups counted, held beside the work the lab
+    // states for it. Not under the grader, whose frames are the student's.
+    std::optional<FetchCounts> counted;
+    if (fetch_count_define() && !grader.active()) {
+        FetchCounter counter;
+        counter.reset_and_bind();
+        target.bind();
+        s.render_frame(frame);
+        counted = counter.read();
+    }
+    const FrameWork work = s.lab->frame_work(frame);
+
     const Readback shot = read_back(target);
     const Image& image = shot.image;
     const FloatStats& stats = shot.stats;
@@ -177,6 +210,14 @@ int run_render(Session& s) {
     report["params"] = params_json(s.params);
     report["timing"] = timing_json(timing, warmup);
     report["gl"] = gl_json(*s.context);
+    if (!work.empty()) report["work"] = work_json(work);
+    if (counted) {
+        Json c = Json::object();
+        c["2d"] = static_cast<double>(counted->texture_2d);
+        c["3d"] = static_cast<double>(counted->texture_3d);
+        c["2d_array"] = static_cast<double>(counted->texture_2d_array);
+        report["fetches_counted"] = c;
+    }
     report["float_target"] = target.format() == ColorFormat::RGBA32F;  // false: NaN and Inf could not be counted
     report["nan_pixels"] = static_cast<double>(stats.nan_count);
     report["inf_pixels"] = static_cast<double>(stats.inf_count);

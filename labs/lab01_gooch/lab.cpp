@@ -98,6 +98,16 @@ public:
 
     // Where the exact image does not apply (another model, a cut, silhouettes, an unequal scale), the sweep falls
     // back to this rendered one.
+    // The lesson is per-fragment shading of a model that covers part of the frame: at most one shaded fragment a
+    // pixel (fill), the lighting a few dozen flops each.
+    gsv::FrameWork frame_work(const gsv::Frame& frame) const override {
+        gsv::FrameWork work;
+        work.upper_bound = true;
+        work.items.push_back({gsv::WorkKind::Fragments, gsv::ShaderPath::Fragment, "",
+                              static_cast<double>(frame.width) * frame.height, "one shaded fragment a pixel at most"});
+        return work;
+    }
+
     std::vector<std::string> sweep_reference() const override {
         return {"shading_rate=fragment", "mesh_resolution=1024"};
     }

@@ -92,6 +92,12 @@ public:
         glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));
     }
 
+    // The ray caster's loop, counted by the processor that runs it; nothing before a frame has read the volume.
+    gsv::FrameWork frame_work(const gsv::Frame& frame) const override {
+        const auto* raycaster = dynamic_cast<const lab06::RayTraversal*>(network_ ? network_->find("raycaster") : nullptr);
+        return raycaster ? raycaster->frame_work(frame.width, frame.height) : gsv::FrameWork{};
+    }
+
     std::vector<std::string> sweep_reference() const override { return {"samples_per_voxel=16"}; }
     std::vector<std::string> sweep_reference_refinement() const override { return {"samples_per_voxel=32"}; }
     std::string sweep_reference_name() const override {

@@ -38,6 +38,9 @@ public:
     const gsv::Texture& transfer_function();
     std::string transfer_function_name() const { return transfer_function_.param().get(); }
     const gsv::EnumParam<Shader>& shader() const { return shader_; }
+    // What a frame of width x height asks at most (issue 44): every pixel a ray across the cube's diagonal, each
+    // sample with the lookups its modules make. None before the first frame has read the volume.
+    gsv::FrameWork frame_work(int width, int height) const;
     double iso_value() const { return iso_.iso_value().in_double().get(); }
 
 private:

@@ -1,10 +1,12 @@
 #include "ray_traversal.h"
 
 #include "common/core/error.h"
+#include "common/core/number_text.h"
 #include "common/gl/gl.h"
 #include "transfer_function.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace lab06 {
 
@@ -96,6 +98,38 @@ const gsv::Texture& RayTraversal::transfer_function() {
         return gsv::Texture::create_2d(kTransferFunctionEntries, 1, gsv::TexelFormat::RGBA32F, table.data());
     });
     return *transfer_function_table_;
+}
+
+gsv::FrameWork RayTraversal::frame_work(int width, int height) const {
+    if (!last_) return {};
+    const Config c = config();
+    // raycast_skeleton.glsl: ceil(length / step) samples, step = 1 / (samples_per_voxel x the largest side), at
+    // most kRcMaxSamples (raycast_common.glsl); the longest ray through the texture cube is its diagonal.
+    constexpr double kMaxSamples = 16384;
+    const double per_ray = std::min(kMaxSamples, std::ceil(std::sqrt(3.0) / static_cast<double>(rays_.step_size())));
+    const double rays = static_cast<double>(width) * height;
+    const double samples = rays * per_ray;
+    const bool dvr = c.compositing == Config::Compositing::Dvr;
+    const bool per_sample_classify = c.classification == Config::Classification::TransferFunction &&
+                                     (dvr || c.compositing == Config::Compositing::FirstHit);
+    const bool per_sample_gradient = dvr && c.shading == Config::Shading::Phong;
+    const bool hit_gradient = c.compositing == Config::Compositing::Isosurface && c.shading == Config::Shading::Phong;
+    const double gradient_lookups = c.gradient == Config::Gradient::Central ? 6 : c.gradient == Config::Gradient::Forward ? 4 : 0;
+    const std::string along = std::to_string(static_cast<long>(per_ray)) + " samples a ray (the diagonal), " +
+                              std::to_string(width) + "x" + std::to_string(height) + " rays";
+    gsv::FrameWork work;
+    work.upper_bound = true;
+    const double volume_per_sample = 1 + (per_sample_gradient ? gradient_lookups : 0);
+    work.items.push_back({gsv::WorkKind::Fetch, gsv::ShaderPath::Fragment, "R32F 3D",
+                          samples * volume_per_sample + (hit_gradient ? rays * gradient_lookups : 0),
+                          gsv::format_number(volume_per_sample, 3) + " volume lookups a sample, " + along});
+    if (c.gradient == Config::Gradient::Precomputed && (per_sample_gradient || hit_gradient))
+        work.items.push_back({gsv::WorkKind::Fetch, gsv::ShaderPath::Fragment, "RGB32F 3D", per_sample_gradient ? samples : rays,
+                              "the precomputed gradient, once a " + std::string(per_sample_gradient ? "sample" : "ray")});
+    if (per_sample_classify)
+        work.items.push_back({gsv::WorkKind::Fetch, gsv::ShaderPath::Fragment, "RGBA32F 2D", samples,
+                              "the transfer function, once a sample"});
+    return work;
 }
 
 void RayTraversal::process() {
