@@ -183,6 +183,10 @@ int run_render(Session& s) {
         counted = counter.read();
     }
     const FrameWork work = s.lab->frame_work(frame);
+    // Against this device's ceilings where gsv-ceilings has measured them (build/ceilings.json): what scripts/kit
+    // bench's roofline table reads.
+    std::optional<Roofline> bound;
+    if (const auto ceilings = cached_ceilings(s.executable, s.context->info().renderer)) bound = roofline(work, *ceilings);
 
     const Readback shot = read_back(target);
     const Image& image = shot.image;
@@ -211,6 +215,15 @@ int run_render(Session& s) {
     report["timing"] = timing_json(timing, warmup);
     report["gl"] = gl_json(*s.context);
     if (!work.empty()) report["work"] = work_json(work);
+    if (bound) {
+        Json r = Json::object();
+        r["bound_ms"] = bound->bound_ms;
+        r["fastest_bound_ms"] = bound->fastest_bound_ms;
+        r["fraction"] = bound->fraction(timing.median_ms);
+        r["limiter"] = bound->limiter;
+        r["upper_bound"] = bound->upper_bound;
+        report["roofline"] = r;
+    }
     if (counted) {
         Json c = Json::object();
         c["2d"] = static_cast<double>(counted->texture_2d);
@@ -231,8 +244,9 @@ int run_render(Session& s) {
         for (const auto& a : arrays) write_f32_file(data_array_path(png, a.name), a.values);
         std::ofstream out(json_path);
         if (!out || !(out << report.dump(2) << "\n")) throw Error("cannot write '" + json_path + "'");
-        std::printf("%s: wrote %s (%dx%d), median %.2f ms/frame over %d frames\n", s.info.id.c_str(), png.c_str(), width,
-                    height, timing.median_ms, timing.frames);
+        std::printf("%s: wrote %s (%dx%d), median %.2f ms/frame over %d frames%s\n", s.info.id.c_str(), png.c_str(), width,
+                    height, timing.median_ms, timing.frames,
+                    bound ? (": " + bound->describe(timing.median_ms)).c_str() : "");
         for (const auto& file : debug_images) std::printf("%s: wrote %s\n", s.info.id.c_str(), file.string().c_str());
         for (const auto& a : arrays)
             std::printf("%s: wrote %s (%zu x %d floats)\n", s.info.id.c_str(), data_array_path(png, a.name).string().c_str(),

@@ -79,18 +79,25 @@ std::optional<Ceilings> cached_ceilings(const std::filesystem::path& executable,
 // the fraction of that bound a measured frame time reaches.
 struct Roofline {
     double bound_ms = 0;
+    // The same bound at the fastest round of each benchmark: no frame of this work can take less. The fraction is
+    // reported against the median; only a frame faster than this is impossible, whatever the machine's load.
+    double fastest_bound_ms = 0;
     std::string limiter;          // the resource that bounds the frame (WorkItem::resource)
     std::vector<std::string> unmeasured;  // work whose resource has no ceiling measured
+    // The work was the most the frame can do (FrameWork::upper_bound): the fraction is then at most this, and a frame
+    // faster than the bound says the statement is loose (rays that end early), not that the timing is wrong.
+    bool upper_bound = false;
     double fraction(double measured_ms) const { return measured_ms > 0 ? bound_ms / measured_ms : 0; }
-    // "41% of this device's texture (fragment) ceiling".
+    // "41% of this device's texture (fragment) ceiling"; "at most 41% ..." for an upper bound of the work.
     std::string describe(double measured_ms) const;
 };
 
 // None when no item of the work has a ceiling.
 std::optional<Roofline> roofline(const FrameWork& work, const Ceilings& ceilings);
 
-// Throws gsv::Error when the measured time is below the bound, i.e. the fraction is above 1: the frame ran faster
-// than the device allows, so the timing did not wait for the device (the seed's mistake) or the work is overstated.
+// Throws gsv::Error when the measured time is below the fastest bound: the frame ran faster than the device allows
+// (its fraction is above 1 however the ceilings' rounds are taken), so the timing did not wait for the device (the
+// seed's mistake) or the work is overstated.
 void check_within_ceiling(const Roofline& bound, double measured_ms, const std::string& what);
 
 }  // namespace gsv

@@ -125,7 +125,9 @@ public:
     // advect.comp reads a particle's position and velocity (16 bytes each) and its origin (32: returnIfOutside's
     // arguments), and writes the position, the velocity and, coloured by speed, the colour (16 each). Its
     // integrator looks the velocity up once (Euler), twice (midpoint) or four times (RK4) a step.
-    gsv::FrameWork frame_work(const gsv::Frame&) const override {
+    gsv::FrameWork frame_work(const gsv::Frame& frame) const override {
+        // A window's frame catches up at most kMaxStepsPerFrame steps, or none: what it did is not its settings'.
+        if (frame.interactive) return {};
         const double steps = static_cast<double>(lab05::steps_for(time_.get(), params_.time_step.get()) + 1);
         const double particles = count_.get();
         const bool colored = params_.color_by_speed.get();
