@@ -142,7 +142,7 @@ def plot(rows, renderer, out_dir):
 set bmargin 12
 set rmargin 12
 set output "{os.path.join(out_dir, 'roofline.png')}"
-set title "Each lab's frame as a share of this device's ceiling ({renderer.replace('"', '')})"
+set title "Each lab's frame as a share of this device's ceiling ({renderer.replace('"', '')})\\n<=: the lab states the most its frame can do (streamlines and rays that end early do less)"
 set ylabel "% of the bound the ceilings set"
 set yrange [0:{max(110, 10 + max((100 * r[5] for r in rows if r[5] == r[5]), default=0)):.0f}]
 set style fill solid 0.6
@@ -151,7 +151,6 @@ set xtics rotate by -35 left
 set grid ytics
 unset key
 set arrow from graph 0, first 100 to graph 1, first 100 nohead dt 2 lc rgb "red"
-set label "<=: the lab states the most its frame can do (rays that end early do less)" at graph 0.01, graph 0.95
 plot "{data}" using 0:2:xtic(1) with boxes lc rgb "#4477aa", "" using 0:2:3 with labels offset 0,0.7
 """)
     subprocess.run(["gnuplot", script])
