@@ -2,9 +2,10 @@
 # edition take their labs from (labs/README.md, "Adding a lab"). A lab is a folder solutions/labNN_name/ (in the student
 # edition, which has no solutions/, labs/labNN_name/); its id is labNN. Beside its code and sheet it may hold lab.json,
 # what the kit's lists need to know of it beyond its folder, every key optional:
-#   needs_gl  the desktop OpenGL version it needs: "4.1" (the default, macOS's) or "4.3" (the tests that run it carry
-#             the label gl43, and the full-marks test for macOS's 4.1 leaves it out); LabInfo::needs in lab.cpp says
-#             the same to the lab app
+#   needs_gl  the desktop OpenGL version every TODO of it runs on: "4.1" (the default, macOS's) or "4.3" (the tests
+#             that run it carry the label gl43, and the full-marks test for macOS's 4.1 leaves it out). LabInfo::needs
+#             in lab.cpp is what the lab app runs on at all: lab 05 says 4.1 there, its dispatch (L05-T2) left unrun
+#             below 4.3 (LabInfo::uses)
 #   data      the folders of data/ it reads (its web page fetches those packages; cmake/web.cmake)
 #   window    options of its window test under Xvfb (tests/CMakeLists.txt)
 #   sweeps    its sweeps, each {"name", "options", "why"}: the one named after the lab is its accuracy sweep

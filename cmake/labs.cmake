@@ -30,8 +30,12 @@ endif()
 # The lab's known C++ mistakes in one build, <id>_mistakes (tools/known_mistake_switch.cpp): the reference with each C++
 # TODO block switched at run time, so the grader's diagnosis renders each mistake's pictures with GSV_KNOWN_MISTAKE set
 # (grader/src/grade/mistake_pictures.cpp). Only where the instructor's lists are (tests/mutants/<id>.json, so not in the
-# student edition) and they hold C++ mistakes.
+# student edition) and they hold C++ mistakes. Not in a cross-build (Windows with mingw-w64): its sources are written by
+# gsv-make-starters, a program of that build the host cannot run, and the grader that uses them is Linux's.
 function(gsv_add_lab_mistakes id dir)
+  if(CMAKE_CROSSCOMPILING)
+    return()
+  endif()
   set(list ${PROJECT_SOURCE_DIR}/tests/mutants/${id}.json)
   if(NOT "solution" IN_LIST GSV_LAB_VARIANTS OR NOT EXISTS ${list} OR NOT EXISTS ${GSV_LABS_ROOT}/solutions/${dir})
     return()
@@ -97,10 +101,11 @@ function(gsv_add_lab id dir)
     if(COMMAND gsv_warnings)
       gsv_warnings(${target})
     endif()
-    # The reference also measures against the instructor's CPU yardsticks (reference/): its own measuring code in
-    # reference/<dir>/ (which includes the lab's headers) and gsv_reference. Neither exists in the student
-    # edition or the grader's submission build; there the lab compiles without GSV_HAVE_REFERENCE.
-    if(variant STREQUAL "solution" AND TARGET gsv_reference)
+    # The reference's sweeps follow the instructor's sweep plan, reference/<dir>/sweep_plan.cpp (common/app/sweep_plan.h),
+    # with its measuring code beside it (which includes the lab's headers, its SweepView among them) and the CPU
+    # yardsticks of gsv_reference. None of it is in the student edition or the grader's submission build; there, and
+    # for a lab with no plan, the lab's sweeps take the default plan (GSV_HAVE_REFERENCE undefined, common/app/app.h).
+    if(variant STREQUAL "solution" AND TARGET gsv_reference AND EXISTS ${PROJECT_SOURCE_DIR}/reference/${dir}/sweep_plan.cpp)
       file(GLOB reference_sources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/reference/${dir}/*.cpp)
       target_sources(${target} PRIVATE ${reference_sources})
       target_include_directories(${target} PRIVATE ${GSV_LABS_ROOT}/${src})

@@ -220,7 +220,11 @@ scripts/kit grade --todo L01-T3    # build one lab and self-check one TODO's cas
 ```
 
 `scripts/kit grade --labs lab02` self-checks one lab. On macOS and Windows, `scripts/setup.sh` prints the Homebrew
-and vcpkg equivalents; then `cmake --preset default && cmake --build --preset default`.
+and vcpkg equivalents; then `cmake --preset default && cmake --build --preset default`. On Windows without a
+compiler, the labs also come as a zip your instructor makes (`scripts/kit windows` on Debian): unpacked anywhere,
+`lab01.exe` runs the lab, `lab01.exe compare --case phong` checks a case against its golden image, and your shaders
+are in its `gsv-assets\labs\` (its `README.txt` says more). Or do the labs in the browser edition, with nothing to
+install.
 
 ## Your work
 
@@ -268,12 +272,15 @@ the grader uses its own); `shaders/` shared GLSL; `data/` meshes and data sets (
 the kit's conventions for names and GLSL.
 EOF
 
-# The lab sheets as a student reads them: nothing that points at the reference or the test suite.
+# The lab sheets as a student reads them: nothing that points at the reference or the test suite. The instructor's
+# rows (where the answers, tests and sweep plan are) are a section of their own, "## For the instructor", left out
+# whole, from its heading to the next section of the same level or the end.
 for sheet in "$dest_abs"/labs/*/README.md; do
   [ -f "$sheet" ] || continue
-  sed -i -e "/instructor's kit/d" \
-         -e '/^| your code | /d' \
-         -e 's/ and `build\/bin\/\(lab[0-9]*\)_solution` for the reference//' \
+  awk '/^## For the instructor$/ { skip = 1; next } skip && /^##? / { skip = 0 } skip { next }
+       /^$/ { blank++; next } { for (; blank > 0; blank--) print ""; print }' "$sheet" >"$sheet.tmp" &&
+    mv "$sheet.tmp" "$sheet"
+  sed -i -e 's/ and `build\/bin\/\(lab[0-9]*\)_solution` for the reference//' \
          -e 's/\(lab[0-9][0-9]\)_solution/\1/g' \
          -e 's/`*tests\/test_[a-z0-9_]*\.cpp`*\(, `*tests\/test_[a-z0-9_]*\.cpp`*\)*/the kit'"'"'s tests/g' \
          "$sheet"

@@ -3,9 +3,10 @@
 # of the labs' domain code (support/), the labs, their solutions or the grader; support/ knows nothing of the
 # labs (their files' names included) or the grader. Neither knows the instructor's yardsticks in reference/, nor do the grader and the tools
 # (all four ship in the student edition, which has no reference/); reference/ builds on common/ and support/, and
-# a lab includes it only under #ifdef GSV_HAVE_REFERENCE (its solution build), so the starters, the student
-# edition and the grader's submission build compile without it. Prints every breach and exits 1, so a newcomer's
-# shortcut is caught where it is made.
+# a lab never names it: its sweep plan, reference/<lab dir>/sweep_plan.cpp, reaches the lab through the lab's
+# sweep_view.h, and only the solution target links it, so the starters, the student edition and the grader's
+# submission build compile without it and a student's file holds no #ifdef for it. Prints every breach and exits 1,
+# so a newcomer's shortcut is caught where it is made.
 set -euo pipefail
 cd "${1:-$(dirname "$0")/..}"
 fail=0
@@ -28,15 +29,10 @@ if [ -d reference ]; then
   upward=$(grep -rnE '#include "(labs|solutions|grader|tests)/' reference || true)
   [ -z "$upward" ] || breach "reference/ includes lab, grader or test code by path (a lab's own headers are found by name):"$'\n'"$upward"
 fi
-# In a lab, every #include "reference/..." sits inside #ifdef GSV_HAVE_REFERENCE ... #endif.
-unguarded=$(find solutions labs -type f \( -name '*.cpp' -o -name '*.h' \) -exec awk '
-  /^[ \t]*#[ \t]*if/ { depth++; guarded[depth] = ($0 ~ /^[ \t]*#[ \t]*ifdef[ \t]+GSV_HAVE_REFERENCE/) }
-  /^[ \t]*#[ \t]*endif/ { depth-- }
-  /^[ \t]*#[ \t]*include[ \t]+"reference\// {
-    ok = 0; for (d = 1; d <= depth; d++) if (guarded[d]) ok = 1
-    if (!ok) print FILENAME ":" FNR ": " $0
-  }' {} + || true)
-[ -z "$unguarded" ] || breach "a lab includes reference/ outside #ifdef GSV_HAVE_REFERENCE:"$'\n'"$unguarded"
+# A lab names neither reference/ nor the switch its solution build links it with: no #include "reference/...", no
+# GSV_HAVE_REFERENCE.
+named=$(grep -rnE '#[ \t]*include[ \t]+"reference/|GSV_HAVE_REFERENCE' solutions labs --include='*.cpp' --include='*.h' || true)
+[ -z "$named" ] || breach "a lab names the instructor's reference/ (its sweep plan goes in reference/<lab dir>/sweep_plan.cpp):"$'\n'"$named"
 
 # Floors (CONTRIBUTING.md, "Floors"): within common/ and within grader/src/ a folder includes only its own folder and
 # those on the floors below it, so the shared words stand on the ground floor and nothing low reaches up, or sideways,

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The floor check of tests/check_layout.sh can fail: in a copy of the kit's code and CONTRIBUTING.md it passes, and each
 # breach planted in the copy (an include upward, one sideways, in common/ and in grader/src/; a folder on no floor; a
-# floor whose folder is gone) fails it with a line naming the breach. Without this, a check that had stopped reading
+# floor whose folder is gone; a lab that names reference/) fails it with a line naming the breach. Without this, a check that had stopped reading
 # the floors would pass on every tree.
 set -euo pipefail
 kit=$(cd "${1:-$(dirname "$0")/..}" && pwd)
@@ -60,6 +60,9 @@ expect "a folder on no floor" "on no floor of CONTRIBUTING.md (put each on one):
 copy
 rm -r "$scratch/kit/common/timing"
 expect "a floor whose folder is gone" "name folders it has not got: timing"
+copy
+printf '#ifdef GSV_HAVE_REFERENCE\n#include "reference/lab02_lic/exact_lic_images.h"\n#endif\n' >>"$scratch/kit/solutions/lab02_lic/lab.cpp"
+expect "a lab naming reference/ behind its switch" "solutions/lab02_lic/lab.cpp:"
 copy
 sed -i 's/^`grader\/src\/`, from the ground up:$/The grader'"'"'s floors:/' "$scratch/kit/CONTRIBUTING.md"
 expect "no floors written" "CONTRIBUTING.md lists no floors of grader/src/"

@@ -44,7 +44,9 @@ grep -q "^scripts/kit grade  " "$kit/README.md" || fail "the export's README doe
 grep -q "^scripts/kit grade --todo L01-T3" "$kit/README.md" || fail "the export's README does not give the per-TODO check"
 ! grep -q "scripts/kit test" "$kit/README.md" || fail "the export's README names 'scripts/kit test', which it cannot run"
 # Lab sheets and decks that point at nothing the edition lacks.
-if grep -n "_solution\|tests/test_\|solutions/" "$kit"/labs/*/README.md; then fail "a lab sheet points at the reference or the tests (above)"; fi
+if grep -n "_solution\|tests/test_\|solutions/\|^## For the instructor\|: its answer |" "$kit"/labs/*/README.md; then
+  fail "a lab sheet points at the reference or the tests, or keeps the instructor's section (above)"
+fi
 python3 - "$kit" <<'PY' || fail "a deck embeds a figure the edition has not got (above)"
 import os, re, sys
 root = sys.argv[1]

@@ -146,6 +146,17 @@ TEST_CASE("cases: a malformed spec or case file names the file and what is wrong
     CHECK(test::gsv_error_message([&] { load_lab_cases(es_case("es-desktop.json", "4.1")); })
               .find("es-desktop.json: case 'a': \"es\": GL version '4.1' is out of range [3.0, 3.2] for the es profile") !=
           std::string::npos);
+    // A case's "feature" is a row of common/gl/gl_features.h by its key: compute lifts the case to ES 3.1, as "es" does;
+    // an unknown one names the file, the case and the value.
+    const auto feature_case = [&](const std::string& name, const std::string& feature) {
+        return dir.write(name, R"({"lab": "lab01", "size": "8x8", )" + tolerance +
+                                   R"(, "cases": [{"name": "a", "todo": "L01-T1", "settings": [], "feature": ")" + feature + R"("}]})");
+    };
+    const GradeCase compute = load_lab_cases(feature_case("feature-ok.json", "compute")).cases.at(0);
+    CHECK(compute.feature == &gl_feature::kCompute);
+    CHECK(compute.es_version == GlVersion{3, 1});
+    CHECK(test::gsv_error_message([&] { load_lab_cases(feature_case("feature-bad.json", "raytracing")); })
+              .find("feature-bad.json: case 'a': \"feature\": 'raytracing' is no feature the kit knows") != std::string::npos);
     // The page's opening case must be one of the file's cases.
     const auto page_case = dir.write("page.json", R"({"lab": "lab01", "size": "8x8", "page_case": "b", )" + tolerance +
                                                       R"(, "cases": [{"name": "a", "todo": "L01-T1", "settings": []}]})");

@@ -120,6 +120,22 @@ TEST_CASE("lab04: the starter paints the terrain magenta until the height colour
     CHECK(test::not_done_pixels(image) > image.width * image.height / 4);
 }
 
+TEST_CASE("lab04: the starter sweeps with the default plan, the knob's last value, and says it has none", "[lab][lab04]") {
+    // The sweep plan (reference/lab04_terrain/sweep_plan.cpp) is linked into lab04_solution only: the starter's sweep
+    // has the images' errors and times, no normals' columns, against delta=1 as the last value swept.
+    test::TempDir dir;
+    const auto run = test::run_lab("lab04", {"sweep", "--size", "32x24", "--frames", "1", "--warmup", "0", "--out-dir",
+                                             dir.path().string()},
+                                   dir.path());
+    INFO(run.process.output);
+    REQUIRE(run.exit_code() == 0);
+    const auto lines = test::lines_of(test::read_text(dir.path("lab04-sweep.csv")));
+    REQUIRE(lines.size() == 6);
+    CHECK(lines[0].find("normal_err") == std::string::npos);
+    CHECK(run.process.output.find("error against delta=1 (the last value swept; not shown converged: this build has no "
+                                  "sweep plan") != std::string::npos);
+}
+
 TEST_CASE("sweep --knob sweeps any parameter through the values given, and refuses bad ones with status 2", "[lab][lab04]") {
     test::TempDir dir;
     const auto run = test::run_lab("lab04_solution", {"sweep", "--size", "64x48", "--frames", "1", "--warmup", "0",

@@ -23,7 +23,7 @@ namespace {
 using test::all_labs;
 
 // The lowest ES version each lab declares (LabInfo::needs_es): the WebGL 2 feature set, lab 05 too (transform feedback
-// steps its particles there; its cases of compute's own TODO, L05-T2, say "es": "3.1").
+// steps its particles there; its cases of compute's own TODO, L05-T2, say "feature": "compute", which lifts them to 3.1).
 std::string declared_es_version(const std::string&) { return "3.0"; }
 
 Image must_render(const test::LabRun& run) {

@@ -25,7 +25,13 @@ rm -rf "$out" && mkdir -p "$out/kit/$(dirname "$lab_dir")"
 # A private copy of the kit's files, so the test can break a shader without touching the tree.
 cp -r "$root/shaders" "$root/data" "$out/kit/"
 cp -r "$root/$lab_dir" "$out/kit/$lab_dir"
-victim=$(ls "$out/kit/$lab_dir"/*.frag | head -1)
+# The victim: the first fragment shader the lab's own C++ loads (a shader only its sweep plan draws with, in reference/,
+# is never built by the window).
+victim=""
+for frag in "$out/kit/$lab_dir"/*.frag; do
+  grep -qF "\"$(basename "$frag")\"" "$out/kit/$lab_dir"/*.cpp && { victim=$frag; break; }
+done
+[ -n "$victim" ] || { echo "window_xvfb: no fragment shader of $lab_dir is named in its C++ to break"; exit 1; }
 cd "$out"
 export GSV_ROOT="$out/kit"
 # Frames: 3 the picture with its panel (own.png), 5 hide, 7 the picture alone (screenshot-1), 8 show again,

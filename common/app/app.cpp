@@ -92,10 +92,13 @@ void Session::open(Backend backend, int extra_width) {
     // Desktop: at least macOS's 4.1; ES: the lab's own lowest version, so a lab that says 3.0 is held to 3.0.
     const GlVersion least = options.profile == Profile::Es ? GlVersion{3, 0} : GlVersion{4, 1};
     context_options.version = options.gl.value_or(needs < least ? least : needs);
+    if (!options.gl && options.profile != Profile::Es) context_options.up_to = info.uses;
     context_options.width = options.width + extra_width;
     context_options.height = options.height;
     context_options.title = title();
     context_options.keep_display = keep_display;
+    // Only window mode shows its window: a headless mode on the window backend draws in a hidden one.
+    context_options.visible = options.mode == RunMode::Window;
     try {
         context = create_context(context_options);
     } catch (const UnsupportedError& e) {
@@ -112,6 +115,17 @@ void Session::open(Backend backend, int extra_width) {
                                                            " has; this context is " + api_name(options.profile, kit->gl_version()));
     lab->setup(*kit);
     compiled_defines_ = param_defines(params);
+}
+
+Backend Session::headless_backend() {
+    if (options.backend) return *options.backend;
+    if (is_compiled(Backend::Egl)) return Backend::Egl;
+    if (!told_hidden_window) {
+        std::fprintf(stderr, "%s: no EGL in this build (Windows, macOS): drawing headless in a hidden window\n",
+                     info.id.c_str());
+        told_hidden_window = true;
+    }
+    return Backend::Window;
 }
 
 const Assets& Session::find_assets() {
@@ -175,9 +189,10 @@ std::optional<std::string> Session::sync_params() {
 
 static void print_list(Session& s) {
     const std::vector<RenderCase>& cases = s.named_cases();
-    std::printf("%s: %s (%s), needs OpenGL %s (%s) or OpenGL ES %s (%s)\nparameters:\n%s", s.info.id.c_str(),
+    const std::string uses = s.info.uses ? ", takes OpenGL " + s.info.uses->str() + "'s where the driver offers it" : "";
+    std::printf("%s: %s (%s), needs OpenGL %s (%s%s) or OpenGL ES %s (%s)\nparameters:\n%s", s.info.id.c_str(),
                 s.info.title.c_str(), s.variant.c_str(), s.info.needs.str().c_str(), s.info.needs_why.c_str(),
-                s.info.needs_es.str().c_str(), s.info.needs_es_why.c_str(), s.params.describe().c_str());
+                uses.c_str(), s.info.needs_es.str().c_str(), s.info.needs_es_why.c_str(), s.params.describe().c_str());
     // The work of a frame at the size asked for (--size), with the settings asked for (--set, --case): from the
     // lab's own loop structure, so that a frame time can be held against what the device allows (scripts/kit bench).
     const Frame frame{s.options.width, s.options.height, 0.0};
@@ -228,13 +243,15 @@ int with_exit_status(const Session& session, const std::string& stage, const std
     }
 }
 
-int run_lab(const LabFactory& make_lab, const char* lab_dir, const char* variant, int argc, const char* const* argv) {
+int run_lab(const LabFactory& make_lab, const char* lab_dir, const char* variant, int argc, const char* const* argv,
+            const SweepPlanFactory& make_sweep_plan) {
     // On the heap: web mode hands it to the page, which draws with it after main() has returned.
     auto owned = std::make_unique<Session>();
     Session& session = *owned;
     std::string stage = "command line";
     return with_exit_status(session, stage, [&]() -> int {
         start_session(session, make_lab(), lab_dir, variant, Assets::executable_path(argc > 0 ? argv[0] : nullptr));
+        session.make_sweep_plan = make_sweep_plan;
         try {
             session.options = parse_cli(argc, argv);
             // Served, each case brings its own settings: the command line's are not the cases'.

@@ -7,6 +7,7 @@
 #include "common/params/case_file.h"
 #include "common/app/depth_readback.h"
 #include "common/app/exit_status.h"
+#include "common/app/sweep_plan.h"
 #include "common/window/inspect_stage.h"
 #include "common/params/params.h"
 #include "common/context/context.h"
@@ -34,6 +35,10 @@ struct LabInfo {
     std::string title;            // "GLSL basics and Gooch shading"
     GlVersion needs{4, 1};        // labs other than 05 run on macOS's 4.1 core
     std::string needs_why = "the kit's baseline";
+    // A desktop version above `needs` whose features the lab takes where the driver offers them, and does without
+    // below it (lab 05: 4.3's compute shaders, transform feedback on macOS's 4.1). The run holds to it, not to `needs`,
+    // unless --gl says otherwise. None: the lab holds to `needs`.
+    std::optional<GlVersion> uses{};
     // Its named cases, relative to the kit's root; empty: the public case file (KitLayout::case_file).
     std::string case_file{};
     // The lowest OpenGL ES version it runs on with --profile es: 3.0 is WebGL 2's feature set.
@@ -53,10 +58,10 @@ struct Frame {
     float aspect() const { return height > 0 ? static_cast<float>(width) / static_cast<float>(height) : 1.0f; }
 };
 
-using SweepMetrics = std::vector<std::pair<std::string, double>>;
-
 class LabKit;
 
+// What a student's lab implements. What its sweeps measure it against is not here: that is the instructor's, its sweep
+// plan (common/app/sweep_plan.h, reference/<lab dir>/sweep_plan.cpp).
 class Lab {
 public:
     virtual ~Lab() = default;
@@ -67,25 +72,6 @@ public:
     // A parameter changed (window keys, the next sweep point or animation frame): rebuild what depends on it,
     // e.g. a mesh.
     virtual void params_changed(LabKit&) {}
-    // The settings of the reference a sweep measures error against; empty: the knob's last value.
-    virtual std::vector<std::string> sweep_reference() const { return {}; }
-    // That reference in words, for the table, the CSV and the slides ("LIC along the exact streamlines, in double
-    // precision on the CPU"); empty: its settings, said to be the most accurate setting.
-    virtual std::string sweep_reference_name() const { return {}; }
-    // The next refinement of sweep_reference(), to show it converged: the sweep draws both and reports whether their
-    // difference is below the smallest error it measured. Empty: exact, or no claim.
-    virtual std::vector<std::string> sweep_reference_refinement() const { return {}; }
-    // An exact reference image for the current settings, drawn by the lab itself (on the CPU, in double): the sweep's
-    // error is then against it rather than against a rendered sweep_reference(). None: not available.
-    virtual std::optional<Image> sweep_exact_image(LabKit&, const Frame&) { return std::nullopt; }
-    // True: each curve of the series is measured against the reference drawn with its own series value
-    // (lab 06: an isosurface against an isosurface, not against DVR). False: one reference for all curves.
-    virtual bool sweep_reference_per_series() const { return false; }
-    // Lab-specific error columns for a sweep, measured at the current settings.
-    virtual SweepMetrics sweep_metrics(LabKit&, const Frame&) { return {}; }
-    // The error the sweep's plot shows: one of sweep_metrics' columns, where the image's RMSE against the
-    // reference says little (lab 05: particles restart at times that depend on the step); empty: the RMSE.
-    virtual std::string sweep_error_column() const { return {}; }
     // What a frame with the current settings asks of the device (common/timing/frame_work.h): texture fetches by
     // format, storage bytes, fragments, arithmetic, counted from the lab's own loops; shown by `list`, in sweeps and
     // against the device's ceilings. Empty: not stated.
@@ -146,12 +132,19 @@ public:
 
     // An interactive frame that did only part of what its values ask (lab 05 catches its simulation up a few steps a
     // frame): the page, which draws only on a change, draws again until the lab stops asking (the window draws on).
-    void ask_for_another_frame() { another_frame_ = true; }
+    // `progress` says how far the picture has got ("catching up: step 12 of 40"), shown while it is behind.
+    void ask_for_another_frame(std::string progress = {}) {
+        another_frame_ = true;
+        progress_ = std::move(progress);
+    }
     bool take_another_frame_request() {
         const bool asked = another_frame_;
         another_frame_ = false;
+        if (!asked) progress_.clear();
         return asked;
     }
+    // The progress the last frame that asked for another gave; empty once a frame did all its work.
+    const std::string& progress() const { return progress_; }
 
 private:
     Context& context_;
@@ -161,6 +154,7 @@ private:
     ShaderLibrary shaders_;
     DepthReadback depth_readback_;
     bool another_frame_ = false;
+    std::string progress_;
 };
 
 // Declares the camera parameters (camera_yaw, camera_pitch, camera_distance) that window mode drives with
@@ -172,13 +166,26 @@ OrbitCamera orbit_camera(const Params& params);
 
 // Makes the lab anew: `render --serve` starts each case from a lab object of its own.
 using LabFactory = std::function<std::unique_ptr<Lab>()>;
+// Makes the plan a sweep measures the lab with (common/app/sweep_plan.h); none: the default plan.
+using SweepPlanFactory = std::function<std::unique_ptr<SweepPlan>(Lab&)>;
 
-int run_lab(const LabFactory& make_lab, const char* lab_dir, const char* variant, int argc, const char* const* argv);
+int run_lab(const LabFactory& make_lab, const char* lab_dir, const char* variant, int argc, const char* const* argv,
+            const SweepPlanFactory& make_sweep_plan = {});
 
 #ifdef GSV_LAB_DIR  // defined for lab executables by cmake/labs.cmake
+#ifdef GSV_HAVE_REFERENCE
+// The lab's sweep plan, reference/<lab dir>/sweep_plan.cpp: linked, and GSV_HAVE_REFERENCE defined, only in a solution
+// target where the instructor's reference/ is (cmake/labs.cmake). Elsewhere sweeps take the default plan.
+std::unique_ptr<SweepPlan> make_lab_sweep_plan(Lab& lab);
+#endif
 template <class L>
 int run_lab(int argc, char** argv) {
-    return run_lab([] { return std::unique_ptr<Lab>(std::make_unique<L>()); }, GSV_LAB_DIR, GSV_LAB_VARIANT, argc, argv);
+    SweepPlanFactory make_sweep_plan;
+#ifdef GSV_HAVE_REFERENCE
+    make_sweep_plan = make_lab_sweep_plan;
+#endif
+    return run_lab([] { return std::unique_ptr<Lab>(std::make_unique<L>()); }, GSV_LAB_DIR, GSV_LAB_VARIANT, argc, argv,
+                   make_sweep_plan);
 }
 #endif
 

@@ -45,7 +45,7 @@ int run_animate(Session& s) {
     const Axis axis = animation_axis(s);
     const std::filesystem::path dir = s.options.out_dir.empty() ? "animate-" + s.info.id : s.options.out_dir;
     prepare_output_folder(dir, "--out-dir");
-    s.open(s.options.backend.value_or(Backend::Egl));
+    s.open(s.headless_backend());
     const int width = s.options.width, height = s.options.height, count = s.options.count;
     Framebuffer target = frame_target(s, width, height);
     const Frame frame{width, height, 0.0};

@@ -34,7 +34,7 @@ int run_compare(Session& s) {
     }
     const int width = s.options.width, height = s.options.height;
 
-    s.open(s.options.backend.value_or(Backend::Egl));
+    s.open(s.headless_backend());
     if (auto error = s.sync_params()) throw Error(*error);
     Framebuffer target = frame_target(s, width, height);
     target.bind();

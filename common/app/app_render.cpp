@@ -155,8 +155,7 @@ int run_render(Session& s) {
         prepare_output_file(png, "--out");
         prepare_output_file(json_path, "--json");
     }
-    const Backend backend = s.options.backend.value_or(Backend::Egl);
-    s.open(backend);
+    s.open(s.headless_backend());
     if (auto error = s.sync_params()) throw Error(*error);
 
     const int width = s.options.width, height = s.options.height;

@@ -18,6 +18,7 @@ struct Session {
     Session() = default;
     ~Session();  // the lab's GL objects go before the context that owns them
     std::unique_ptr<Lab> lab;
+    SweepPlanFactory make_sweep_plan;  // the instructor's (reference/), in a solution build; else none: the default plan
     LabInfo info;
     std::string variant;  // "starter" or "solution"
     CliOptions options;
@@ -33,10 +34,14 @@ struct Session {
     std::unique_ptr<LabKit> kit;
     bool told_no_float_target = false;  // frame_target said once that frames render into RGBA8
     bool keep_display = false;          // the EGL display outlives this session's context (render --serve)
+    bool told_hidden_window = false;    // headless_backend said once that a hidden window stands in for EGL
 
     // Creates the context, checks the lab's GL needs, builds the kit and runs lab->setup. A window is
     // `extra_width` wider than --size says (the panel's column beside the picture).
     void open(Backend backend, int extra_width = 0);
+    // The backend a headless mode (render, sweep, animate, compare) draws with: --backend's, else EGL, else, where EGL
+    // is not compiled in (Windows, macOS), a hidden window, said once on stderr.
+    Backend headless_backend();
     // Finds the kit's files (once): the lab's folder, shaders/, data/ and its case file.
     const Assets& find_assets();
     // The cases of the lab's case file, each checked against the declared parameters. Throws gsv::Error naming the

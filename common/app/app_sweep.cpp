@@ -1,7 +1,9 @@
 // Sweep mode: what accuracy costs in time. Steps the lab's accuracy knob; measures each setting's error against the
-// lab's reference (exact where the lab draws one, else a rendered one, named and checked for convergence); then times
+// reference its sweep plan names (exact where a yardstick draws one, else a rendered one, named and checked for
+// convergence); then times
 // every setting interleaved with the others; prints a table and writes a CSV, a Markdown table and plots.
 #include "common/app/app_session.h"
+#include "common/app/sweep_plan.h"
 #include "common/app/sweep_report.h"
 #include "common/core/number_text.h"
 #include "common/core/progress.h"
@@ -53,27 +55,27 @@ void check_sweep_command(const Session& s) { sweep_axis(s); }
 namespace {
 
 // What is swept: the knob's values, on each curve of the lab's series (or one curve), written where --out-dir says.
-struct SweepPlan {
+struct SweepScope {
     SweepAxis axis;
     std::string series_name;                  // empty: one curve
     std::vector<std::string> series_values{""};
     std::filesystem::path dir;
 };
 
-SweepPlan plan_sweep(Session& s) {
-    SweepPlan plan;
-    plan.axis = sweep_axis(s);
-    s.params.check_applies({plan.axis.name}, "sweep: the swept parameter ");
-    plan.dir = s.options.out_dir.empty() ? "sweep-" + s.info.id : s.options.out_dir;
-    prepare_output_folder(plan.dir, "--out-dir");
+SweepScope scope_sweep(Session& s) {
+    SweepScope scope;
+    scope.axis = sweep_axis(s);
+    s.params.check_applies({scope.axis.name}, "sweep: the swept parameter ");
+    scope.dir = s.options.out_dir.empty() ? "sweep-" + s.info.id : s.options.out_dir;
+    prepare_output_folder(scope.dir, "--out-dir");
     if (const ParamSpec* series = s.params.series()) {
-        plan.series_name = series->name;
-        plan.series_values = series->choices;
+        scope.series_name = series->name;
+        scope.series_values = series->choices;
         // `--set integrator=rk4` asks for one curve, not all of them.
         for (const auto& assignment : s.options.assignments)
-            if (assignment.rfind(plan.series_name + "=", 0) == 0) plan.series_values = {s.params.get_text(plan.series_name)};
+            if (assignment.rfind(scope.series_name + "=", 0) == 0) scope.series_values = {s.params.get_text(scope.series_name)};
     }
-    return plan;
+    return scope;
 }
 
 std::string point_name(const std::vector<std::string>& settings) {
@@ -86,10 +88,10 @@ std::string point_name(const std::vector<std::string>& settings) {
 // convergence shown where the lab says how to refine it), then every point timed, interleaved with the others.
 class SweepRun {
 public:
-    SweepRun(Session& s, const SweepPlan& plan)
-        : s_(s), plan_(plan), knob_name_(plan.axis.name), knob_values_(plan.axis.values), series_name_(plan.series_name),
-          series_values_(plan.series_values) {
-        s.open(s.options.backend.value_or(Backend::Egl));
+    SweepRun(Session& s, const SweepScope& scope, SweepPlan& lab_plan)
+        : s_(s), scope_(scope), lab_plan_(lab_plan), knob_name_(scope.axis.name), knob_values_(scope.axis.values), series_name_(scope.series_name),
+          series_values_(scope.series_values) {
+        s.open(s.headless_backend());
         target_ = Framebuffer(s.options.width, s.options.height, ColorFormat::RGBA8);
         frame_ = Frame{s.options.width, s.options.height, 0.0};
         warmup_ = s.options.warmup >= 0 ? s.options.warmup : 2;
@@ -100,10 +102,10 @@ public:
         base_ = s.params;
 
         // The lab's reference belongs to its own knob; another knob converges at its last value.
-        if (plan.axis.lab_knob) reference_settings_ = s.lab->sweep_reference();
+        if (scope.axis.lab_knob) reference_settings_ = lab_plan.reference();
         if (reference_settings_.empty()) reference_settings_.push_back(knob_name_ + "=" + knob_values_.back());
         // One reference, or one per series value, drawn when first needed: not at all where the lab draws exact ones.
-        per_series_ = s.lab->sweep_reference_per_series() && !series_name_.empty();
+        per_series_ = lab_plan.reference_per_series() && !series_name_.empty();
         references_.resize(per_series_ ? series_values_.size() : 1);
 
         report_.lab = s.info.id;
@@ -114,7 +116,7 @@ public:
         report_.gl = s.context->describe();
         report_.width = s.options.width;
         report_.height = s.options.height;
-        report_.plotted_error = s.lab->sweep_error_column();
+        report_.plotted_error = lab_plan.error_column();
         // This device's ceilings, where gsv-ceilings has measured them (never measured here: a sweep times the lab).
         ceilings_ = cached_ceilings(s.executable, s.context->info().renderer);
 
@@ -131,18 +133,20 @@ public:
 
     // The reference in words, and whether it is shown to be converged.
     void name_reference() {
-        const std::string named = plan_.axis.lab_knob ? s_.lab->sweep_reference_name() : std::string();
+        const std::string named = scope_.axis.lab_knob ? lab_plan_.reference_name() : std::string();
         const std::string joined = point_name(reference_settings_);
         if (exact_) {
-            report_.reference_name = named.empty() ? "an exact image the lab draws" : named;
+            report_.reference_name = named.empty() ? "an exact image the sweep plan draws" : named;
             return;
         }
-        const bool lab_reference = plan_.axis.lab_knob && !s_.lab->sweep_reference().empty();
+        const bool lab_reference = scope_.axis.lab_knob && !lab_plan_.reference().empty();
         report_.reference_name = !named.empty()   ? named + " (" + joined + ")"
                                  : lab_reference ? joined
-                                                 : joined + " (the last value swept; not shown converged)";
+                                 : s_.make_sweep_plan ? joined + " (the last value swept; not shown converged)"
+                                                      : joined + " (the last value swept; not shown converged: this build has no "
+                                                                 "sweep plan, the instructor's reference/)";
         const std::vector<std::string> refinement =
-            plan_.axis.lab_knob ? s_.lab->sweep_reference_refinement() : std::vector<std::string>{};
+            scope_.axis.lab_knob ? lab_plan_.refinement() : std::vector<std::string>{};
         if (!refinement.empty()) show_convergence(refinement);
     }
 
@@ -177,7 +181,7 @@ public:
 
     int write() {
         std::printf("%s", report_.table().c_str());
-        const auto files = report_.write(plan_.dir);
+        const auto files = report_.write(scope_.dir);
         for (const auto& f : files) std::printf("wrote %s\n", f.c_str());
         return kExitOk;
     }
@@ -208,7 +212,7 @@ private:
         return *reference;
     }
 
-    // What one point draws, and how far it is from the reference (an exact image of the lab's, or the curve's).
+    // What one point draws, and how far it is from the reference (an exact image of the plan's, or the curve's).
     void measure_error(std::size_t curve, const std::string& knob_value) {
         const std::string& series_value = series_values_[curve];
         std::vector<std::string> settings{knob_name_ + "=" + knob_value};
@@ -228,12 +232,12 @@ private:
             return;
         }
         const std::optional<Image> exact_image =
-            plan_.axis.lab_knob ? s_.lab->sweep_exact_image(*s_.kit, frame_) : std::nullopt;
+            scope_.axis.lab_knob ? lab_plan_.exact_image(*s_.kit, frame_) : std::nullopt;
         exact_ = exact_ || exact_image.has_value();
         SweepRow row;
         row.series = series_value;
         row.knob = knob_value;
-        row.extra = s_.lab->sweep_metrics(*s_.kit, frame_);  // while this point's settings are current
+        row.extra = lab_plan_.metrics(*s_.kit, frame_);  // while this point's settings are current
         const FrameWork work = s_.lab->frame_work(frame_);
         row.work = work.summary();
         point_work_.push_back(work);
@@ -271,7 +275,8 @@ private:
     }
 
     Session& s_;
-    const SweepPlan& plan_;
+    const SweepScope& scope_;
+    SweepPlan& lab_plan_;
     const std::string knob_name_;
     const std::vector<std::string> knob_values_;
     const std::string series_name_;
@@ -296,8 +301,11 @@ private:
 }  // namespace
 
 int run_sweep(Session& s) {
-    const SweepPlan plan = plan_sweep(s);
-    SweepRun run(s, plan);
+    const SweepScope scope = scope_sweep(s);
+    // The lab's plan where its solution build links one (reference/<lab dir>/sweep_plan.cpp); else the default.
+    const std::unique_ptr<SweepPlan> lab_plan =
+        s.make_sweep_plan ? s.make_sweep_plan(*s.lab) : std::make_unique<SweepPlan>();
+    SweepRun run(s, scope, *lab_plan);
     run.measure_errors();
     run.name_reference();
     run.time_points();

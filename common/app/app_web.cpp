@@ -45,6 +45,8 @@ struct WebPage {
     std::string status;   // the last error, one line, for the page
     double start = 0;
     bool draw_again = false;  // the last frame did part of its work (LabKit::ask_for_another_frame)
+    double last_frame_ms = -1;  // the last timed frame's time (web_draw), -1 before the first
+    double last_timed = -1e9;   // when it was timed, in now_seconds()
 };
 
 WebPage* page = nullptr;
@@ -192,8 +194,10 @@ static void wait_for_gpu(const Framebuffer& target) {
     }
 }
 
-// One frame into the picture, copied onto the canvas. Returns its time in milliseconds, bracketed by waits for the GPU
-// (wait_for_gpu); negative when the frame failed (status).
+// One frame into the picture, copied onto the canvas. Returns the time of the last frame timed, in milliseconds;
+// negative when the frame failed (status). A frame is timed, bracketed by waits for the GPU (wait_for_gpu), at most
+// every kTimedEvery seconds: a wait is a read-back that stalls the browser's GPU process (about 2 ms on llvmpipe), and
+// bracketing every frame of a drag or an animation with two of them slowed the page's frames to half their speed.
 double web_draw() {
     if (!page) return -1;
     WebPage& p = *page;
@@ -201,20 +205,25 @@ double web_draw() {
     const int width = s.options.width, height = s.options.height;
     if (p.picture.width() != width || p.picture.height() != height) p.picture = Framebuffer(width, height, ColorFormat::RGBA8);
     try {
+        constexpr double kTimedEvery = 0.5;
         p.picture.bind();
-        wait_for_gpu(p.picture);
+        const bool timed = now_seconds() - p.last_timed >= kTimedEvery;
+        if (timed) wait_for_gpu(p.picture);
         const double t0 = now_seconds();
         s.render_frame(Frame{width, height, t0 - p.start, true});
         p.draw_again = s.kit->take_another_frame_request();
-        wait_for_gpu(p.picture);
-        const double ms = 1000.0 * (now_seconds() - t0);
+        if (timed) {
+            wait_for_gpu(p.picture);
+            p.last_frame_ms = 1000.0 * (now_seconds() - t0);
+            p.last_timed = t0;
+        }
         check_gl_error("drawing the frame");
         p.last_good = s.params;
         Framebuffer::bind_default(width, height);
         glBindFramebuffer(GL_READ_FRAMEBUFFER, p.picture.id());
         glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
         glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-        return ms;
+        return p.last_frame_ms;
     } catch (const std::bad_alloc&) {
         p.status = out_of_memory(p);
         return -1;
@@ -271,6 +280,9 @@ std::string web_status() { return page ? page->status : ""; }
 
 bool web_draw_again() { return page && page->draw_again; }
 
+// While the picture is behind its values (web_draw_again), how far it has got, in the lab's words; else empty.
+std::string web_progress() { return page && page->draw_again ? page->session->kit->progress() : ""; }
+
 EMSCRIPTEN_BINDINGS(gsv_web_page) {
     emscripten::function("describe", &web_describe);
     emscripten::function("states", &web_states);
@@ -283,6 +295,7 @@ EMSCRIPTEN_BINDINGS(gsv_web_page) {
     emscripten::function("status", &web_status);
     emscripten::function("resize", &web_resize);
     emscripten::function("drawAgain", &web_draw_again);
+    emscripten::function("progress", &web_progress);
     emscripten::function("timeFrames", &web_time_frames);
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 // A sweep column with its spread: a time or a ratio goes in as three columns, NAME, NAME_lo and NAME_hi. The
 // table and the Markdown show them as one cell, "median (lo-hi)"; the CSV keeps all three for plots.
-#include "common/app/app.h"
+#include "common/app/sweep_plan.h"
 #include "common/timing/timing.h"
 
 #include <string>

@@ -1,6 +1,7 @@
 #pragma once
 // The accuracy-versus-time table of a sweep: printed, written as CSV, and plotted with gnuplot.
-#include "common/app/app.h"
+#include "common/app/sweep_plan.h"
+#include "common/timing/frame_work.h"
 
 #include <filesystem>
 #include <optional>

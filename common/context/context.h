@@ -5,6 +5,7 @@
 #include "common/gl/gl_version.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,9 @@ struct ContextOptions {
     Backend backend = Backend::Egl;
     Profile profile = Profile::Core;
     GlVersion version{4, 1};
+    // The highest version the kit holds itself to where the driver gives more than `version`; none: `version`. A lab
+    // that takes 4.3's features where offered asks for 4.1 (macOS's) and holds to at most 4.3.
+    std::optional<GlVersion> up_to{};
     int width = 800, height = 600;  // window size; headless runs render into framebuffers of their own size
     std::string title = "gsv";
     bool visible = true;
@@ -31,6 +35,7 @@ struct ContextInfo {
     Backend backend = Backend::Egl;
     Profile profile = Profile::Core;
     GlVersion requested;
+    GlVersion held_to{};  // ContextOptions::up_to, or the version requested
     GlVersion obtained;  // what the driver reports; drivers may give more than was asked for
     std::string renderer, vendor, version_string, glsl_version_string;
 };
@@ -42,7 +47,7 @@ public:
     Context& operator=(const Context&) = delete;
 
     const ContextInfo& info() const { return info_; }
-    // The version the kit holds itself to: the lower of what was asked for and what the driver gave,
+    // The version the kit holds itself to: the lower of what was asked for (or up_to) and what the driver gave,
     // so `--gl 4.1` on a 4.5 driver still compiles `#version 410` shaders, as a Mac would.
     GlVersion effective_version() const;
     // Stops the run with one line when the context cannot do what a lab needs.
@@ -63,6 +68,7 @@ protected:
 std::unique_ptr<Context> create_context(const ContextOptions& options);
 
 std::vector<Backend> compiled_backends();
+bool is_compiled(Backend backend);
 const char* backend_name(Backend backend);
 Backend parse_backend(const std::string& text);   // "window" | "egl" | "osmesa" | "web"; throws naming the value
 Profile parse_profile(const std::string& text);   // "core" | "compat" | "es"

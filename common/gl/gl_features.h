@@ -15,12 +15,14 @@ struct GlFeature {
     // Where a shader can take a stand-in: the kit defines this (to 1) in every shader of a run that lacks the
     // feature, so the GLSL and the C++ (LabKit::allows) decide from the same row. Null: no stand-in, refuse.
     const char* missing_define = nullptr;
+    // What a grading case names it by where it cannot be checked without it ("feature": "compute"); null: no case does.
+    const char* key = nullptr;
 };
 
 namespace gl_feature {
 // Below it lab 05 steps its particles by transform feedback instead (WebGL 2 is OpenGL ES 3.0): its C++ picks the
 // program (LabKit::allows), so no shader needs a define for it.
-inline constexpr GlFeature kCompute{"compute shaders and storage buffers", {4, 3}, {3, 1}};
+inline constexpr GlFeature kCompute{"compute shaders and storage buffers", {4, 3}, {3, 1}, nullptr, "compute"};
 inline constexpr GlFeature kBufferTextures{"buffer textures (samplerBuffer)", {3, 1}, {3, 2}, "GSV_NO_BUFFER_TEXTURES"};
 inline constexpr GlFeature kFragmentPrimitiveId{"gl_PrimitiveID in a fragment shader", {3, 2}, {3, 2},
                                                 "GSV_NO_PRIMITIVE_ID"};
@@ -30,6 +32,13 @@ inline constexpr GlFeature kSamplerArrayIndexing{"an array of samplers indexed b
 
 inline constexpr const GlFeature* kAll[] = {&kCompute, &kBufferTextures, &kFragmentPrimitiveId, &kSamplerArrayIndexing};
 }  // namespace gl_feature
+
+// The feature a case file names by its key ("compute"); null where none has that key.
+inline const GlFeature* gl_feature_keyed(const std::string& key) {
+    for (const GlFeature* feature : gl_feature::kAll)
+        if (feature->key && key == feature->key) return feature;
+    return nullptr;
+}
 
 inline GlVersion first_version_with(const GlFeature& feature, Profile profile) {
     return profile == Profile::Es ? feature.es : feature.desktop;

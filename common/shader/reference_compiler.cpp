@@ -10,6 +10,9 @@
 #endif
 
 namespace gsv {
+// glslangValidator is run through popen and a file made by mkstemps: POSIX only. Elsewhere there is no log, and no
+// helper left unused (a warning, an error under GSV_WERROR).
+#if defined(__unix__) || defined(__APPLE__)
 namespace {
 
 const char* extension(ShaderStage stage) {
@@ -25,6 +28,7 @@ const char* extension(ShaderStage stage) {
 }
 
 }  // namespace
+#endif
 
 std::optional<std::string> reference_compiler_log(const std::string& text, ShaderStage stage) {
 #if defined(__unix__) || defined(__APPLE__)

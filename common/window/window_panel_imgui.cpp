@@ -8,8 +8,14 @@
 #include "common/window/window_panel.h"
 
 #include <GLFW/glfw3.h>
+// Debian's libimgui-dev keeps the bindings in backends/; vcpkg's port puts them beside imgui.h.
+#if __has_include(<backends/imgui_impl_glfw.h>)
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
+#else
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+#endif
 #include <imgui.h>
 
 #include <algorithm>

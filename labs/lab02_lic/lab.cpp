@@ -16,9 +16,7 @@
 #include "support/flow/lic_view_params.h"
 #include "support/flow/moving_frame.h"
 #include "support/flow/noise.h"
-#ifdef GSV_HAVE_REFERENCE
-#include "reference/lab02_lic/exact_lic_images.h"  // the instructor's exact LIC (cmake/labs.cmake)
-#endif
+#include "sweep_view.h"
 
 #include <algorithm>
 #include <optional>
@@ -35,7 +33,7 @@ using FieldChoice = gsv::OneOf<gsv::FlowKind, Field>;
 enum class Input { Noise, Photo };
 constexpr gsv::EnumName<Input> kInputs[] = {{Input::Noise, "noise"}, {Input::Photo, "photo"}};
 
-class LicLab final : public gsv::Lab {
+class LicLab final : public gsv::Lab, public lab02::SweepView {
 public:
     gsv::LabInfo info() const override { return {"lab02", "Line integral convolution"}; }
 
@@ -100,32 +98,9 @@ public:
         return gsv::lic_work(loops);
     }
 
-#ifdef GSV_HAVE_REFERENCE
-    // Where the field has a formula and the input is the noise, each image of the sweep is measured against LIC of
-    // the same length along the field's exact streamlines, so that the error is the step's alone: against a longer
-    // LIC, Euler's and midpoint's errors came out the same. The exact LIC is the instructor's (reference/): a
-    // student's sweep measures against the long midpoint LIC below.
-    std::optional<gsv::Image> sweep_exact_image(gsv::LabKit& kit, const gsv::Frame& frame) override {
-        gsv::check_sweepable(view_.contrast.get());
-        exact_applies_ = field_.get() != Field::File && input_.get() == Input::Noise;
-        if (!exact_applies_) return std::nullopt;
-        return exact_.image(kit.params(), frame, [&] { return exact_field(frame); }, [&] { return noise(frame); });
-    }
-#endif
-    std::string sweep_reference_name() const override {
-#ifdef GSV_HAVE_REFERENCE
-        if (exact_applies_) return lab02::ExactLicImages::description();
-#endif
-        return "midpoint LIC of length 200, there being no exact LIC of a field from a file, of the photograph, or in a build "
-               "without the instructor's reference/: a longer filter, so the error measures the length as well as the "
-               "accuracy";
-    }
-    std::vector<std::string> sweep_reference() const override { return {"step=midpoint", "length=200"}; }
-    // Called at every point of any sweep, the lab's knob or another.
-    gsv::SweepMetrics sweep_metrics(gsv::LabKit&, const gsv::Frame&) override {
-        gsv::check_sweepable(view_.contrast.get());
-        return {};
-    }
+    // What its sweep plan reads (sweep_view.h).
+    gsv::LicContrast contrast() const override { return view_.contrast.get(); }
+    bool field_has_formula() const override { return field_.get() != Field::File && input_.get() == Input::Noise; }
 
 private:
     // One flow texel per pixel: a step of one texel is a step of one pixel. The field is scaled to `speed` in the
@@ -157,13 +132,15 @@ private:
 
     std::uint64_t seed() const { return static_cast<std::uint64_t>(seed_.get()); }
 
-    std::vector<float> noise(const gsv::Frame& frame) const { return gsv::white_noise(frame.width, frame.height, seed()); }
+    std::vector<float> noise(const gsv::Frame& frame) const override {
+        return gsv::white_noise(frame.width, frame.height, seed());
+    }
 
     // The observer's velocity in texels per step.
     double observer_velocity() const { return static_cast<double>(view_.observer_velocity.get()) * speed_.get(); }
 
     // The field make_flow_texture samples, everywhere: for the sweep's exact streamlines.
-    gsv::VelocityAt exact_field(const gsv::Frame& frame) const {
+    gsv::VelocityAt exact_field(const gsv::Frame& frame) const override {
         const FieldChoice field = field_.get();
         const double speed = speed_.get();
         gsv::VelocityAt lab_frame =
@@ -203,10 +180,6 @@ private:
     gsv::Tracked<gsv::Texture> input_texture_, flow_;
     gsv::Tracked<gsv::FlowSequence> file_;
     gsv::LicContrastPass contrast_;
-#ifdef GSV_HAVE_REFERENCE
-    lab02::ExactLicImages exact_;
-    bool exact_applies_ = false;  // the last sweep point was measured against the exact LIC
-#endif
 };
 
 }  // namespace

@@ -11,10 +11,8 @@
 #include "common/gl/gpu_mesh.h"
 #include "common/gl/texture.h"
 #include "common/scene/mesh_data.h"
+#include "sweep_view.h"
 #include "terrain_source.h"
-#ifdef GSV_HAVE_REFERENCE
-#include "reference/lab04_terrain/normal_measure.h"  // the instructor's measurements (cmake/labs.cmake)
-#endif
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -30,7 +28,7 @@ constexpr gsv::EnumName<Geometry> kGeometries[] = {{Geometry::Bump, "bump"}, {Ge
 enum class Coloring { Levels, Plain };
 constexpr gsv::EnumName<Coloring> kColorings[] = {{Coloring::Levels, "levels"}, {Coloring::Plain, "plain"}};
 
-class TerrainLab final : public gsv::Lab {
+class TerrainLab final : public gsv::Lab, public lab04::SweepView {
 public:
     gsv::LabInfo info() const override { return {"lab04", "Bump-mapped terrain"}; }
 
@@ -68,8 +66,6 @@ public:
 
     void setup(gsv::LabKit& kit) override {
         shade_ = &kit.program("terrain", {"terrain.vert", "terrain.frag"});
-        probe_ = &kit.program("normal_probe", {"gsv/fullscreen.vert", "normal_probe.frag"});
-        quad_ = gsv::GpuMesh(gsv::make_fullscreen_quad(), kit.profile());
     }
 
     void render(gsv::LabKit& kit, const gsv::Frame& frame) override {
@@ -102,24 +98,8 @@ public:
         return work;
     }
 
-    std::vector<std::string> sweep_reference() const override { return {"delta=1"}; }
-#ifdef GSV_HAVE_REFERENCE
-    // Measured against the instructor's CPU normals (reference/); a student's sweep has the images' errors only.
-    // The plotted error is the normals' against the truth where a formula gives it; real data have no truer
-    // normals than their own samples' finest differences.
-    std::string sweep_error_column() const override { return "normal_err_mean_deg"; }
-    std::string sweep_reference_name() const override {
-        return terrain_->procedural
-                   ? "normals: the analytic terrain's exact normals, in double; images: the image at the finest step"
-                   : "normals: central differences one sample apart on the full-resolution data, in double (the finest "
-                     "the samples allow, not the true ground); images: the image at that step";
-    }
-
-    gsv::SweepMetrics sweep_metrics(gsv::LabKit& kit, const gsv::Frame&) override {
-        return lab04::measure_normals(kit, *terrain_, *probe_, quad_,
-                                      [&](const gsv::ShaderProgram& program) { set_terrain_uniforms(program); });
-    }
-#endif
+    // What its sweep plan reads (sweep_view.h).
+    const lab04::Terrain& terrain() const override { return *terrain_; }
 
     // The colours by height as color.glsl draws them, over the terrain's heights.
     std::optional<gsv::Legend> legend(gsv::LabKit& kit) override {
@@ -163,7 +143,7 @@ private:
         });
     }
 
-    void set_terrain_uniforms(const gsv::ShaderProgram& program) const {
+    void set_terrain_uniforms(const gsv::ShaderProgram& program) const override {
         program.bind("uHeights", *heights_);
         lab04::set_placement(program, *terrain_);
     }
@@ -175,8 +155,6 @@ private:
     gsv::Param<bool> mipmaps_;
     gsv::Param<float> tree_line_, snow_line_, pan_east_, pan_south_;
     const gsv::ShaderLibrary::Entry* shade_ = nullptr;
-    const gsv::ShaderLibrary::Entry* probe_ = nullptr;
-    gsv::GpuMesh quad_;
     gsv::Tracked<gsv::GpuMesh> grid_;
     gsv::Tracked<lab04::Terrain> terrain_;
     gsv::Tracked<gsv::Texture> heights_;

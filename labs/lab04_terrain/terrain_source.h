@@ -13,6 +13,9 @@ namespace lab04 {
 struct Terrain {
     gsv::HeightField field;                              // as uploaded (rounded to 8 bits with heights8=on)
     std::optional<gsv::ProceduralTerrain> procedural;    // set when the exact normals are known
+    // The field's lowest and highest heights, found once when it is loaded: every frame places the terrain by them,
+    // and scanning a million heights a frame was most of a frame in the browser (1.5 ms of lab 04's 2.6).
+    float low = 0, high = 0;
 };
 
 // The real elevation models in data/terrain, then support/terrain's procedural ones (gsv::kTerrainKindNames).

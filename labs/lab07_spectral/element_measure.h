@@ -2,7 +2,7 @@
 // Lab 07's sweep columns: what the per-fragment evaluation costs against drawing from the corners only, and the
 // memory the basis and the values take. (Its error against the analytic field and against the same polynomial in
 // double is the instructor's measurement: reference/lab07_spectral/.)
-#include "common/app/app.h"
+#include "common/app/sweep_plan.h"
 #include "common/gl/framebuffer.h"
 #include "common/scene/transforms.h"
 #include "common/shader/shader_library.h"

@@ -1,7 +1,7 @@
 #pragma once
 // Lab 02's sweep reference where the field has a formula: LIC of the same length along the field's exact
 // streamlines (reference/flow/lic_reference.h), the instructor's yardstick of the lab's LIC loop (L02-T1 to
-// L02-T5). Compiled into lab02_solution only; the student's sweep measures against a long midpoint LIC instead.
+// L02-T5), for its sweep plan (sweep_plan.cpp). Compiled into lab02_solution only.
 #include "common/app/app.h"
 #include "common/params/change_tracker.h"
 #include "reference/flow/lic_reference.h"

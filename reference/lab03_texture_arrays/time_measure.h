@@ -1,7 +1,7 @@
 #pragma once
 // Lab 03's sweep columns, the instructor's: what the GPU sampled at the playhead against the CPU's mix of the same
 // slices in double (reference/flow/time_slices.h, the yardstick of L03-T2 and L03-T4), and the temporal error of
-// T slices against the flow itself. Compiled into lab03_solution only; the student's sweep has the images alone.
+// T slices against the flow itself, for its sweep plan (sweep_plan.cpp). Compiled into lab03_solution only.
 #include "common/app/app.h"
 #include "common/gl/gpu_mesh.h"
 #include "support/flow/flow_field.h"

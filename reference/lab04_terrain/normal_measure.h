@@ -1,7 +1,7 @@
 #pragma once
 // Lab 04's sweep columns, the instructor's: the shader's normals against exact and double-precision ones
 // (reference/terrain/terrain_normal.h, the yardstick of L04-T1 and L04-T2). Compiled into lab04_solution only; the
-// student's sweep has the images alone.
+// student's sweep has the images alone. Its sweep plan (sweep_plan.cpp) calls it.
 #include "common/app/app.h"
 #include "common/gl/gpu_mesh.h"
 #include "terrain_source.h"

@@ -6,13 +6,12 @@
 #include "common/app/app.h"
 #include "common/core/error.h"
 #include "common/params/change_tracker.h"
-#include "common/gl/framebuffer.h"
 #include "common/gl/gl.h"
 #include "common/gl/gpu_mesh.h"
 #include "common/image/image.h"
 #include "common/scene/mesh_data.h"
 
-#include "sphere_measure.h"
+#include "sweep_view.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -29,7 +28,7 @@ constexpr gsv::EnumName<Shading> kShadings[] = {{Shading::Phong, "phong"}, {Shad
 enum class ShadingRate { Vertex, Fragment };
 constexpr gsv::EnumName<ShadingRate> kShadingRates[] = {{ShadingRate::Vertex, "vertex"}, {ShadingRate::Fragment, "fragment"}};
 
-class GoochLab final : public gsv::Lab {
+class GoochLab final : public gsv::Lab, public lab01::SweepView {
 public:
     gsv::LabInfo info() const override { return {"lab01", "GLSL basics and Gooch shading"}; }
 
@@ -63,9 +62,6 @@ public:
 
     void setup(gsv::LabKit& kit) override {
         shade_ = &kit.program("shade", {"shade.vert", "shade.frag"});
-        normal_error_ = &kit.program("normal_error", {"shade.vert", "normal_error.frag"});
-        exact_sphere_ = &kit.program("exact_sphere", {"gsv/fullscreen.vert", "exact_sphere.frag"});
-        quad_ = gsv::GpuMesh(gsv::make_fullscreen_quad(), kit.profile());
         teapot_ = gsv::load_obj(kit.assets().data_file("meshes/teapot.obj"));
         gsv::normalize_to_unit_sphere(teapot_);
         params_changed(kit);
@@ -96,8 +92,6 @@ public:
         return mesh;
     }
 
-    // Where the exact image does not apply (another model, a cut, silhouettes, an unequal scale), the sweep falls
-    // back to this rendered one.
     // The lesson is per-fragment shading of a model that covers part of the frame: at most one shaded fragment a
     // pixel (fill), the lighting a few dozen flops each.
     gsv::FrameWork frame_work(const gsv::Frame& frame) const override {
@@ -108,60 +102,20 @@ public:
         return work;
     }
 
-    std::vector<std::string> sweep_reference() const override {
-        return {"shading_rate=fragment", "mesh_resolution=1024"};
-    }
-    // Plotted: the error of what each rate lights a pixel with; the image RMSE adds the outline's error.
-    std::string sweep_error_column() const override { return "shading_err_mean"; }
-    std::string sweep_reference_name() const override {
-        return "the exact sphere, ray-cast at each pixel and lit with its exact normal (exact_sphere.frag)";
-    }
-
-    std::optional<gsv::Image> sweep_exact_image(gsv::LabKit& kit, const gsv::Frame& frame) override {
-        if (!exact_sphere_applies()) return std::nullopt;
-        gsv::Framebuffer target(frame.width, frame.height, gsv::ColorFormat::RGBA8);
-        target.bind();
-        draw(kit, frame, *exact_sphere_, kBackground);
-        return target.read_rgba8();
-    }
-
-    // What each rate lights a pixel with against the exact sphere's shading there; per fragment, also the normal
-    // it lights with against the exact normal (per vertex lights with no interpolated normal).
-    gsv::SweepMetrics sweep_metrics(gsv::LabKit& kit, const gsv::Frame& frame) override {
-        if (!exact_sphere_applies()) return {};
-        gsv::SweepMetrics metrics = lab01::shading_error(float_image(kit, frame, *shade_), float_image(kit, frame, *exact_sphere_));
-        if (shading_rate_.get() == ShadingRate::Fragment)
-            for (auto& m : lab01::normal_error(float_image(kit, frame, *normal_error_))) metrics.push_back(m);
-        return metrics;
-    }
-
-private:
-    static constexpr glm::vec4 kBackground{0.32f, 0.33f, 0.36f, 1.0f};
-
-    bool exact_sphere_applies() const {
+    // What its sweep plan reads (sweep_view.h).
+    bool exact_sphere_applies() const override {
         const glm::vec3 scale = scale_.get();
         return model_.get() == Model::Sphere && cut_.get() >= 1.0 && !silhouette_.get() && scale.x == scale.y && scale.y == scale.z;
     }
+    bool lights_each_fragment() const override { return shading_rate_.get() == ShadingRate::Fragment; }
+    const gsv::ShaderLibrary::Entry& shade_program() const override { return *shade_; }
+    glm::vec4 background() const override { return kBackground; }
 
-    void draw(gsv::LabKit& kit, const gsv::Frame& frame, const gsv::ShaderLibrary::Entry& entry, glm::vec4 background) {
-        const auto& p = kit.params();
-        const gsv::OrbitCamera camera = gsv::orbit_camera(p);
-        gsv::Transforms t;
-        t.model = glm::scale(glm::mat4(1.0f), scale_.get());
-        t.view = camera.view();
-        t.projection = camera.projection(frame.aspect());
-
+    void draw(gsv::LabKit& kit, const gsv::Frame& frame, const gsv::ShaderLibrary::Entry& entry, glm::vec4 background) override {
         glClearColor(background.r, background.g, background.b, background.a);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         const gsv::ShaderProgram& program = kit.use(entry);
-        kit.set_transforms(program, t);
-        program.set("uLightEye", glm::vec3(t.view * glm::vec4(light_position_.get(), 1.0f)));
-        if (&entry == exact_sphere_) {
-            program.set("uInverseProjection", glm::inverse(t.projection));
-            glDisable(GL_DEPTH_TEST);
-            quad_.draw();
-            return;
-        }
+        set_view(kit, program, frame);
         glEnable(GL_DEPTH_TEST);
         // Front faces first, then back faces pushed back by a polygon offset. Along a silhouette a front and a back
         // triangle share an edge, and near it both cover a pixel at the same depth but for rounding: drawn in one pass,
@@ -179,13 +133,19 @@ private:
         glDisable(GL_CULL_FACE);
     }
 
-    // A pass drawn into a float target whose background has alpha 0, so covered pixels can be told apart.
-    gsv::ImageF float_image(gsv::LabKit& kit, const gsv::Frame& frame, const gsv::ShaderLibrary::Entry& entry) {
-        gsv::Framebuffer target(frame.width, frame.height, gsv::ColorFormat::RGBA32F);
-        target.bind();
-        draw(kit, frame, entry, glm::vec4(0.0f));
-        return target.read_rgba32f();
+    gsv::Transforms set_view(gsv::LabKit& kit, const gsv::ShaderProgram& program, const gsv::Frame& frame) const override {
+        const gsv::OrbitCamera camera = gsv::orbit_camera(kit.params());
+        gsv::Transforms t;
+        t.model = glm::scale(glm::mat4(1.0f), scale_.get());
+        t.view = camera.view();
+        t.projection = camera.projection(frame.aspect());
+        kit.set_transforms(program, t);
+        program.set("uLightEye", glm::vec3(t.view * glm::vec4(light_position_.get(), 1.0f)));
+        return t;
     }
+
+private:
+    static constexpr glm::vec4 kBackground{0.32f, 0.33f, 0.36f, 1.0f};
 
     gsv::EnumParam<Model> model_;
     gsv::EnumParam<ShadingRate> shading_rate_;
@@ -195,9 +155,6 @@ private:
     gsv::Param<glm::vec3> light_position_, scale_;
     gsv::Param<float> cut_;
     const gsv::ShaderLibrary::Entry* shade_ = nullptr;
-    const gsv::ShaderLibrary::Entry* normal_error_ = nullptr;
-    const gsv::ShaderLibrary::Entry* exact_sphere_ = nullptr;
-    gsv::GpuMesh quad_;
     gsv::MeshData teapot_;
     gsv::Tracked<gsv::GpuMesh> mesh_;
 };

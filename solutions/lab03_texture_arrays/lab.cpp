@@ -15,11 +15,8 @@
 #include "support/flow/lic_view_params.h"
 #include "support/flow/lic_work.h"
 #include "support/flow/noise.h"
+#include "sweep_view.h"
 #include "time_flow.h"
-#ifdef GSV_HAVE_REFERENCE
-#include "reference/lab03_texture_arrays/time_measure.h"  // the instructor's measurements (cmake/labs.cmake)
-#endif
-
 
 #include <string>
 #include <vector>
@@ -29,7 +26,7 @@ namespace {
 enum class Playhead { Time, Slice };
 constexpr gsv::EnumName<Playhead> kPlayheads[] = {{Playhead::Time, "time"}, {Playhead::Slice, "slice"}};
 
-class TextureArrayLab final : public gsv::Lab {
+class TextureArrayLab final : public gsv::Lab, public lab03::SweepView {
 public:
     gsv::LabInfo info() const override { return {"lab03", "Texture arrays: time-varying LIC"}; }
 
@@ -70,7 +67,6 @@ public:
     void setup(gsv::LabKit& kit) override {
         check_limits(kit);
         lic_ = &kit.program("lic", {"gsv/fullscreen.vert", "lic_time.frag"});
-        probe_ = &kit.program("probe", {"gsv/fullscreen.vert", "probe.frag"});
         quad_ = gsv::GpuMesh(gsv::make_fullscreen_quad(), kit.profile());
     }
 
@@ -108,20 +104,10 @@ public:
         return gsv::lic_work(loops);
     }
 
-    // Storage changes what an image costs, not what it shows: the reference is always the array's.
-    std::vector<std::string> sweep_reference() const override { return {"slices=256", "blend=linear", "storage=array"}; }
-    std::vector<std::string> sweep_reference_refinement() const override { return {"slices=512", "blend=linear", "storage=array"}; }
-    std::string sweep_reference_name() const override { return "the flow blended linearly between 256 slices per period"; }
-
-    // Without the instructor's reference/ (a student's build), the sweep has the images' errors and times only.
-    gsv::SweepMetrics sweep_metrics([[maybe_unused]] gsv::LabKit& kit, const gsv::Frame&) override {
-        gsv::check_sweepable(view_.contrast.get());
-#ifdef GSV_HAVE_REFERENCE
-        return lab03::measure_sampling(kit, slice_params_, *probe_, quad_, *flow_, [&](const gsv::ShaderProgram& p) { bind_flow(p); });
-#else
-        return {};
-#endif
-    }
+    // What its sweep plan reads (sweep_view.h).
+    gsv::LicContrast contrast() const override { return view_.contrast.get(); }
+    const lab03::SliceParams& slice_params() const override { return slice_params_; }
+    const gsv::FlowSequence& flow() const override { return *flow_; }
 
 private:
     void check_limits(gsv::LabKit& kit) const { lab03::check_storage_limits(kit, slice_params_); }
@@ -163,7 +149,7 @@ private:
 
     // T separate textures take a unit each and are bound every frame: the cost (and the unit limit) the array
     // removes.
-    void bind_flow(const gsv::ShaderProgram& program) const {
+    void bind_flow(const gsv::ShaderProgram& program) const override {
         if (array_.id()) {
             program.bind("uFlowArray", array_);
         } else if (volume_.id()) {
@@ -178,7 +164,6 @@ private:
     gsv::Param<int> seed_, length_;
     gsv::LicViewParams view_;
     const gsv::ShaderLibrary::Entry* lic_ = nullptr;
-    const gsv::ShaderLibrary::Entry* probe_ = nullptr;
     gsv::GpuMesh quad_;
     gsv::Tracked<gsv::FlowSequence> flow_;
     gsv::ChangeTracker uploaded_;

@@ -33,6 +33,8 @@ Terrain load_terrain(const gsv::LabKit& kit, const TerrainParams& p) {
         terrain.procedural = procedural;
     }
     if (p.heights8.get()) round_to_8_bits(terrain.field);
+    terrain.low = terrain.field.min_height();
+    terrain.high = terrain.field.max_height();
     return terrain;
 }
 
@@ -43,8 +45,8 @@ void set_placement(const gsv::ShaderProgram& program, const Terrain& terrain) {
     program.set("uSpacing", glm::vec2(static_cast<float>(f.dx_m), static_cast<float>(f.dy_m)));
     program.set("uGround", glm::vec2(static_cast<float>(east_m * units_per_metre), static_cast<float>(north_m * units_per_metre)));
     program.set("uUnitsPerMetre", static_cast<float>(units_per_metre));
-    program.set("uMidHeight", 0.5f * (f.min_height() + f.max_height()));
-    program.set("uHeightRange", glm::vec2(f.min_height(), f.max_height()));
+    program.set("uMidHeight", 0.5f * (terrain.low + terrain.high));
+    program.set("uHeightRange", glm::vec2(terrain.low, terrain.high));
 }
 
 }  // namespace lab04

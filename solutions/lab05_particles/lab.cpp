@@ -11,13 +11,13 @@
 #include "common/gl/compute.h"
 #include "common/gl/gl.h"
 #include "common/gl/texture.h"
+#include "common/timing/timing.h"
+#include "common/timing/work_pacer.h"
 #include "particle_buffers.h"
 #include "particle_stepper.h"
+#include "sweep_view.h"
 #include "support/particles/particle_grid.h"
 #include "support/particles/particle_motion.h"
-#ifdef GSV_HAVE_REFERENCE
-#include "reference/lab05_particles/particle_measure.h"  // the instructor's measurements (cmake/labs.cmake)
-#endif
 
 #include <algorithm>
 #include <cmath>
@@ -27,15 +27,20 @@
 
 namespace {
 
-// Window mode catches the simulation up at most this many steps a frame, so a demo stays interactive.
+// Window mode and the page catch the simulation up a few steps a frame, so a demo stays interactive: at most this
+// many, and as many as the time a frame takes here allows (gsv::WorkPacer), starting from what this many steps of the
+// page's 65,536 particles cost.
 constexpr long kMaxStepsPerFrame = 32;
+constexpr double kFirstParticleSteps = kMaxStepsPerFrame * 65536.0;
 
-class ParticleLab final : public gsv::Lab {
+class ParticleLab final : public gsv::Lab, public lab05::SweepView {
 public:
     gsv::LabInfo info() const override {
-        gsv::LabInfo info{"lab05", "SSBOs and compute-shader particle advection", {4, 3},
-                          "compute shaders and storage buffers"};
-        // Below ES 3.1 (WebGL 2 is ES 3.0) transform feedback steps the particles instead (advect_captured.vert).
+        gsv::LabInfo info{"lab05", "SSBOs and compute-shader particle advection", {4, 1},
+                          "transform feedback where there are no compute shaders"};
+        // Compute shaders from OpenGL 4.3 and ES 3.1; below them (macOS's 4.1, WebGL 2's ES 3.0) transform feedback
+        // steps the particles instead (advect_captured.vert), and the work groups of L05-T2 are not run.
+        info.uses = gsv::GlVersion{4, 3};
         info.needs_es = {3, 0};
         info.needs_es_why = "transform feedback where there are no compute shaders";
         return info;
@@ -146,23 +151,6 @@ public:
         }
         return work;
     }
-
-    std::vector<std::string> sweep_reference() const override { return {"time_step=0.00625", "integrator=rk4"}; }
-#ifdef GSV_HAVE_REFERENCE
-    // Against the instructor's CPU integrators (reference/); a student's sweep has the images' errors and times only.
-    std::string sweep_error_column() const override { return "pos_err_rms"; }
-    std::string sweep_reference_name() const override {
-        return "positions (pos_err): the same particles in double precision, RK4 in substeps of at most 0.001, far below "
-               "float32's error; images: RK4 at the smallest step";
-    }
-
-    gsv::SweepMetrics sweep_metrics(gsv::LabKit& kit, const gsv::Frame&) override {
-        gsv::SweepMetrics metrics = lab05::measure(stepper(kit), initial_, done_);
-        state_.invalidate();  // measuring restarted the buffers
-        return metrics;
-    }
-#endif
-
     // The speed colours as speed_color.glsl gives them, and what a particle faster than the scale gets.
     std::optional<gsv::Legend> legend(gsv::LabKit& kit) override {
         if (!params_.color_by_speed.get()) return std::nullopt;
@@ -181,8 +169,13 @@ public:
                 {"velocities", 4, flatten(lab05::read_vec4s(buffers_.velocities, buffers_.capacity))}};
     }
 
+    // What its sweep plan reads (sweep_view.h).
+    const gsv::ParticleSet& initial_particles() const override { return initial_; }
+    long steps_done() const override { return done_; }
+    void buffers_restarted() override { state_.invalidate(); }
+
 private:
-    lab05::Stepper stepper(gsv::LabKit& kit) {
+    lab05::Stepper stepper(gsv::LabKit& kit) override {
         return lab05::Stepper{kit, params_, *advect_, buffers_, *velocity_texture_, limits_};
     }
 
@@ -221,10 +214,14 @@ private:
                                   velocity_texture_.version(), h))
             done_ = 0;
         long steps = target - done_;
-        if (frame.interactive) steps = std::min(steps, kMaxStepsPerFrame);
+        if (frame.interactive && steps > 0)
+            steps = pacer_.steps(steps, static_cast<double>(count_.get()), kMaxStepsPerFrame, gsv::now_seconds());
         stepper(kit).run(steps, h);
         done_ += steps;
-        if (done_ < target) kit.ask_for_another_frame();  // the picture is behind its time: the page draws on
+        pacer_.done(done_ < target);
+        // The picture is behind its time: the page draws on, saying how far it has got.
+        if (done_ < target)
+            kit.ask_for_another_frame("catching up: step " + std::to_string(done_) + " of " + std::to_string(target));
     }
 
     static std::vector<float> flatten(const std::vector<glm::vec4>& v) {
@@ -237,6 +234,7 @@ private:
     lab05::ParticleParams params_;
     gsv::Param<float> time_, speed_scale_;
     gsv::Param<int> count_, seed_;
+    gsv::WorkPacer pacer_{kFirstParticleSteps};
     const gsv::ShaderLibrary::Entry* advect_ = nullptr;
     const gsv::ShaderLibrary::Entry* draw_ = nullptr;
     bool compute_ = true;  // false: transform feedback steps the particles (OpenGL ES 3.0, WebGL 2)

@@ -12,12 +12,9 @@
 #include "common/gl/gl.h"
 #include "image_processors.h"
 #include "network.h"
-#include "ray_measure.h"
 #include "ray_traversal.h"
+#include "sweep_view.h"
 #include "support/network/network_file.h"
-#ifdef GSV_HAVE_REFERENCE
-#include "reference/lab06_raycasting/hit_measure.h"  // the instructor's measurements (cmake/labs.cmake)
-#endif
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -29,7 +26,7 @@
 
 namespace {
 
-class RaycastLab final : public gsv::Lab {
+class RaycastLab final : public gsv::Lab, public lab06::SweepView {
 public:
     gsv::LabInfo info() const override { return {"lab06", "Modular GPU volume raycasting"}; }
 
@@ -98,51 +95,32 @@ public:
         return raycaster ? raycaster->frame_work(frame.width, frame.height) : gsv::FrameWork{};
     }
 
-    std::vector<std::string> sweep_reference() const override { return {"samples_per_voxel=16"}; }
-    std::vector<std::string> sweep_reference_refinement() const override { return {"samples_per_voxel=32"}; }
-    std::string sweep_reference_name() const override {
-#ifdef GSV_HAVE_REFERENCE
-        return "images: the same compositing at 16 samples per voxel; isosurface hits (iso_err): the exact crossing of the "
-               "Marschner-Lobb signal along each ray, in double";
-#else
-        return "images: the same compositing at 16 samples per voxel";
-#endif
+    // What its sweep plan reads (sweep_view.h).
+    lab06::RayTraversal* raycaster() override {
+        return dynamic_cast<lab06::RayTraversal*>(network_ ? network_->find("raycaster") : nullptr);
     }
-    bool sweep_reference_per_series() const override { return true; }
-
-    gsv::SweepMetrics sweep_metrics([[maybe_unused]] gsv::LabKit& kit, const gsv::Frame&) override {
-        auto* raycaster = dynamic_cast<lab06::RayTraversal*>(network_ ? network_->find("raycaster") : nullptr);
-        if (!raycaster) return {};
-        gsv::SweepMetrics metrics;
-#ifdef GSV_HAVE_REFERENCE
-        metrics = lab06::measure_hits(kit, *raycaster, view_);  // against the instructor's exact hits (reference/)
-#endif
-        if (compare_shaders_.get()) {
-            const gsv::SweepMetrics times = lab06::compare_shaders(*raycaster);
-            metrics.insert(metrics.end(), times.begin(), times.end());
-        }
-        return metrics;
-    }
+    const lab06::FrameView& frame_view() const override { return view_; }
+    bool compare_shaders() const override { return compare_shaders_.get(); }
 
     // The classification the ray caster ran with (its parameters: a network file's win over the lab's), sampled
     // from its own GLSL module and table: colour and opacity over the intensity.
     std::optional<gsv::Legend> legend(gsv::LabKit& kit) override {
-        auto* raycaster = dynamic_cast<lab06::RayTraversal*>(network_ ? network_->find("raycaster") : nullptr);
-        if (!raycaster) return std::nullopt;
+        lab06::RayTraversal* traversal = raycaster();
+        if (!traversal) return std::nullopt;
         using Config = gsv::RaycastConfig;
-        const Config config = gsv::effective_config(lab06::raycast_modules(), raycaster->config());
+        const Config config = gsv::effective_config(lab06::raycast_modules(), traversal->config());
         const gsv::CompositingLegend says = gsv::compositing_legend(lab06::raycast_modules(), config.compositing);
         if (!says.shown) return std::nullopt;
         const bool table = config.classification == Config::Classification::TransferFunction;
         gsv::Legend legend;
-        legend.title = table ? "intensity, transfer function " + raycaster->transfer_function_name()
+        legend.title = table ? "intensity, transfer function " + traversal->transfer_function_name()
                              : "intensity, raw classification";
         legend.opacity = true;
         legend.ramp = (table ? tf_probe_ : raw_probe_).ramp(kit, 0, 1, 256, [&](const gsv::ShaderProgram& program) {
-            if (table) program.bind("uTransferFunction", raycaster->transfer_function());
+            if (table) program.bind("uTransferFunction", traversal->transfer_function());
         });
         legend.ticks = gsv::nice_ticks(0, 1);
-        if (says.marks_iso_value) legend.marks.push_back({raycaster->iso_value(), "iso value"});
+        if (says.marks_iso_value) legend.marks.push_back({traversal->iso_value(), "iso value"});
         legend.note = says.note;
         return legend;
     }

@@ -10,9 +10,7 @@
 #include "common/gl/gl.h"
 #include "element_data.h"
 #include "element_measure.h"
-#ifdef GSV_HAVE_REFERENCE
-#include "reference/lab07_spectral/value_measure.h"  // the instructor's measurements (cmake/labs.cmake)
-#endif
+#include "sweep_view.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -27,7 +25,7 @@ enum class Evaluation { Full, Corners, Basis };
 constexpr gsv::EnumName<Evaluation> kEvaluations[] = {
     {Evaluation::Full, "full"}, {Evaluation::Corners, "corners"}, {Evaluation::Basis, "basis"}};
 
-class SpectralLab final : public gsv::Lab {
+class SpectralLab final : public gsv::Lab, public lab07::SweepView {
 public:
     gsv::LabInfo info() const override { return {"lab07", "Rendering spectral elements"}; }
 
@@ -134,31 +132,13 @@ public:
         return work;
     }
 
-    std::vector<std::string> sweep_reference() const override { return {"degree=16", "node_set=gll"}; }
-#ifdef GSV_HAVE_REFERENCE
-    // The values' errors are measured against the instructor's CPU evaluation (reference/); a student's sweep has
-    // the images' errors, the times and the bytes.
-    std::string sweep_error_column() const override { return "err_max"; }
-    std::string sweep_reference_name() const override {
-        return "values (err): the exact field in double at each pixel's point of the element; images: the highest "
-               "degree on GLL nodes";
-    }
-#endif
-
-    gsv::SweepMetrics sweep_metrics(gsv::LabKit& kit, const gsv::Frame& frame) override {
-        const gsv::Transforms t = transforms(frame);
-        gsv::SweepMetrics metrics;
-#ifdef GSV_HAVE_REFERENCE
-        metrics = lab07::measure_values(kit, data_, programs_, t, frame.width, frame.height);
-#endif
-        const gsv::SweepMetrics costs = lab07::measure_costs(kit, data_, programs_, t, frame.width, frame.height);
-        metrics.insert(metrics.end(), costs.begin(), costs.end());
-        return metrics;
-    }
+    // What its sweep plan reads (sweep_view.h).
+    const lab07::ElementData& element_data() const override { return data_; }
+    const lab07::MeasurePrograms& measure_programs() const override { return programs_; }
 
 private:
     // A 2D view: the mesh spans [-1, 1]^2; zoom about (centre_x, centre_y), the aspect kept.
-    gsv::Transforms transforms(const gsv::Frame& frame) const {
+    gsv::Transforms transforms(const gsv::Frame& frame) const override {
         const float half = 1.08f / zoom_.get();
         const float aspect = frame.aspect();
         const glm::vec2 c(centre_x_.get(), centre_y_.get());

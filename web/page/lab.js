@@ -194,7 +194,8 @@
         page.frames++;
         if (page.frames === 1) page.firstFrameMs = performance.now();  // since navigation began
         page.lastFrameMs = ms;
-        $('frame-time').textContent = 'frame ' + ms.toFixed(1) + ' ms, ' + frameTimeNote();
+        const progress = Module.progress();  // the lab's work spread over frames (lab 05's steps), while behind
+        $('frame-time').textContent = 'frame ' + ms.toFixed(1) + ' ms, ' + frameTimeNote() + (progress ? '; ' + progress : '');
       } else {
         say(Module.status(), 'warning');
         refreshStates();
@@ -203,10 +204,11 @@
     requestAnimationFrame(loop);
   }
 
-  // glFinish brackets the frame natively; in the page, WebGL's finish() returns early, so the frame is bracketed by a
-  // one-pixel read-back, which waits for the browser's GPU process to run every command before it.
+  // glFinish brackets the frame natively; in the page, WebGL's finish() returns early, so a frame is bracketed by a
+  // one-pixel read-back, which waits for the browser's GPU process to run every command before it. Only one frame in
+  // each half second is timed so: the wait stalls the GPU process, and paid by every frame it halved a drag's speed.
   function frameTimeNote() {
-    return 'bracketed by a one-pixel read-back, which waits for the GPU';
+    return 'one frame each half second timed between two one-pixel read-backs, which wait for the GPU';
   }
 
   function changed(error) {

@@ -118,6 +118,13 @@ GradeCase case_from(const Json& c, const std::string& file) {
             throw Error(file + ": case '" + gc.name + "': \"es\": " + e.what());
         }
     }
+    if (const Json* feature = c.find("feature"); feature && !feature->is_null()) {
+        gc.feature = gl_feature_keyed(feature->as_string());
+        if (!gc.feature)
+            throw Error(file + ": case '" + gc.name + "': \"feature\": '" + feature->as_string() +
+                        "' is no feature the kit knows (common/gl/gl_features.h: compute)");
+        if (!gc.es_version) gc.es_version = gc.feature->es;
+    }
     if (const Json* arrays = c.find("arrays"); arrays && !arrays->is_null()) {
         gc.arrays.emplace();
         for (const Json& a : arrays->as_array()) gc.arrays->push_back(a.as_string());

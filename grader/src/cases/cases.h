@@ -2,6 +2,7 @@
 // A lab's grading cases, declared as data: the public ones in grader/cases/<lab>.json (shipped to
 // students, with golden images), the hidden ones in grader/hidden/<lab>.json (instructors only), whose
 // parameters are drawn from the seed given at grading time.
+#include "common/gl/gl_features.h"
 #include "common/gl/gl_version.h"
 #include "common/image/image_compare.h"
 #include "common/io/json.h"
@@ -38,6 +39,10 @@ struct GradeCase {
     // "es": "3.2": the OpenGL ES version this case needs where it is above the lab's lowest (a setting that uses
     // what ES 3.0 lacks); graded on --profile es at that version.
     std::optional<GlVersion> es_version;
+    // "feature": "compute": what the case's TODO runs on (lab 05's dispatch: compute shaders). On OpenGL ES it lifts
+    // the case to the feature's first ES version, as "es" does; a run whose context lacks it (macOS's 4.1, WebGL 2)
+    // draws the case without the student's code for it, so there the case is not counted, and the report says why.
+    const GlFeature* feature = nullptr;
 };
 
 struct LabCases {

@@ -31,6 +31,8 @@ struct LabRun {
     double median_ms = 0;
     double reported_ms = 0;  // the lab's own claim of its frame time: shown in benchmarks, never graded
     std::string renderer;    // GL_RENDERER as the lab's report gives it (what it ran on, in words): shown, never graded
+    // The case's "feature" where the lab's context lacks it (missing_feature_message): the case is not counted.
+    std::string lacks;
     // Rendered by a served process that had answered earlier cases (lab_serve.h): what those left (a `static`, a file)
     // could have changed it, so a check that fails on it is rendered again alone (grader/src/grade/grade.cpp).
     bool after_other_cases = false;

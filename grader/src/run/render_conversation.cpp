@@ -1,5 +1,6 @@
 #include "grader/src/run/render_conversation.h"
 
+#include "common/context/context.h"
 #include "common/core/error.h"
 #include "grader/src/core/safe_text.h"
 
@@ -45,6 +46,7 @@ RenderRequest render_request(const LabCases& lab, const GradeCase& c, Profile pr
     if (profile == Profile::Es && c.es_version) r.gl = *c.es_version;
     r.settings = c.settings;
     r.challenges = challenges;
+    r.feature = c.feature;
     return r;
 }
 
@@ -141,6 +143,20 @@ std::string RenderConversation::renderer() const {
     return name && name->is_string() ? one_line(name->as_string(), 200) : "";
 }
 
+std::string RenderConversation::lacks(const GlFeature& feature) const {
+    const Json* gl = report_ ? report_->find("gl") : nullptr;
+    const Json* profile = gl && gl->is_object() ? gl->find("profile") : nullptr;
+    const Json* effective = gl && gl->is_object() ? gl->find("effective") : nullptr;
+    if (!profile || !profile->is_string() || !effective || !effective->is_string()) return "";
+    try {
+        const Profile p = parse_profile(profile->as_string());
+        const GlVersion held_to = parse_gl_version(effective->as_string(), p);
+        return allows(feature, p, held_to) ? "" : missing_feature_message(feature, p, held_to);
+    } catch (const Error&) {
+        return "";  // a report the lab mangled: graded as any other run
+    }
+}
+
 void RenderConversation::ask(const Reply& reply) {
     if (!challenges_ || frames.size() == challenges_->size()) {
         asked_ = false;
@@ -167,6 +183,7 @@ LabRun rendered(ProcessResult process, RenderConversation& conversation, const L
     run.image = std::move(conversation.image);
     run.reported_ms = conversation.reported_frame_ms();
     run.renderer = conversation.renderer();
+    if (request.feature) run.lacks = conversation.lacks(*request.feature);
     if (run.image->width != request.width || run.image->height != request.height)
         run.detail = "the image is " + std::to_string(run.image->width) + "x" + std::to_string(run.image->height) + ", not " +
                      std::to_string(request.width) + "x" + std::to_string(request.height);

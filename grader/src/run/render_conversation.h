@@ -23,6 +23,7 @@ struct RenderRequest {
     std::optional<GlVersion> gl;  // on ES: the case's version, where it names one
     std::vector<std::string> settings;
     const std::vector<std::vector<std::string>>* challenges = nullptr;
+    const GlFeature* feature = nullptr;  // the case's "feature": a run whose context lacks it says so (LabRun::lacks)
 
     bool timed() const { return challenges != nullptr; }
     // The one-case command line after the binary: render --size WxH --frames 1 --warmup N [--arrays] [--profile P]
@@ -57,6 +58,9 @@ public:
     double reported_frame_ms() const;
     // GL_RENDERER as the lab reports it: one line of at most 200 bytes, whatever a student's lab wrote there.
     std::string renderer() const;
+    // Where the lab's report says its context (profile, the version it held to) lacks `feature`: the line saying so
+    // ("needs compute shaders ..., which OpenGL has from 4.3; this run holds to 4.1 ..."); empty where it has it.
+    std::string lacks(const GlFeature& feature) const;
     bool answered_all() const { return !challenges_ || frames.size() == challenges_->size(); }
 
     std::optional<Image> image;

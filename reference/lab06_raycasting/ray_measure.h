@@ -1,7 +1,7 @@
 #pragma once
-// Lab 06's sweep columns: what the same image costs through the uber-shader and the hand-written DVR. (Where the
-// rays hit against the exact isosurface is the instructor's measurement: reference/lab06_raycasting/.)
-#include "common/app/app.h"
+// Lab 06's sweep columns with compare_shaders=on: what the same image costs through the uber-shader and the
+// hand-written DVR, for its sweep plan (sweep_plan.cpp). Compiled into lab06_solution only.
+#include "common/app/sweep_plan.h"
 #include "ray_traversal.h"
 
 namespace lab06 {

@@ -1,7 +1,8 @@
 #pragma once
 // Lab 01's sweep measures: what each shading rate lights a pixel with, against the exact sphere lit with its
-// exact normal, over the pixels the mesh covers.
-#include "common/app/app.h"
+// exact normal, over the pixels the mesh covers; for its sweep plan (sweep_plan.cpp). Compiled into lab01_solution
+// only.
+#include "common/app/sweep_plan.h"
 #include "common/image/image.h"
 
 namespace lab01 {
