@@ -14,6 +14,7 @@
 #include "gl_fixture.h"
 #include "tools/ceilings/ceiling_benchmarks.h"
 
+#include <algorithm>
 #include <fstream>
 #include <string>
 #include <tuple>
@@ -68,21 +69,32 @@ TEST_CASE("frame work: the bound is the slowest resource at its ceiling, and a f
                   {WorkKind::Flops, ShaderPath::Fragment, "", 1e9, "not measured here"}};
     const auto bound = roofline(work, ceilings);
     REQUIRE(bound);
-    // 2e7 lookups at 1e9 a second and 5e6 at 5e8 share the texture units: 30 ms; the fill needs 1 ms.
-    CHECK(bound->bound_ms == Approx(30.0));
+    // 2e7 lookups and 5e6 share the texture units. The ceiling is each benchmark's fastest round (1.25e9 and
+    // 6.25e8 a second): 24 ms; at their medians (1e9 and 5e8) 30 ms, the spread a busy machine adds. The fill needs
+    // 1 ms at most.
+    CHECK(bound->bound_ms == Approx(24.0));
+    CHECK(bound->median_bound_ms == Approx(30.0));
     CHECK(bound->limiter == "texture (fragment)");
     CHECK(bound->unmeasured == std::vector<std::string>{"flops fragment"});
-    CHECK(bound->fraction(60.0) == Approx(0.5));
-    CHECK(bound->describe(60.0) == "50% of this device's texture (fragment) ceiling");
-    // At every benchmark's fastest round the same work takes 24 ms: a frame of 25 ms is within what the device allows
-    // (a fraction above 1 against the medians, on a machine that was busier while they were measured).
-    CHECK(bound->fastest_bound_ms == Approx(24.0));
+    CHECK(bound->fraction(60.0) == Approx(0.4));
+    CHECK(bound->describe(60.0) == "40% of this device's texture (fragment) ceiling");
+    // A frame of 25 ms is within what the device allows, though faster than the medians' 30 ms (a fraction above 1
+    // against them, on a machine that was busier while they were measured); 23 ms is not.
     CHECK_NOTHROW(check_within_ceiling(*bound, 30.0, "lab"));
     CHECK_NOTHROW(check_within_ceiling(*bound, 25.0, "lab"));
     CHECK_THROWS(check_within_ceiling(*bound, 23.0, "lab"));
     // A frame timed without waiting for the device (the seed's mistake) comes out faster than the device allows.
     CHECK_THROWS_WITH(check_within_ceiling(*bound, 0.05, "lab02 length=25"),
                       Catch::Contains("faster than this device's texture (fragment) ceiling allows"));
+    // The two formats measured taking turns (LIC's access) at 1.5e9 a second at best: their 2.5e7 lookups need
+    // only 16.7 ms, so the pair's ceiling is the bound; a slower pair would leave the formats' own.
+    ceilings.rates.push_back({"fetch RG32F 2D + RGB32F 2D fragment", 1.2e9, 1e9, 1.5e9, "fetches/s"});
+    const auto paired = roofline(work, ceilings);
+    REQUIRE(paired);
+    CHECK(paired->bound_ms == Approx(2.5e7 / 1.5e9 * 1000.0));
+    CHECK(paired->median_bound_ms == Approx(2.5e7 / 1.2e9 * 1000.0));
+    ceilings.rates.back() = {"fetch RG32F 2D + RGB32F 2D fragment", 0.6e9, 0.5e9, 0.7e9, "fetches/s"};
+    CHECK(roofline(work, ceilings)->bound_ms == Approx(24.0));
     FrameWork unmeasured;
     unmeasured.items = {{WorkKind::StorageBytes, ShaderPath::Compute, "", 1e6, "copy"}};
     CHECK_FALSE(roofline(unmeasured, ceilings));
@@ -197,16 +209,23 @@ TEST_CASE("frame work: a frame timed without waiting for the device is faster th
     const auto draw_ten = ceiling_frame(options, "fetch R32F 2D fragment");
     draw_ten(1);  // built and warm
     glFinish();
-    double t0 = now_seconds();
-    draw_ten(10);
-    const double unwaited_ms = 1000.0 * (now_seconds() - t0);
-    glFinish();
+    // The submission's time, the least of five tries: a loaded machine only ever adds time (a descheduled thread),
+    // so the fastest try is the submission's own, and one try slowed past the bound cannot fail the test.
+    double unwaited_ms = 1e300;
+    for (int attempt = 0; attempt < 5; ++attempt) {
+        const double t0 = now_seconds();
+        draw_ten(10);
+        unwaited_ms = std::min(unwaited_ms, 1000.0 * (now_seconds() - t0));
+        glFinish();
+    }
     CHECK_THROWS_WITH(check_within_ceiling(*bound, unwaited_ms, "ten frames not waited for"),
                       Catch::Contains("faster than this device's texture (fragment) ceiling allows"));
-    t0 = now_seconds();
+    const double t0 = now_seconds();
     draw_ten(10);
     glFinish();
     const double waited_ms = 1000.0 * (now_seconds() - t0);
-    INFO("waited " << waited_ms << " ms, bound " << bound->bound_ms << " ms, at the fastest round " << bound->fastest_bound_ms);
+    INFO("waited " << waited_ms << " ms, not waited " << unwaited_ms << " ms, bound " << bound->bound_ms
+                   << " ms (at the benchmark's median " << bound->median_bound_ms << " ms)");
+    // Only the direction: the waited frames include the drawing the others left undone (noise only adds to it).
     CHECK(waited_ms > unwaited_ms);
 }

@@ -217,7 +217,7 @@ int run_render(Session& s) {
     if (bound) {
         Json r = Json::object();
         r["bound_ms"] = bound->bound_ms;
-        r["fastest_bound_ms"] = bound->fastest_bound_ms;
+        r["median_bound_ms"] = bound->median_bound_ms;
         r["fraction"] = bound->fraction(timing.median_ms);
         r["limiter"] = bound->limiter;
         r["upper_bound"] = bound->upper_bound;

@@ -167,11 +167,11 @@ public:
             row.p25_ms = times[i].p25_ms;
             row.p75_ms = times[i].p75_ms;
             if (ceilings_) row.roofline = roofline(point_work_[i], *ceilings_);
-            if (row.roofline && !row.roofline->upper_bound && row.median_ms < row.roofline->fastest_bound_ms)
+            if (row.roofline && !row.roofline->upper_bound && row.median_ms < row.roofline->bound_ms)
                 std::fprintf(stderr, "  %s=%s: %.3f ms is faster than this device's %s ceiling allows (%.3f ms at its "
                                      "fastest): a frame that was not waited for, or work overstated\n",
                              knob_name_.c_str(), row.knob.c_str(), row.median_ms, row.roofline->limiter.c_str(),
-                             row.roofline->fastest_bound_ms);
+                             row.roofline->bound_ms);
             std::fprintf(stderr, "  %s%s%s %s=%s: %.3f ms [%.3f, %.3f], rmse %.3f\n", series_name_.c_str(),
                          series_name_.empty() ? "" : "=", row.series.c_str(), knob_name_.c_str(), row.knob.c_str(),
                          row.median_ms, row.p25_ms, row.p75_ms, row.rmse);

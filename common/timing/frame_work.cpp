@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <utility>
 
 namespace gsv {
 
@@ -22,6 +23,10 @@ const char* work_kind_name(WorkKind kind) {
 }
 
 const char* shader_path_name(ShaderPath path) { return path == ShaderPath::Compute ? "compute" : "fragment"; }
+
+std::string pair_ceiling_key(const std::string& flow_texture, const std::string& input_texture, ShaderPath path) {
+    return "fetch " + flow_texture + " + " + input_texture + " " + shader_path_name(path);
+}
 
 std::string WorkItem::ceiling_key() const {
     switch (kind) {
@@ -149,7 +154,8 @@ std::optional<Roofline> roofline(const FrameWork& work, const Ceilings& ceilings
     // units: LIC's flow and noise lookups take their turns); the frame's bound is the slowest resource.
     struct Resource {
         std::string name;
-        double ms = 0, fastest_ms = 0;
+        double ms = 0, median_ms = 0;
+        std::vector<const WorkItem*> fetches;  // the lookups it adds up, for a pair's ceiling
     };
     std::vector<Resource> resources;
     Roofline out;
@@ -159,30 +165,40 @@ std::optional<Roofline> roofline(const FrameWork& work, const Ceilings& ceilings
             out.unmeasured.push_back(item.ceiling_key());
             continue;
         }
-        const double ms = 1000.0 * item.amount / ceiling->rate;
-        const double fastest_ms = 1000.0 * item.amount / std::max(ceiling->high, ceiling->rate);
+        const double median_ms = 1000.0 * item.amount / ceiling->rate;
+        const double ms = 1000.0 * item.amount / std::max(ceiling->high, ceiling->rate);
         const std::string name = item.resource();
         auto found = std::find_if(resources.begin(), resources.end(), [&](const Resource& r) { return r.name == name; });
-        if (found == resources.end()) {
-            resources.push_back({name, ms, fastest_ms});
-        } else {
-            found->ms += ms;
-            found->fastest_ms += fastest_ms;
-        }
+        if (found == resources.end()) found = resources.insert(resources.end(), Resource{name, 0, 0, {}});
+        found->ms += ms;
+        found->median_ms += median_ms;
+        if (item.kind == WorkKind::Fetch) found->fetches.push_back(&item);
     }
     if (resources.empty()) return std::nullopt;
+    // Two formats looked up in turn (LIC's flow and input) can run faster than each one's benchmark alone allows;
+    // where their pair was measured too (gsv-ceilings' fetch_pair.frag), the faster of the two ceilings holds.
+    for (Resource& r : resources) {
+        if (r.fetches.size() != 2 || r.fetches[0]->texture == r.fetches[1]->texture) continue;
+        for (const auto& [a, b] : {std::pair{r.fetches[0], r.fetches[1]}, std::pair{r.fetches[1], r.fetches[0]}}) {
+            const Ceiling* pair = ceilings.find(pair_ceiling_key(a->texture, b->texture, a->path));
+            if (!pair) continue;
+            const double amount = a->amount + b->amount;
+            r.ms = std::min(r.ms, 1000.0 * amount / std::max(pair->high, pair->rate));
+            r.median_ms = std::min(r.median_ms, 1000.0 * amount / pair->rate);
+        }
+    }
     out.upper_bound = work.upper_bound;
     for (const Resource& r : resources) {
         if (r.ms > out.bound_ms) out.bound_ms = r.ms, out.limiter = r.name;
-        out.fastest_bound_ms = std::max(out.fastest_bound_ms, r.fastest_ms);
+        out.median_bound_ms = std::max(out.median_bound_ms, r.median_ms);
     }
     return out;
 }
 
 void check_within_ceiling(const Roofline& bound, double measured_ms, const std::string& what) {
-    if (measured_ms < bound.fastest_bound_ms)
+    if (measured_ms < bound.bound_ms)
         throw Error(what + ": " + format_number(measured_ms, 4) + " ms a frame is faster than this device's " + bound.limiter +
-                    " ceiling allows (" + format_number(bound.fastest_bound_ms, 4) + " ms at its fastest, fraction " +
+                    " ceiling allows (" + format_number(bound.bound_ms, 4) + " ms at its fastest, fraction " +
                     format_number(bound.fraction(measured_ms), 3) +
                     "): the timing did not wait for the device, or the work is overstated");
 }

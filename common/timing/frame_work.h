@@ -50,6 +50,9 @@ struct FrameWork {
 };
 
 // A measured ceiling: the resource's rate per second, as the median of interleaved rounds, with its spread.
+// The key of two textures' lookups taking turns ("fetch RG32F 2D + RGB32F 2D fragment"): LIC's flow, then its input.
+std::string pair_ceiling_key(const std::string& flow_texture, const std::string& input_texture, ShaderPath path);
+
 struct Ceiling {
     std::string key;
     double rate = 0;          // per second, the median
@@ -78,10 +81,12 @@ std::optional<Ceilings> cached_ceilings(const std::filesystem::path& executable,
 // A frame's work against the ceilings: the bound (the slowest resource at its ceiling), the resource named, and
 // the fraction of that bound a measured frame time reaches.
 struct Roofline {
+    // The bound: the work at every benchmark's fastest round, the most this device was seen to do. A machine's load
+    // only ever slows a round, so the fastest is the ceiling, and no frame of this work can take less; a frame faster
+    // than it did not wait for the device (check_within_ceiling).
     double bound_ms = 0;
-    // The same bound at the fastest round of each benchmark: no frame of this work can take less. The fraction is
-    // reported against the median; only a frame faster than this is impossible, whatever the machine's load.
-    double fastest_bound_ms = 0;
+    // The same work at the benchmarks' median rounds: the spread a busy machine adds (render's JSON shows it).
+    double median_bound_ms = 0;
     std::string limiter;          // the resource that bounds the frame (WorkItem::resource)
     std::vector<std::string> unmeasured;  // work whose resource has no ceiling measured
     // The work was the most the frame can do (FrameWork::upper_bound): the fraction is then at most this, and a frame

@@ -16,12 +16,15 @@
 #include <cstdio>
 #include <functional>
 #include <memory>
+#include <utility>
 
 namespace gsv {
 namespace {
 
 // Lookups a fragment or invocation, and multiply-add iterations: enough that the per-fragment overhead is small.
 constexpr int kFetches = 16;
+// Lookups a fragment of a pair (fetch_pair.frag): LIC-like, in a loop of a uniform count, not unrolled.
+constexpr int kPairFetches = 64;
 constexpr int kIterations = 64;
 constexpr int kFlopsPerIteration = 32;  // four vec4 multiply-adds
 constexpr int kFillQuads = 4;           // full-screen quads a fill frame
@@ -40,6 +43,18 @@ const std::vector<TextureKind> kFragmentTextures{{"RGB32F", "2D"}, {"RG32F", "2D
                                                  {"RGBA8", "2D"},  {"RGBA32F", "2D"},     {"RG32F", "2D array"},
                                                  {"RG32F", "3D"},  {"R32F", "3D"},        {"RGB32F", "3D"}};
 const std::vector<TextureKind> kComputeTextures{{"RG32F", "2D"}, {"R32F", "3D"}, {"RGB32F", "3D"}};
+// The pairs LIC reads taking turns (flow, input): lab 02's flow with its noise or its photograph, lab 03's flow in
+// each storage with its noise (pair_ceiling_key).
+const std::vector<std::pair<TextureKind, TextureKind>> kFragmentPairs{
+    {{"RG32F", "2D"}, {"RGB32F", "2D"}},
+    {{"RG32F", "2D"}, {"RGBA8", "2D"}},
+    {{"RG32F", "2D"}, {"R32F", "2D"}},
+    {{"RG32F", "2D array"}, {"R32F", "2D"}},
+    {{"RG32F", "3D"}, {"R32F", "2D"}}};
+
+std::string pair_key(const TextureKind& flow, const TextureKind& input) {
+    return pair_ceiling_key(flow.format + " " + flow.dimension, input.format + " " + input.dimension, ShaderPath::Fragment);
+}
 
 TexelFormat texel_format(const std::string& name) {
     if (name == "R32F") return TexelFormat::R32F;
@@ -104,6 +119,22 @@ public:
             list.push_back({"fetch " + kind.format + " " + kind.dimension + " fragment", "fetches/s", pixels * kFetches, {},
                             [this, &p, t] { draw_quad(p, t); }});
         }
+        for (const auto& [flow, input] : kFragmentPairs) {
+            const std::size_t f = keep_texture(flow), i = keep_texture(input);
+            const std::string dim = flow.dimension == "3D" ? "FLOW_3D" : flow.dimension == "2D array" ? "FLOW_ARRAY" : "FLOW_2D";
+            const ShaderProgram& p = keep_program({"fullscreen.vert", "fetch_pair.frag"}, with_counts({{dim, ""}}, kPairFetches));
+            list.push_back({pair_key(flow, input), "fetches/s", pixels * kPairFetches, {}, [this, &p, f, i] {
+                                target_.bind();
+                                glDisable(GL_DEPTH_TEST);
+                                glDisable(GL_BLEND);
+                                p.use();
+                                p.bind("uFlow", textures_[f]);
+                                p.bind("uInput", textures_[i]);
+                                p.set("uStep", steps_[i] * 16.0f);  // a texel
+                                glUniform1i(p.location("uSteps"), kPairFetches / 2);
+                                quad_.draw();
+                            }});
+        }
         for (const TextureKind& kind : kComputeTextures) {
             const std::size_t t = keep_texture(kind);
             const ShaderProgram& p = keep_program({"fetch.comp"}, with_counts(dimension_defines(kind)));
@@ -157,8 +188,8 @@ public:
 private:
     static constexpr std::size_t kNoTexture = static_cast<std::size_t>(-1);
 
-    std::vector<ShaderDefine> with_counts(std::vector<ShaderDefine> defines) const {
-        defines.push_back({"FETCHES", std::to_string(kFetches)});
+    std::vector<ShaderDefine> with_counts(std::vector<ShaderDefine> defines, int fetches = kFetches) const {
+        defines.push_back({"FETCHES", std::to_string(fetches)});
         defines.push_back({"ITERATIONS", std::to_string(kIterations)});
         defines.push_back({"SIDE", std::to_string(o_.side)});
         return defines;
@@ -231,6 +262,7 @@ private:
 std::vector<std::string> ceiling_keys() {
     std::vector<std::string> keys;
     for (const auto& k : kFragmentTextures) keys.push_back("fetch " + k.format + " " + k.dimension + " fragment");
+    for (const auto& [flow, input] : kFragmentPairs) keys.push_back(pair_key(flow, input));
     for (const auto& k : kComputeTextures) keys.push_back("fetch " + k.format + " " + k.dimension + " compute");
     for (const char* k : {"storage compute", "fragments", "flops fragment", "flops compute"}) keys.push_back(k);
     return keys;
