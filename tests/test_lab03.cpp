@@ -344,7 +344,7 @@ TEST_CASE("lab03: the sweep measures sampling error, temporal error and memory f
         REQUIRE(run.exit_code() == 0);
         const auto rows = test::lines_of(test::read_text(dir.path("lab03-sweep.csv")));
         REQUIRE(rows.size() == 1 + 2 * 7);  // header, nearest and linear x 7 slice counts
-        CHECK(rows[0] == "blend,slices,median_ms,min_ms,rmse,max_diff,sample_err,temporal_rmse,flow_MiB,p25_ms,p75_ms,reference");
+        CHECK(rows[0] == "blend,slices,median_ms,min_ms,rmse,max_diff,sample_err,temporal_rmse,flow_MiB,work,bound_ms,fraction,limiter,p25_ms,p75_ms,reference");
         for (std::size_t i = 1; i < rows.size(); ++i) {
             INFO(rows[i]);
             const double sample_err = std::stod(cell(rows[i], 6));

@@ -355,7 +355,7 @@ TEST_CASE("lab01: sweep mode measures both shading rates against the exact spher
     REQUIRE(rows.size() == 1 + 2 * 10);  // header, 2 shading rates x 10 resolutions
     const std::string& header = rows[0];
     CHECK(header == "shading_rate,mesh_resolution,median_ms,min_ms,rmse,max_diff,shading_err_mean,shading_err_max,"
-                    "normal_err_mean_deg,normal_err_max_deg,p25_ms,p75_ms,reference");
+                    "normal_err_mean_deg,normal_err_max_deg,work,bound_ms,fraction,limiter,p25_ms,p75_ms,reference");
     // The reference is named in words: the exact sphere, not the finest mesh.
     CHECK(rows[1].find(",the exact sphere, ray-cast") == std::string::npos);  // commas in a cell would split it
     CHECK(rows[1].find("the exact sphere; ray-cast at each pixel and lit with its exact normal") != std::string::npos);
@@ -397,8 +397,8 @@ TEST_CASE("sweep report: a measure only some rows have gets one column, blank or
     report.knob = "k";
     report.series = "mode";
     report.reference_name = "the exact answer, analytic";
-    report.rows = {{"a", "1", 2.0, 2.0, 1.5, 2.5, 0.5, 3, {{"shared", 1.0}}},
-                   {"b", "1", 4.0, 4.0, 3.5, 4.5, 0.25, 2, {{"only_b", 7.0}, {"shared", 2.0}}}};
+    report.rows = {{"a", "1", 2.0, 2.0, 1.5, 2.5, 0.5, 3, {{"shared", 1.0}}, "", std::nullopt},
+                   {"b", "1", 4.0, 4.0, 3.5, 4.5, 0.25, 2, {{"only_b", 7.0}, {"shared", 2.0}}, "", std::nullopt}};
     const auto csv = test::lines_of(report.csv());
     REQUIRE(csv.size() == 3);
     // The spread and the reference in words come last, so a column's number does not depend on them.

@@ -1,6 +1,7 @@
 #include "common/app/app.h"
 
 #include "common/app/app_session.h"
+#include "common/app/fetch_counter.h"
 #include "common/core/error.h"
 #include "common/core/version.h"
 #include "common/gl/gl.h"
@@ -33,6 +34,7 @@ LabKit::LabKit(Context& context, Params& params, const Assets& assets, Profile p
           options.version = context.effective_version();
           options.include_dirs = assets.shader_include_dirs();
           if (const auto snap = texel_snap_define()) options.defines.push_back(*snap);
+          if (const auto count = fetch_count_define()) options.defines.push_back(*count);
           return options;
       }()) {}
 
@@ -191,6 +193,12 @@ static void print_list(Session& s) {
     std::printf("%s: %s (%s), needs OpenGL %s (%s%s) or OpenGL ES %s (%s)\nparameters:\n%s", s.info.id.c_str(),
                 s.info.title.c_str(), s.variant.c_str(), s.info.needs.str().c_str(), s.info.needs_why.c_str(),
                 uses.c_str(), s.info.needs_es.str().c_str(), s.info.needs_es_why.c_str(), s.params.describe().c_str());
+    // The work of a frame at the size asked for (--size), with the settings asked for (--set, --case): from the
+    // lab's own loop structure, so that a frame time can be held against what the device allows (scripts/kit bench).
+    const Frame frame{s.options.width, s.options.height, 0.0};
+    const FrameWork work = s.lab->frame_work(frame);
+    std::printf("work per frame at %dx%d:\n%s", frame.width, frame.height,
+                work.empty() ? "  (not stated)\n" : work.describe().c_str());
     std::printf("cases (%s; graded ones name their TODO):\n", s.case_file().lexically_normal().string().c_str());
     for (const auto& c : cases) {
         std::printf("  %-18s %s%s\n", c.name.c_str(), c.todo.empty() ? "(demo) " : ("(" + c.todo + ") ").c_str(), c.description.c_str());

@@ -18,6 +18,7 @@
 #include "common/scene/transforms.h"
 #include "common/shader/shader_library.h"
 #include "common/shader/transform_uniforms.h"
+#include "common/timing/frame_work.h"
 
 #include <filesystem>
 #include <functional>
@@ -71,6 +72,10 @@ public:
     // A parameter changed (window keys, the next sweep point or animation frame): rebuild what depends on it,
     // e.g. a mesh.
     virtual void params_changed(LabKit&) {}
+    // What a frame with the current settings asks of the device (common/timing/frame_work.h): texture fetches by
+    // format, storage bytes, fragments, arithmetic, counted from the lab's own loops; shown by `list`, in sweeps and
+    // against the device's ceilings. Empty: not stated.
+    virtual FrameWork frame_work(const Frame&) const { return {}; }
     // What render mode writes beside the image for the grader to compare with the reference's; most labs none.
     virtual std::vector<DataArray> readback(LabKit&) { return {}; }
     // Where colour is data (a height, a speed, an intensity's colour and opacity): what the colours of the frame last

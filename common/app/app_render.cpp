@@ -2,6 +2,7 @@
 // arrays a lab hands in (common/io/data_array.h). Under the grader the same three go over its hand-in socket instead
 // of into files, and the timed frames answer its challenges (common/io/handin.h).
 #include "common/app/app_session.h"
+#include "common/app/fetch_counter.h"
 #include "common/core/error.h"
 #include "common/gl/framebuffer.h"
 #include "common/gl/gl.h"
@@ -17,6 +18,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 namespace gsv {
 
@@ -38,6 +40,25 @@ Json gl_json(const Context& context) {
     gl["requested"] = info.requested.str();
     gl["effective"] = context.effective_version().str();
     return gl;
+}
+
+// The lab's stated work: one entry per resource, as Lab::frame_work counts it.
+Json work_json(const FrameWork& work) {
+    Json items = Json::array();
+    for (const auto& item : work.items) {
+        Json entry = Json::object();
+        entry["ceiling"] = item.ceiling_key();
+        entry["kind"] = work_kind_name(item.kind);
+        entry["path"] = shader_path_name(item.path);
+        if (!item.texture.empty()) entry["texture"] = item.texture;
+        entry["amount"] = item.amount;
+        entry["what"] = item.what;
+        items.push_back(entry);
+    }
+    Json out = Json::object();
+    out["items"] = items;
+    out["upper_bound"] = work.upper_bound;
+    return out;
 }
 
 Json timing_json(const TimingStats& t, int warmup) {
@@ -150,6 +171,22 @@ int run_render(Session& s) {
     }, warmup, frames);
     check_gl_error("rendering the frame");
 
+    // The instrumented build (GSV_COUNT_FETCHES): one more frame, its lookups counted, held beside the work the lab
+    // states for it. Not under the grader, whose frames are the student's.
+    std::optional<FetchCounts> counted;
+    if (fetch_count_define() && !grader.active()) {
+        FetchCounter counter;
+        counter.reset_and_bind();
+        target.bind();
+        s.render_frame(frame);
+        counted = counter.read();
+    }
+    const FrameWork work = s.lab->frame_work(frame);
+    // Against this device's ceilings where gsv-ceilings has measured them (build/ceilings.json): what scripts/kit
+    // bench's roofline table reads.
+    std::optional<Roofline> bound;
+    if (const auto ceilings = cached_ceilings(s.executable, s.context->info().renderer)) bound = roofline(work, *ceilings);
+
     const Readback shot = read_back(target);
     const Image& image = shot.image;
     const FloatStats& stats = shot.stats;
@@ -176,6 +213,23 @@ int run_render(Session& s) {
     report["params"] = params_json(s.params);
     report["timing"] = timing_json(timing, warmup);
     report["gl"] = gl_json(*s.context);
+    if (!work.empty()) report["work"] = work_json(work);
+    if (bound) {
+        Json r = Json::object();
+        r["bound_ms"] = bound->bound_ms;
+        r["median_bound_ms"] = bound->median_bound_ms;
+        r["fraction"] = bound->fraction(timing.median_ms);
+        r["limiter"] = bound->limiter;
+        r["upper_bound"] = bound->upper_bound;
+        report["roofline"] = r;
+    }
+    if (counted) {
+        Json c = Json::object();
+        c["2d"] = static_cast<double>(counted->texture_2d);
+        c["3d"] = static_cast<double>(counted->texture_3d);
+        c["2d_array"] = static_cast<double>(counted->texture_2d_array);
+        report["fetches_counted"] = c;
+    }
     report["float_target"] = target.format() == ColorFormat::RGBA32F;  // false: NaN and Inf could not be counted
     report["nan_pixels"] = static_cast<double>(stats.nan_count);
     report["inf_pixels"] = static_cast<double>(stats.inf_count);
@@ -189,8 +243,9 @@ int run_render(Session& s) {
         for (const auto& a : arrays) write_f32_file(data_array_path(png, a.name), a.values);
         std::ofstream out(json_path);
         if (!out || !(out << report.dump(2) << "\n")) throw Error("cannot write '" + json_path + "'");
-        std::printf("%s: wrote %s (%dx%d), median %.2f ms/frame over %d frames\n", s.info.id.c_str(), png.c_str(), width,
-                    height, timing.median_ms, timing.frames);
+        std::printf("%s: wrote %s (%dx%d), median %.2f ms/frame over %d frames%s\n", s.info.id.c_str(), png.c_str(), width,
+                    height, timing.median_ms, timing.frames,
+                    bound ? (": " + bound->describe(timing.median_ms)).c_str() : "");
         for (const auto& file : debug_images) std::printf("%s: wrote %s\n", s.info.id.c_str(), file.string().c_str());
         for (const auto& a : arrays)
             std::printf("%s: wrote %s (%zu x %d floats)\n", s.info.id.c_str(), data_array_path(png, a.name).string().c_str(),

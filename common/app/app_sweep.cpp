@@ -117,6 +117,8 @@ public:
         report_.width = s.options.width;
         report_.height = s.options.height;
         report_.plotted_error = lab_plan.error_column();
+        // This device's ceilings, where gsv-ceilings has measured them (never measured here: a sweep times the lab).
+        ceilings_ = cached_ceilings(s.executable, s.context->info().renderer);
 
         // Each point is a step of the progress line, and so is each switch to it while timing (once to size its
         // batches, then once a round).
@@ -164,6 +166,12 @@ public:
             row.min_ms = times[i].min_ms;
             row.p25_ms = times[i].p25_ms;
             row.p75_ms = times[i].p75_ms;
+            if (ceilings_) row.roofline = roofline(point_work_[i], *ceilings_);
+            if (row.roofline && !row.roofline->upper_bound && row.median_ms < row.roofline->bound_ms)
+                std::fprintf(stderr, "  %s=%s: %.3f ms is faster than this device's %s ceiling allows (%.3f ms at its "
+                                     "fastest): a frame that was not waited for, or work overstated\n",
+                             knob_name_.c_str(), row.knob.c_str(), row.median_ms, row.roofline->limiter.c_str(),
+                             row.roofline->bound_ms);
             std::fprintf(stderr, "  %s%s%s %s=%s: %.3f ms [%.3f, %.3f], rmse %.3f\n", series_name_.c_str(),
                          series_name_.empty() ? "" : "=", row.series.c_str(), knob_name_.c_str(), row.knob.c_str(),
                          row.median_ms, row.p25_ms, row.p75_ms, row.rmse);
@@ -230,6 +238,9 @@ private:
         row.series = series_value;
         row.knob = knob_value;
         row.extra = lab_plan_.metrics(*s_.kit, frame_);  // while this point's settings are current
+        const FrameWork work = s_.lab->frame_work(frame_);
+        row.work = work.summary();
+        point_work_.push_back(work);
         const ImageDiff diff = compare_images(image, exact_image ? *exact_image : reference_of(curve), ImageTolerance{});
         row.rmse = diff.rmse;
         row.max_diff = diff.max_channel_diff;
@@ -281,6 +292,8 @@ private:
     int planned_points_ = 0;
     std::optional<Progress> progress_;
     std::vector<std::vector<std::string>> point_settings_;
+    std::vector<FrameWork> point_work_;
+    std::optional<Ceilings> ceilings_;
     int left_out_ = 0;
     bool exact_ = false;
 };

@@ -257,6 +257,8 @@ public:
         : s_(s), window_(s.context->window()), panel_(panel), scripted_keys_(std::move(scripted_keys)),
           panel_state_{s.params, input_.selected, 0, 0, s.title(), gl_line(s), "", "", {}, "", std::nullopt},
           start_(now_seconds()), last_reload_check_(start_), last_frame_(start_), last_good_(s.params) {
+        // Read once, never measured here: a window must not stall (gsv-ceilings measures them, scripts/kit bench runs it).
+        ceilings_ = cached_ceilings(s.executable, s.context->info().renderer);
         input_.session = &s;
         input_.panel = &panel;
         input_.panel_state = &panel_state_;
@@ -374,6 +376,10 @@ private:
         }
         glFinish();
         panel_state_.render_ms = 1000.0 * (now_seconds() - t0);
+        panel_state_.ceiling.clear();
+        if (ceilings_)
+            if (const auto bound = roofline(s_.lab->frame_work(Frame{size.width, size.height, now - start_, true}), *ceilings_))
+                panel_state_.ceiling = bound->describe(panel_state_.render_ms);
         ++frame_index_;
         return true;
     }
@@ -459,6 +465,7 @@ private:
     bool legend_stale_ = true;  // what the colours stand for: asked again after a change, not every frame
     Params last_good_;
     Framebuffer picture_;  // the lab draws here, as headless, then the picture is copied beside the panel
+    std::optional<Ceilings> ceilings_;  // this device's, where measured: the frame line's share of them
 };
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 
 namespace gsv {
@@ -76,6 +77,14 @@ std::string shown_cell(const SweepRow& row, const std::string& name, int digits)
     return cell;
 }
 
+bool any_work(const std::vector<SweepRow>& rows) {
+    return std::any_of(rows.begin(), rows.end(), [](const SweepRow& r) { return !r.work.empty(); });
+}
+
+bool any_roofline(const std::vector<SweepRow>& rows) {
+    return std::any_of(rows.begin(), rows.end(), [](const SweepRow& r) { return r.roofline.has_value(); });
+}
+
 }  // namespace
 
 std::string SweepReport::table() const {
@@ -89,6 +98,8 @@ std::string SweepReport::table() const {
                   knob.c_str(), "ms/frame", "spread", "x first", "RMSE", "max diff");
     out << line;
     const std::vector<std::string> extras = shown_columns(extra_columns(rows));
+    const bool rooflines = any_roofline(rows);
+    if (rooflines) out << " " << std::setw(9) << "ceiling";
     // Values are right-aligned under their names, however long the names are.
     std::vector<int> widths;
     for (const auto& name : extras) {
@@ -103,6 +114,7 @@ std::string SweepReport::table() const {
         std::snprintf(line, sizeof line, "%-12s %-10s %10.3f %17s %8.2f %10.3f %8d", r.series.c_str(), r.knob.c_str(),
                       r.median_ms, spread.c_str(), base_ms > 0 ? r.median_ms / base_ms : 0.0, r.rmse, r.max_diff);
         out << line;
+        if (rooflines) out << " " << std::setw(9) << (r.roofline ? fixed(100.0 * r.roofline->fraction(r.median_ms), 1) + "%" : "-");
         for (std::size_t k = 0; k < extras.size(); ++k) {
             // Significant digits: an error of 3e-8 must not print as 0.0000.
             std::snprintf(line, sizeof line, " %*s", widths[k], shown_cell(r, extras[k], 4).c_str());
@@ -110,6 +122,14 @@ std::string SweepReport::table() const {
         }
         out << "\n";
     }
+    if (rooflines)
+        for (const auto& r : rows)
+            if (r.roofline) {
+                out << "ceiling: the share of this device's bound the frame reaches; " << r.series << (r.series.empty() ? "" : " ")
+                    << knob << "=" << r.knob << " is bound by " << r.roofline->limiter << " at "
+                    << format_number(r.roofline->bound_ms, 3) << " ms (" << r.work << ")\n";
+                break;
+            }
     return out.str();
 }
 
@@ -118,6 +138,8 @@ std::string SweepReport::csv() const {
     out << (series.empty() ? "series" : series) << "," << knob << ",median_ms,min_ms,rmse,max_diff";
     const std::vector<std::string> extras = extra_columns(rows);
     for (const auto& name : extras) out << "," << name;
+    const bool work = any_work(rows);
+    if (work) out << ",work,bound_ms,fraction,limiter";
     out << ",p25_ms,p75_ms,reference\n";
     // The reference in words, in the last column (no commas in a CSV field that is not quoted).
     std::string words = reference_name;
@@ -129,6 +151,14 @@ std::string SweepReport::csv() const {
             // An empty cell where this row has no such measure: gnuplot skips it.
             if (const double* value = extra_value(r, name)) out << "," << format_number(*value);
             else out << ",";
+        }
+        if (work) {
+            out << "," << r.work;
+            if (r.roofline)
+                out << "," << format_number(r.roofline->bound_ms) << "," << format_number(r.roofline->fraction(r.median_ms), 4) << ","
+                    << r.roofline->limiter;
+            else
+                out << ",,,";
         }
         out << "," << fixed(r.p25_ms, 4) << "," << fixed(r.p75_ms, 4) << "," << words << "\n";
     }

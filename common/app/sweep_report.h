@@ -1,8 +1,10 @@
 #pragma once
 // The accuracy-versus-time table of a sweep: printed, written as CSV, and plotted with gnuplot.
 #include "common/app/sweep_plan.h"
+#include "common/timing/frame_work.h"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,6 +18,10 @@ struct SweepRow {
     double rmse = 0;      // image RMSE over RGB (0..255) against the reference
     int max_diff = 0;     // largest channel difference against the reference
     SweepMetrics extra;   // the lab's own error measures
+    // What the frame asks of the device (Lab::frame_work's summary; empty: not stated), and against this device's
+    // ceilings where they are known (common/timing/frame_work.h): the bound, the fraction of it reached, the limiter.
+    std::string work;
+    std::optional<Roofline> roofline;
 };
 
 struct SweepReport {

@@ -28,6 +28,9 @@ struct PanelState {
     std::vector<InspectStage> stages;  // the lab's pipeline, for visual debugging (none: no inspector)
     std::string inspected;             // the stage image shown in place of the picture; empty: the picture
     std::optional<Legend> legend;      // what the colours stand for, where they are data (Lab::legend)
+    // The render time against this device's ceilings ("41% of this device's texture (fragment) ceiling"); empty where
+    // they are unknown (gsv-ceilings has not measured them) or the lab states no work for the frame.
+    std::string ceiling{};
 };
 
 // Where the panel goes: a column of the window, in window coordinates (GLFW's screen units).

@@ -72,6 +72,7 @@ public:
         ImGui::TextUnformatted(state.heading.c_str());
         ImGui::Text("%.2f ms render (glFinish), %.1f fps", state.render_ms,
                     state.frame_ms > 0 ? 1000.0 / state.frame_ms : 0.0);
+        if (!state.ceiling.empty()) ImGui::TextWrapped("%s", state.ceiling.c_str());
         ImGui::TextDisabled("%s", state.gl.c_str());
         if (!state.view.empty() || !state.inspected.empty()) {
             ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.55f, 0.85f, 1.0f, 1.0f));

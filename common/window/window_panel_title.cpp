@@ -15,10 +15,11 @@ public:
         const auto& spec = state.params.specs()[static_cast<std::size_t>(state.selected)];
         const std::string inactive = state.params.inactive_reason(spec.name);
         char title[640];
-        std::snprintf(title, sizeof title, "%s%s%s | %.2f ms render, %.1f fps | %s = %s%s%s  (H: keys)%s%s",
+        std::snprintf(title, sizeof title, "%s%s%s | %.2f ms render, %.1f fps%s%s | %s = %s%s%s  (H: keys)%s%s",
                       state.heading.c_str(), state.view.empty() && state.inspected.empty() ? "" : " | ",
                       (state.inspected.empty() ? state.view : "inspecting " + state.inspected).c_str(), state.render_ms,
-                      state.frame_ms > 0 ? 1000.0 / state.frame_ms : 0.0, spec.name.c_str(),
+                      state.frame_ms > 0 ? 1000.0 / state.frame_ms : 0.0, state.ceiling.empty() ? "" : ", ",
+                      state.ceiling.c_str(), spec.name.c_str(),
                       state.params.get_text(spec.name).c_str(), inactive.empty() ? "" : ", no effect: ", inactive.c_str(),
                       state.status.empty() ? "" : " | ", state.status.substr(0, 80).c_str());
         glfwSetWindowTitle(window_, title);

@@ -12,6 +12,7 @@
 #include "common/scene/mesh_data.h"
 #include "support/flow/flow_field.h"
 #include "support/flow/lic_contrast_pass.h"
+#include "support/flow/lic_work.h"
 #include "support/flow/lic_view_params.h"
 #include "support/flow/moving_frame.h"
 #include "support/flow/noise.h"
@@ -44,12 +45,12 @@ public:
                           .applies_when(field_, {Field::File});
         // Only the lab reads it: it picks what goes into the texture uInput.
         input_ = p.add_enum("input", Input::Noise, kInputs, "what LIC smears: white noise, or a photograph").without_uniform();
-        p.add_int("length", 25, 0, 200, "steps each way along the streamline")
+        length_ = p.add_int("length", 25, 0, 200, "steps each way along the streamline")
             .accuracy_knob({"1", "2", "5", "10", "25", "50", "100"});
-        p.add_choice("streaks", "both", {"both", "forward"},
+        streaks_ = p.add_choice("streaks", "both", {"both", "forward"},
                      "streamlines followed both ways (a centred kernel), or forward only: one-sided streaks, the first loop alone")
             .at_compile_time();
-        p.add_choice("step", "euler", {"euler", "midpoint"}, "first-order (Euler) or second-order (midpoint) steps")
+        step_ = p.add_choice("step", "euler", {"euler", "midpoint"}, "first-order (Euler) or second-order (midpoint) steps")
             .at_compile_time()
             .series();
         p.add_effect("normalized", false, "unit steps along the flow, whatever its speed");
@@ -81,6 +82,20 @@ public:
             program.bind("uFlow", *flow_);
             quad_.draw();
         });
+    }
+
+    // lic.frag's loops: the input once a pixel and once a step, the flow once a step (Euler) or twice (midpoint).
+    gsv::FrameWork frame_work(const gsv::Frame& frame) const override {
+        gsv::LicLoops loops;
+        loops.width = frame.width;
+        loops.height = frame.height;
+        loops.length = length_.get();
+        loops.directions = streaks_.get() == "both" ? 2 : 1;
+        loops.flow_reads_per_step = step_.get() == "midpoint" ? 2 : 1;
+        loops.input_texture = input_.get() == Input::Photo ? "RGBA8 2D" : "RGB32F 2D";
+        loops.flow_texture = "RG32F 2D";
+        // The contrast's tone-curve pass reads with texelFetch (unfiltered) after a readback: the LIC pass is the work.
+        return gsv::lic_work(loops);
     }
 
     // What its sweep plan reads (sweep_view.h).
@@ -156,7 +171,8 @@ private:
     gsv::EnumParam<Input> input_;
     gsv::Param<std::string> field_file_;
     gsv::Param<float> speed_, time_, swirl_radius_;
-    gsv::Param<int> seed_;
+    gsv::Param<int> seed_, length_;
+    gsv::Param<std::string> streaks_, step_;
     gsv::LicViewParams view_;
     const gsv::ShaderLibrary::Entry* lic_ = nullptr;
     gsv::GpuMesh quad_;

@@ -13,6 +13,7 @@
 #include "support/flow/flow_field.h"
 #include "support/flow/lic_contrast_pass.h"
 #include "support/flow/lic_view_params.h"
+#include "support/flow/lic_work.h"
 #include "support/flow/noise.h"
 #include "sweep_view.h"
 #include "time_flow.h"
@@ -55,7 +56,7 @@ public:
         p.add_float("slice", 0, 0, 4095, "s, the position on the slice axis in slice units (playhead=slice): in [0, T) on a periodic axis, at most T - 1 on a clamped one")
             .with_step(0.25)
             .applies_when(playhead, {Playhead::Slice});
-        p.add_int("length", 20, 0, 200, "LIC steps each way");
+        length_ = p.add_int("length", 20, 0, 200, "LIC steps each way");
         s.grid = p.add_int("grid", 256, 16, 1024, "flow texels across (the domain is twice as wide as high)");
         s.speed = p.add_float("speed", 1.0, 0, 4, "largest speed, in flow texels per step").with_step(0.1);
         seed_ = p.add_int("seed", 1, 0, 1000000, "the white noise");
@@ -85,6 +86,22 @@ public:
             program.set("uFlowTexel", glm::vec2(1.0f / float(flow_->width), 1.0f / float(flow_->height)));
             quad_.draw();
         });
+    }
+
+    // lic_time.frag's loops, lab 02's with midpoint steps both ways, and flow_time.glsl's lookups a read of the flow:
+    // two slices blended linearly are two lookups, except in the 3D texture, whose filter blends them in one.
+    gsv::FrameWork frame_work(const gsv::Frame& frame) const override {
+        const lab03::Storage storage = slice_params_.storage.get();
+        const bool linear = slice_params_.blend.get() == gsv::TimeBlend::Linear;
+        gsv::LicLoops loops;
+        loops.width = frame.width;
+        loops.height = frame.height;
+        loops.length = length_.get();
+        loops.flow_reads_per_step = 2;
+        loops.flow_fetches_per_read = linear && storage != lab03::Storage::Volume ? 2 : 1;
+        loops.input_texture = "R32F 2D";
+        loops.flow_texture = storage == lab03::Storage::Array ? "RG32F 2D array" : storage == lab03::Storage::Volume ? "RG32F 3D" : "RG32F 2D";
+        return gsv::lic_work(loops);
     }
 
     // What its sweep plan reads (sweep_view.h).
@@ -138,7 +155,7 @@ private:
     }
 
     lab03::SliceParams slice_params_;
-    gsv::Param<int> seed_;
+    gsv::Param<int> seed_, length_;
     gsv::LicViewParams view_;
     const gsv::ShaderLibrary::Entry* lic_ = nullptr;
     gsv::GpuMesh quad_;

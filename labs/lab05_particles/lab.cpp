@@ -126,6 +126,31 @@ public:
         lab05::draw_particles(buffers_);
     }
 
+    // A headless frame runs round(time / h) steps from the start, after the restart's step of length 0; each step
+    // advect.comp reads a particle's position and velocity (16 bytes each) and its origin (32: returnIfOutside's
+    // arguments), and writes the position, the velocity and, coloured by speed, the colour (16 each). Its
+    // integrator looks the velocity up once (Euler), twice (midpoint) or four times (RK4) a step.
+    gsv::FrameWork frame_work(const gsv::Frame& frame) const override {
+        // A window's frame catches up at most kMaxStepsPerFrame steps, or none: what it did is not its settings'.
+        if (frame.interactive) return {};
+        const double steps = static_cast<double>(lab05::steps_for(time_.get(), params_.time_step.get()) + 1);
+        const double particles = count_.get();
+        const bool colored = params_.color_by_speed.get();
+        const double bytes = 16 + 16 + 32 + 16 + 16 + (colored ? 16 : 0);
+        const std::string per = std::to_string(static_cast<long>(steps)) + " steps of " +
+                                std::to_string(count_.get()) + " particles";
+        gsv::FrameWork work;
+        work.items.push_back({gsv::WorkKind::StorageBytes, gsv::ShaderPath::Compute, "", steps * particles * bytes,
+                              std::to_string(static_cast<int>(bytes)) + " bytes a particle step (read 64, write " +
+                                  (colored ? "48" : "32") + "), " + per});
+        if (params_.source.get() == lab05::Source::Texture) {
+            const gsv::Integrator integrator = params_.integrator.get();
+            const int lookups = integrator == gsv::Integrator::Euler ? 1 : integrator == gsv::Integrator::Midpoint ? 2 : 4;
+            work.items.push_back({gsv::WorkKind::Fetch, gsv::ShaderPath::Compute, "RGB32F 3D", steps * particles * lookups,
+                                  std::to_string(lookups) + " velocity lookups a particle step, " + per});
+        }
+        return work;
+    }
     // The speed colours as speed_color.glsl gives them, and what a particle faster than the scale gets.
     std::optional<gsv::Legend> legend(gsv::LabKit& kit) override {
         if (!params_.color_by_speed.get()) return std::nullopt;

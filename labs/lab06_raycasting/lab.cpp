@@ -89,6 +89,12 @@ public:
         glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));
     }
 
+    // The ray caster's loop, counted by the processor that runs it; nothing before a frame has read the volume.
+    gsv::FrameWork frame_work(const gsv::Frame& frame) const override {
+        const auto* raycaster = dynamic_cast<const lab06::RayTraversal*>(network_ ? network_->find("raycaster") : nullptr);
+        return raycaster ? raycaster->frame_work(frame.width, frame.height) : gsv::FrameWork{};
+    }
+
     // What its sweep plan reads (sweep_view.h).
     lab06::RayTraversal* raycaster() override {
         return dynamic_cast<lab06::RayTraversal*>(network_ ? network_->find("raycaster") : nullptr);

@@ -38,6 +38,11 @@ public:
     const gsv::Texture& transfer_function();
     std::string transfer_function_name() const { return transfer_function_.param().get(); }
     const gsv::EnumParam<Shader>& shader() const { return shader_; }
+    // What a frame of width x height asks at most (issue 44): each pixel's ray through the volume's box, from the
+    // last frame's camera, sampled as raycast_skeleton.glsl steps it, each sample with the lookups its modules make
+    // (early termination, transparent samples, clipping planes and geometry only shorten it). None before the first
+    // frame has read the volume.
+    gsv::FrameWork frame_work(int width, int height) const;
     double iso_value() const { return iso_.iso_value().in_double().get(); }
 
 private:
@@ -54,6 +59,8 @@ private:
     gsv::EnumParam<Shader> shader_;
     gsv::EnumParam<TransferFunction> transfer_function_;
     gsv::RaySetup rays_;
+    FrameView last_view_;                       // the last frame's camera and volume box, for frame_work
+    gsv::VolumeBox last_box_{glm::dvec3(1.0)};
     gsv::DvrCompositing dvr_;
     gsv::IsoCompositing iso_;
     gsv::PhongShading phong_;

@@ -5,6 +5,7 @@
 // and no texture per element: the basis (nodes and barycentric weights) is 2 (p + 1) uniform floats, the
 // values one buffer. Beside it, the same elements drawn from their corner values only.
 #include "common/app/app.h"
+#include "common/core/number_text.h"
 #include "common/app/legend_probe.h"
 #include "common/gl/gl.h"
 #include "element_data.h"
@@ -45,11 +46,11 @@ public:
                        .accuracy_knob({"1", "2", "3", "4", "6", "8", "12", "16"});
         e.node_set = p.add_enum("node_set", gsv::NodeSet::GaussLobattoLegendre, gsv::kNodeSetNames,
                                 "Gauss-Lobatto-Legendre or equispaced nodes").series();
-        const auto evaluation = p.add_enum("evaluation", Evaluation::Full, kEvaluations,
+        evaluation_ = p.add_enum("evaluation", Evaluation::Full, kEvaluations,
                                            "the polynomial per fragment, the bilinear blend of each element's corner values, "
                                            "or one basis function l_k(xi) in grey across every element").at_compile_time();
         p.add_int("basis_index", 1, 0, 16, "k: the basis function drawn (evaluation=basis), clamped to the degree")
-            .applies_when(evaluation, {Evaluation::Basis});
+            .applies_when(evaluation_, {Evaluation::Basis});
         e.subdivisions = p.add_int("subdivisions", 6, 1, 64, "quads per element side, to follow curved elements (the field is per fragment)");
         e.time = p.add_float("time", 0, 0, 6.2832, "the field's time: play it in the window").with_step(0.05).animated();
         auto_range_ = p.add_bool("auto_range", true, "colour range from the smallest to the largest node value");
@@ -111,6 +112,26 @@ public:
         return legend;
     }
 
+    // spectral.glsl a fragment, with n = degree + 1 nodes: the basis in xi and in eta (n subtractions, divisions and
+    // additions each, then n divisions: 4n flops each), then the tensor sum, n^2 multiply-adds of n^2 node values
+    // and n more: 2n^2 + 10n flops. At most one fragment a pixel.
+    gsv::FrameWork frame_work(const gsv::Frame& frame) const override {
+        const double n = element_params_.degree.get() + 1;
+        const double fragments = static_cast<double>(frame.width) * frame.height;
+        gsv::FrameWork work;
+        work.upper_bound = true;
+        if (evaluation_.get() == Evaluation::Full) {
+            work.items.push_back({gsv::WorkKind::Flops, gsv::ShaderPath::Fragment, "", fragments * (2 * n * n + 10 * n),
+                                  "2n^2 + 10n a fragment, n = " + gsv::format_number(n, 3)});
+            work.items.push_back({gsv::WorkKind::Fetch, gsv::ShaderPath::Fragment, "R32F buffer", fragments * n * n,
+                                  "n^2 node values a fragment (texelFetch), n = " + gsv::format_number(n, 3)});
+        } else {
+            work.items.push_back({gsv::WorkKind::Fragments, gsv::ShaderPath::Fragment, "", fragments,
+                                  "one fragment a pixel at most"});
+        }
+        return work;
+    }
+
     // What its sweep plan reads (sweep_view.h).
     const lab07::ElementData& element_data() const override { return data_; }
     const lab07::MeasurePrograms& measure_programs() const override { return programs_; }
@@ -128,6 +149,7 @@ private:
     }
 
     lab07::ElementParams element_params_;
+    gsv::EnumParam<Evaluation> evaluation_;
     gsv::Param<bool> auto_range_, element_edges_;
     gsv::Param<float> range_min_, range_max_, zoom_, centre_x_, centre_y_;
     lab07::MeasurePrograms programs_;

@@ -16,3 +16,5 @@ in vec4 aTexCoord0;
 
 // Off unless the margin table's 8-bit filter stand-in asks for it (GSV_TEXEL_SNAP).
 #include "gsv/texel_snap.glsl"
+// Off unless the instrumented build that counts texture fetches asks for it (GSV_COUNT_FETCHES).
+#include "gsv/fetch_count.glsl"

@@ -92,6 +92,16 @@ public:
         return mesh;
     }
 
+    // The lesson is per-fragment shading of a model that covers part of the frame: at most one shaded fragment a
+    // pixel (fill), the lighting a few dozen flops each.
+    gsv::FrameWork frame_work(const gsv::Frame& frame) const override {
+        gsv::FrameWork work;
+        work.upper_bound = true;
+        work.items.push_back({gsv::WorkKind::Fragments, gsv::ShaderPath::Fragment, "",
+                              static_cast<double>(frame.width) * frame.height, "one shaded fragment a pixel at most"});
+        return work;
+    }
+
     // What its sweep plan reads (sweep_view.h).
     bool exact_sphere_applies() const override {
         const glm::vec3 scale = scale_.get();

@@ -86,6 +86,18 @@ public:
         grid_->draw();
     }
 
+    // terrain.frag's lookups a fragment: the height, and normal.glsl's four for the differences east and north (the
+    // seed's five); at most one fragment a pixel, where the terrain fills the frame.
+    gsv::FrameWork frame_work(const gsv::Frame& frame) const override {
+        gsv::FrameWork work;
+        work.upper_bound = true;
+        work.items.push_back({gsv::WorkKind::Fetch, gsv::ShaderPath::Fragment, "R32F 2D",
+                              5.0 * frame.width * frame.height,
+                              std::string("5 height lookups a fragment (1 + 4 for the normal)") +
+                                  (mipmaps_.get() ? ", mipmapped: each trilinear, two levels" : "")});
+        return work;
+    }
+
     // What its sweep plan reads (sweep_view.h).
     const lab04::Terrain& terrain() const override { return *terrain_; }
 

@@ -1,10 +1,13 @@
 #include "ray_traversal.h"
 
 #include "common/core/error.h"
+#include "common/core/number_text.h"
 #include "common/gl/gl.h"
+#include "support/geometry/ray_box.h"
 #include "transfer_function.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace lab06 {
 
@@ -98,6 +101,55 @@ const gsv::Texture& RayTraversal::transfer_function() {
     return *transfer_function_table_;
 }
 
+gsv::FrameWork RayTraversal::frame_work(int width, int height) const {
+    if (!last_) return {};
+    const Config c = config();
+    // raycast_skeleton.glsl: ceil(length / step) samples, step = 1 / (samples_per_voxel x the largest side), at
+    // most kRcMaxSamples (raycast_common.glsl); the longest ray through the texture cube is its diagonal.
+    constexpr double kMaxSamples = 16384;
+    const double step = static_cast<double>(rays_.step_size());
+    // Each pixel's ray, from the near plane to the far plane, in texture space; its length inside [0,1]^3.
+    const glm::dmat4 to_model = glm::inverse(glm::dmat4(last_view_.projection) * glm::dmat4(last_view_.view));
+    auto texture_point = [&](double x, double y, double z) {
+        const glm::dvec4 p = to_model * glm::dvec4(x, y, z, 1.0);
+        return last_box_.texture_from_model(glm::dvec3(p) / p.w);
+    };
+    double rays = 0, samples = 0;
+    for (int py = 0; py < height; ++py)
+        for (int px = 0; px < width; ++px) {
+            const double x = 2.0 * (px + 0.5) / width - 1.0, y = 2.0 * (py + 0.5) / height - 1.0;
+            const glm::dvec3 near = texture_point(x, y, -1.0), far = texture_point(x, y, 1.0);
+            const auto span = gsv::ray_box_span(near, far - near, glm::dvec3(0.0), glm::dvec3(1.0));
+            if (!span) continue;
+            const double length = (std::min(span->exit, 1.0) - std::max(span->entry, 0.0)) * glm::length(far - near);
+            if (!(length >= 1e-6)) continue;
+            rays += 1;
+            samples += std::max(1.0, std::ceil(std::min(length / step, kMaxSamples) - 1e-3));
+        }
+    const double per_ray = rays > 0 ? samples / rays : 0;
+    const bool dvr = c.compositing == Config::Compositing::Dvr;
+    const bool per_sample_classify = c.classification == Config::Classification::TransferFunction &&
+                                     (dvr || c.compositing == Config::Compositing::FirstHit);
+    const bool per_sample_gradient = dvr && c.shading == Config::Shading::Phong;
+    const bool hit_gradient = c.compositing == Config::Compositing::Isosurface && c.shading == Config::Shading::Phong;
+    const double gradient_lookups = c.gradient == Config::Gradient::Central ? 6 : c.gradient == Config::Gradient::Forward ? 4 : 0;
+    const std::string along = gsv::format_number(per_ray, 4) + " samples a ray on average over " +
+                              gsv::format_number(rays, 6) + " rays";
+    gsv::FrameWork work;
+    work.upper_bound = true;
+    const double volume_per_sample = 1 + (per_sample_gradient ? gradient_lookups : 0);
+    work.items.push_back({gsv::WorkKind::Fetch, gsv::ShaderPath::Fragment, "R32F 3D",
+                          samples * volume_per_sample + (hit_gradient ? rays * gradient_lookups : 0),
+                          gsv::format_number(volume_per_sample, 3) + " volume lookups a sample, " + along});
+    if (c.gradient == Config::Gradient::Precomputed && (per_sample_gradient || hit_gradient))
+        work.items.push_back({gsv::WorkKind::Fetch, gsv::ShaderPath::Fragment, "RGB32F 3D", per_sample_gradient ? samples : rays,
+                              "the precomputed gradient, once a " + std::string(per_sample_gradient ? "sample" : "ray")});
+    if (per_sample_classify)
+        work.items.push_back({gsv::WorkKind::Fetch, gsv::ShaderPath::Fragment, "RGBA32F 2D", samples,
+                              "the transfer function, once a sample"});
+    return work;
+}
+
 void RayTraversal::process() {
     auto volume = input<VolumeData>("volume");
     auto entry = input<ImageData>("entry");
@@ -128,6 +180,9 @@ void RayTraversal::process() {
     rays_.exit_points = &exit->color();
     rays_.volume = &volume->texture;
     rays_.largest_side = largest;
+    last_view_ = v;
+    last_view_.kit = nullptr;
+    last_box_ = volume->box;
     rays_.texture_to_clip = v.projection * v.view * volume->box.model_from_texture_matrix();
     voxels_.spacing = glm::vec3(vol.spacing);
     gradients_.gradients = requested.gradient == Config::Gradient::Precomputed ? &volume->gradients() : &volume->texture;
