@@ -214,6 +214,16 @@ def main(argv):
         missed.add("mistakes_per_todo")
     say(f"5. mistakes: " + ", ".join(f"{todo} {n}" for todo, n in sorted(per_todo.items())) +
         f" (tests/mutants/{lab}.json{'' if mutants else ': none'})")
+    # The pairs test's stock: GLSL mistakes (a C++ one needs a build of its own) in two different TODOs.
+    glsl = {todo: 0 for todo in todos}
+    for m in (mutants or {}).get("mutants", []):
+        if m.get("todo") in glsl and not m.get("file", "").endswith((".cpp", ".h")):
+            glsl[m["todo"]] += 1
+    counts = list(glsl.values())
+    pairs = sum(counts[i] * counts[j] for i in range(len(counts)) for j in range(i + 1, len(counts)))
+    if pairs < least["mistake_pairs"]:
+        missed.add("mistake_pairs")
+    say(f"   pairs of GLSL mistakes in two TODOs: {pairs}")
     held_out = (read_json(os.path.join(kit, "tests", "heldout", lab + ".json")) or {}).get("mistakes", [])
     if len(held_out) < least["held_out_mistakes"]:
         missed.add("held_out_mistakes")

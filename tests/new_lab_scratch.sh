@@ -161,7 +161,7 @@ grep -q "^1. starters: labs/lab99_probe/ is what" "$log" || fail "check-lab: the
 grep -q "^2. goldens: every public case has its golden" "$log" || fail "check-lab: the goldens"
 grep -q "^3. self-check: the reference 1 / 1" "$log" && grep -q "the starter 0 / 1" "$log" || fail "check-lab: the self-check"
 grep -qE "^4. margins: (every case meets the bar|no implementation)" "$log" || fail "check-lab: the margins"
-for rule in public_cases hidden_cases mistakes_per_todo held_out_mistakes; do
+for rule in public_cases hidden_cases mistakes_per_todo mistake_pairs held_out_mistakes; do
   grep -q "misses the rule '$rule'" "$log" || fail "check-lab does not name the rule $rule"
 done
 grep -qE "misses the rule '(goldens|margins)'" "$log" && fail "check-lab names a rule the lab meets"
