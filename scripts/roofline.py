@@ -95,7 +95,7 @@ def main():
           f"(ceilings: {ceilings_file}); frame times: the median of {args.rounds} interleaved rounds [slowest, fastest]")
     header = f"{'lab':6} {'settings':28} {'bound ms':>9} {'limited by':22} {'frame ms':>9} {'rounds':>17} {'fraction':>8}  work"
     print(header)
-    rows, failed = [], []
+    rows, failed, unmeasured = [], [], []
     for lab, i, settings in points:
         report = reports[(lab, i)]
         measured = statistics.median(times[(lab, i)])
@@ -108,6 +108,8 @@ def main():
             if not upper and min(times[(lab, i)]) < roof["bound_ms"]:
                 failed.append(f"{lab} {name}: {min(times[(lab, i)]):.3f} ms is faster than the {roof['limiter']} ceiling "
                               f"allows ({roof['bound_ms']:.3f} ms at its fastest)")
+            if roof.get("unmeasured"):
+                unmeasured.append(f"{lab} {name}: {', '.join(roof['unmeasured'])}")
             cell = ("<=" if upper else "") + f"{100 * fraction:.1f}%"
             print(f"{lab:6} {name:28} {roof['bound_ms']:9.2f} {roof['limiter']:22} {measured:9.2f} {spread:>17} "
                   f"{cell:>8}  {work_cell(report)}")
@@ -115,6 +117,8 @@ def main():
         else:
             print(f"{lab:6} {name:28} {'-':>9} {'-':22} {measured:9.2f} {spread:>17} {'-':>8}  {work_cell(report)}")
             rows.append((lab, name, float("nan"), "", measured, float("nan"), work_cell(report), False))
+    for line in unmeasured:
+        print(f"no ceiling measured, left out of the bound: {line}")
     csv_path = os.path.join(args.out_dir, "roofline.csv")
     with open(csv_path, "w") as f:
         f.write("lab,settings,bound_ms,limiter,frame_ms,fraction,work,upper_bound\n")

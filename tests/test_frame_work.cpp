@@ -15,6 +15,7 @@
 #include "tools/ceilings/ceiling_benchmarks.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <fstream>
 #include <string>
 #include <tuple>
@@ -40,6 +41,13 @@ Counted count_fetches(const std::string& lab, const std::vector<std::string>& se
     REQUIRE(report.contains("work"));
     REQUIRE(report.contains("fetches_counted"));
     return {report.object_at("work"), report.object_at("fetches_counted")};
+}
+
+// The one item of the statement of this kind ("triangles", "fetch").
+const Json& item_of_kind(const Json& work, const std::string& kind) {
+    for (const Json& item : work.array_at("items").as_array())
+        if (item.string_at("kind") == kind) return item;
+    throw Error("the work states no '" + kind + "'");
 }
 
 // What the statement says the lookups of one kind of sampler ("2D", "3D", "2D array") add up to.
@@ -228,4 +236,192 @@ TEST_CASE("frame work: a frame timed without waiting for the device is faster th
                    << " ms (at the benchmark's median " << bound->median_bound_ms << " ms)");
     // Only the direction: the waited frames include the drawing the others left undone (noise only adds to it).
     CHECK(waited_ms > unwaited_ms);
+}
+
+TEST_CASE("frame work: triangles are a kind of work of their own, described, summed and keyed like the others", "[unit]") {
+    const WorkItem triangles{WorkKind::Triangles, ShaderPath::Fragment, "", 7936, "the mesh's 3968 triangles, sent twice"};
+    CHECK(triangles.ceiling_key() == "triangles");
+    CHECK(triangles.unit() == "triangles");
+    CHECK(triangles.resource() == "triangles");
+    CHECK(std::string(work_kind_name(WorkKind::Triangles)) == "triangles");
+    FrameWork work;
+    work.items = {triangles};
+    CHECK(work.describe() == "  7.936 k triangles (triangles): the mesh's 3968 triangles, sent twice\n");
+    CHECK(work.summary() == "7.936k triangles");
+}
+
+// Every key a lab's work is measured against is one gsv-ceilings measures: lab 07's lookups from its buffer texture
+// and lab 01's triangles had none, and were left out of their bounds (Roofline::unmeasured).
+TEST_CASE("frame work: gsv-ceilings --list names the buffer lookups' and the triangles' ceilings, as the work keys them", "[unit]") {
+    const std::vector<std::string> keys = ceiling_keys();
+    const WorkItem buffer_lookups{WorkKind::Fetch, ShaderPath::Fragment, "R32F buffer", 1, ""};
+    const WorkItem triangles{WorkKind::Triangles, ShaderPath::Fragment, "", 1, ""};
+    for (const WorkItem& item : {buffer_lookups, triangles}) {
+        INFO(item.ceiling_key());
+        CHECK(std::count(keys.begin(), keys.end(), item.ceiling_key()) == 1);
+    }
+    test::TempDir dir;
+    ProcessLimits limits;
+    limits.timeout = std::chrono::milliseconds(30000);
+    const ProcessResult listed = run_process({(test::bin_dir() / "gsv-ceilings").string(), "--list"}, dir.path(), limits);
+    REQUIRE(listed.exit_code == 0);
+    std::string expected;
+    for (const auto& key : keys) expected += key + "\n";
+    CHECK(listed.output == expected);
+}
+
+// Bad input to --runs is refused before anything is measured: one line naming the value, exit 2.
+TEST_CASE("frame work: gsv-ceilings --runs refuses 0, a word and a missing number in one line", "[unit]") {
+    test::TempDir dir;
+    ProcessLimits limits;
+    limits.timeout = std::chrono::milliseconds(30000);
+    for (const auto& [args, says] : std::vector<std::pair<std::vector<std::string>, std::string>>{
+             {{"--runs", "0"}, "gsv-ceilings: --runs 0: a whole number 1..20 is needed"},
+             {{"--runs", "two"}, "gsv-ceilings: --runs two: a whole number 1..20 is needed"},
+             {{"--runs", "3x"}, "gsv-ceilings: --runs 3x: a whole number 1..20 is needed"},
+             {{"--runs"}, "gsv-ceilings: --runs needs a number"}}) {
+        std::vector<std::string> argv{(test::bin_dir() / "gsv-ceilings").string(), "--out", (dir.path() / "c.json").string()};
+        argv.insert(argv.end(), args.begin(), args.end());
+        const ProcessResult run = run_process(argv, dir.path(), limits);
+        INFO(run.output);
+        CHECK(run.exit_code == 2);
+        CHECK(run.output == says + "\n");
+        CHECK_FALSE(std::filesystem::exists(dir.path() / "c.json"));
+    }
+}
+
+// Several runs: the file keeps each run's ceiling, and one written before --runs (or of one run) reads as before.
+TEST_CASE("frame work: ceilings of several runs read back with each run's, an older file without them still reads", "[unit]") {
+    test::TempDir dir;
+    Ceilings written;
+    written.renderer = "llvmpipe";
+    written.rates = {{"triangles", 2e7, 1.5e7, 2.6e7, "triangles/s", {2.4e7, 2.6e7}},
+                     {"fragments", 2e9, 1.9e9, 2.1e9, "fragments/s"}};
+    write_ceilings(dir.path() / "c.json", written);
+    const Ceilings read = read_ceilings(dir.path() / "c.json");
+    REQUIRE(read.find("triangles"));
+    CHECK(read.find("triangles")->runs == std::vector<double>{2.4e7, 2.6e7});
+    CHECK(read.find("fragments")->runs.empty());
+    std::ofstream(dir.path() / "old.json")
+        << R"({"renderer": "x", "ceilings": [{"key": "fragments", "rate": 2, "low": 1, "high": 3, "unit": "/s"}]})";
+    REQUIRE(read_ceilings(dir.path() / "old.json").find("fragments"));
+    CHECK(read_ceilings(dir.path() / "old.json").find("fragments")->fastest() == 3);
+    std::ofstream(dir.path() / "bad.json") << R"({"renderer": "x", "ceilings": [{"key": "triangles", "rate": 2, "low": 1, )"
+                                              R"("high": 3, "unit": "/s", "runs": [3, 0]}]})";
+    CHECK_THROWS_WITH(read_ceilings(dir.path() / "bad.json"), Catch::Contains("ceiling 'triangles' has run 2 at 0"));
+}
+
+// What is printed is what is used: the ceiling column is the fastest round (Roofline::bound_ms's), the median beside it.
+TEST_CASE("frame work: the ceilings' table shows the fastest round as the ceiling, each run's, and the widest runs", "[unit]") {
+    Ceilings ceilings;
+    ceilings.renderer = "test";
+    ceilings.rates = {{"triangles", 2e7, 1.5e7, 2.6e7, "triangles/s", {2.4e7, 2.6e7}},
+                      {"fragments", 2e9, 1.8e9, 2.2e9, "fragments/s", {2.2e9, 2.1e9}}};
+    const std::string table = ceilings_table(ceilings);
+    INFO(table);
+    const auto row = [&](const std::string& key) {
+        const auto at = table.find("  " + key + " ");
+        return at == std::string::npos ? std::string() : table.substr(at, table.find('\n', at) - at);
+    };
+    // 2.6e7 the fastest, 2e7 the median; the slowest round 25% below it, the fastest 30% above; runs 2.6/2.4 apart.
+    CHECK_THAT(row("triangles"), Catch::Contains("2.6e+07       2e+07") && Catch::Contains("-25.0% .. +30.0%") &&
+                                     Catch::Contains("2.4e+07 2.6e+07  (runs within 8.3%)"));
+    CHECK_THAT(row("fragments"), Catch::Contains("2.2e+09       2e+09") && Catch::Contains("(runs within 4.8%)"));
+    CHECK_THAT(table, Catch::EndsWith("2 runs: every ceiling within 8.3% of itself from run to run; the widest: triangles\n"));
+    ceilings.rates = {{"fragments", 2e9, 1.8e9, 2.2e9, "fragments/s"}};
+    CHECK_THAT(ceilings_table(ceilings), !Catch::Contains("runs"));
+}
+
+namespace {
+
+// A render's JSON against hand-made ceilings (GSV_CEILINGS): every key gsv-ceilings measures at `rate` a second (its
+// fastest round; the median half that), but those given their own; `leave_out` none at all. The renderer is this
+// machine's, read from a first render, as a lab reads only its own device's ceilings.
+Json roofline_with(const std::string& lab, const std::vector<std::string>& settings, double rate,
+                   const std::vector<std::pair<std::string, double>>& own, const std::string& leave_out = "") {
+    test::TempDir dir;
+    const test::LabRun first = test::render(lab + "_solution", settings, dir.path(), "first");
+    INFO(first.process.output);
+    REQUIRE(first.exit_code() == 0);
+    Ceilings ceilings;
+    ceilings.renderer = read_json_file(first.json).object_at("gl").string_at("renderer");
+    for (const auto& key : ceiling_keys()) {
+        if (key == leave_out) continue;
+        double r = rate;
+        for (const auto& [k, v] : own)
+            if (k == key) r = v;
+        ceilings.rates.push_back({key, r / 2, r / 4, r, "/s"});
+    }
+    write_ceilings(dir.path() / "ceilings.json", ceilings);
+    const test::LabRun run = test::render(lab + "_solution", settings, dir.path(), "bound", {},
+                                          {"GSV_CEILINGS=" + (dir.path() / "ceilings.json").string()});
+    INFO(run.process.output);
+    REQUIRE(run.exit_code() == 0);
+    const Json report = read_json_file(run.json);
+    REQUIRE(report.contains("roofline"));
+    return report;
+}
+
+std::vector<std::string> strings_of(const Json& array) {
+    std::vector<std::string> out;
+    for (const Json& s : array.as_array()) out.push_back(s.as_string());
+    return out;
+}
+
+}  // namespace
+
+// Lab 01 at a fine mesh is bound by its triangles (4x the time for 16x the triangles at the same pixels on llvmpipe),
+// which its statement now names: with the triangles the slowest resource, the roofline says so.
+TEST_CASE("frame work: lab01's roofline names its triangles where they are the slowest resource", "[lab][lab01]") {
+    const Json report = roofline_with("lab01", {"mesh_resolution=256"}, 1e9, {{"triangles", 1e6}});
+    const Json& roof = report.object_at("roofline");
+    CHECK(strings_of(roof.array_at("unmeasured")).empty());
+    CHECK(roof.string_at("limiter") == "triangles");
+    // 256 x 128 cells of a sphere, two triangles each but one at each pole: 2 * 256 * 127 triangles, sent twice.
+    const double triangles = item_of_kind(report.object_at("work"), "triangles").number_at("amount");
+    CHECK(triangles == 2.0 * 2 * 256 * 127);
+    CHECK(roof.number_at("bound_ms") == Approx(1000.0 * triangles / 1e6));
+    // At the fill's slower ceiling instead (128 x 128 fragments at 1e3 a second), the fill is named.
+    CHECK(roofline_with("lab01", {"mesh_resolution=256"}, 1e9, {{"fragments", 1e3}}).object_at("roofline").string_at("limiter") ==
+          "fragments");
+}
+
+// Lab 07's node values come from a buffer texture (texelFetch): now measured, its bound counts them.
+TEST_CASE("frame work: lab07's buffer lookups meet their ceiling, and name the texture units where they bind", "[lab][lab07]") {
+    const Json report = roofline_with("lab07", {}, 1e9, {{"fetch R32F buffer fragment", 1e6}});
+    const Json& roof = report.object_at("roofline");
+    CHECK(strings_of(roof.array_at("unmeasured")).empty());
+    CHECK(roof.string_at("limiter") == "texture (fragment)");
+    // Degree 4: 25 node values a fragment, 128 x 128 fragments.
+    const Json& lookups = item_of_kind(report.object_at("work"), "fetch");
+    CHECK(lookups.string_at("ceiling") == "fetch R32F buffer fragment");
+    CHECK(lookups.number_at("amount") == 25.0 * 128 * 128);
+    CHECK(roof.number_at("bound_ms") == Approx(1000.0 * 25 * 128 * 128 / 1e6));
+    // Without that ceiling the lookups are left out, named, and the flops bind.
+    const Json without = roofline_with("lab07", {}, 1e9, {}, "fetch R32F buffer fragment");
+    CHECK(strings_of(without.object_at("roofline").array_at("unmeasured")) == std::vector<std::string>{"fetch R32F buffer fragment"});
+    CHECK(without.object_at("roofline").string_at("limiter") == "flops fragment");
+}
+
+// Lab 01's triangles a frame against GL's own count of the primitives its draws sent (the instrumented build's
+// GL_PRIMITIVES_GENERATED query): every model, the procedural ones at a few resolutions, the teapot as loaded.
+TEST_CASE("frame work: lab01's triangles a frame are the primitives GL counts its draws sending", "[lab][lab01]") {
+    for (const auto& settings : std::vector<std::vector<std::string>>{{"model=sphere", "mesh_resolution=3"},
+                                                                      {"model=sphere", "mesh_resolution=64"},
+                                                                      {"model=sphere", "mesh_resolution=101"},
+                                                                      {"model=torus", "mesh_resolution=5"},
+                                                                      {"model=torus", "mesh_resolution=48"},
+                                                                      {"model=teapot"}}) {
+        INFO(settings.front() << " " << settings.back());
+        test::TempDir dir;
+        const test::LabRun run = test::render("lab01_solution", settings, dir.path(), "counted", {"--gl", "4.5", "--size", "64x64"},
+                                              {"GSV_COUNT_FETCHES=1"});
+        INFO(run.process.output);
+        REQUIRE(run.exit_code() == 0);
+        const Json report = read_json_file(run.json);
+        REQUIRE(report.contains("primitives_counted"));
+        const double counted = report.number_at("primitives_counted");
+        CHECK(counted > 0);
+        CHECK(item_of_kind(report.object_at("work"), "triangles").number_at("amount") == counted);
+    }
 }

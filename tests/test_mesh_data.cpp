@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <utility>
 #include <fstream>
 #include <functional>
 #include <string>
@@ -129,6 +130,13 @@ TEST_CASE("mesh_data: uv sphere and torus have the documented counts", "[unit]")
     CHECK(torus.positions.size() == 33 * 13);
     CHECK(torus.triangle_count() == 2 * 32 * 12);
     CHECK(torus.texcoords.size() == torus.positions.size());
+    // The counts without the meshes (lab 01's work per frame) are the built meshes' own.
+    for (const auto& [around, other] : {std::pair{3, 2}, std::pair{16, 8}, std::pair{64, 32}, std::pair{7, 3}}) {
+        INFO(around << " x " << other);
+        CHECK(gsv::uv_sphere_triangle_count(around, other) == gsv::make_uv_sphere(around, other).triangle_count());
+        if (other >= 3)
+            CHECK(gsv::torus_triangle_count(around, other) == gsv::make_torus(around, other, 1.0f, 0.3f).triangle_count());
+    }
 }
 
 TEST_CASE("mesh_data: sphere and torus triangles wind counter-clockwise seen from outside", "[unit]") {

@@ -1,6 +1,7 @@
 // gsv-ceilings: what this device allows, measured: one small benchmark a resource (tools/ceilings/), interleaved, with
-// the spread of the rounds; the table printed and the ceilings written where the labs look for them (a lab's window
-// and sweeps, scripts/kit bench: build/ceilings.json), named by the GL renderer they were measured on.
+// the spread of the rounds (and of the runs, --runs); the table printed and the ceilings written where the labs look
+// for them (a lab's window and sweeps, scripts/kit bench: build/ceilings.json), named by the GL renderer they were
+// measured on.
 #include "common/context/context.h"
 #include "common/core/error.h"
 #include "common/core/version.h"
@@ -16,13 +17,17 @@
 namespace {
 
 constexpr const char* kUsage =
-    "usage: gsv-ceilings [--out FILE] [--side N] [--items N] [--rounds N] [--frames N] [--only KEY]... [--list]\n"
-    "  measures this device's ceilings (bilinear lookups by texel format in fragment and compute shaders, storage-\n"
-    "  buffer bandwidth, fill, FP32 arithmetic), interleaved, each the median of the rounds with their spread\n"
+    "usage: gsv-ceilings [--out FILE] [--side N] [--items N] [--rounds N] [--frames N] [--runs N] [--only KEY]...\n"
+    "                    [--list]\n"
+    "  measures this device's ceilings (bilinear lookups by texel format in fragment and compute shaders, buffer-\n"
+    "  texture texelFetch, storage-buffer bandwidth, fill, triangles, FP32 arithmetic), interleaved: each ceiling is\n"
+    "  the fastest round (what the bounds use), printed beside the median of the rounds and their spread\n"
     "  --out FILE    where to write them (default: ceilings.json in the build folder, where the labs look)\n"
     "  --side N      fragment targets and compute grids N x N (default 512)\n"
     "  --items N     vec4s the storage benchmark copies a dispatch (default 2097152: 32 MiB each way)\n"
     "  --rounds N    rounds over every benchmark (default 5);  --frames N  timed frames a round (default 3)\n"
+    "  --runs N      the whole set N times, each run its own rounds (default 1): each run's ceiling printed, and how\n"
+    "                far apart the runs are; the file holds the fastest round of all runs, and each run's\n"
     "  --only KEY    measure only this one (repeatable);  --list  the keys\n"
     "  --version     the kit's version\n";
 
@@ -66,6 +71,8 @@ int main(int argc, char** argv) {
                 options.storage_items = static_cast<std::size_t>(number_after(i, argc, argv, 1024, 1 << 26));
             } else if (a == "--rounds") {
                 options.rounds = number_after(i, argc, argv, 1, 100);
+            } else if (a == "--runs") {
+                options.runs = number_after(i, argc, argv, 1, 20);
             } else if (a == "--frames") {
                 options.frames = number_after(i, argc, argv, 1, 100);
             } else if (a == "--only" && i + 1 < argc) {

@@ -171,8 +171,8 @@ int run_render(Session& s) {
     }, warmup, frames);
     check_gl_error("rendering the frame");
 
-    // The instrumented build (GSV_COUNT_FETCHES): one more frame, its lookups counted, held beside the work the lab
-    // states for it. Not under the grader, whose frames are the student's.
+    // The instrumented build (GSV_COUNT_FETCHES): one more frame, its lookups and primitives counted, held beside the
+    // work the lab states for it. Not under the grader, whose frames are the student's.
     std::optional<FetchCounts> counted;
     if (fetch_count_define() && !grader.active()) {
         FetchCounter counter;
@@ -221,6 +221,10 @@ int run_render(Session& s) {
         r["fraction"] = bound->fraction(timing.median_ms);
         r["limiter"] = bound->limiter;
         r["upper_bound"] = bound->upper_bound;
+        // The work whose resource has no ceiling measured: its time is left out of the bound.
+        Json unmeasured = Json::array();
+        for (const auto& key : bound->unmeasured) unmeasured.push_back(key);
+        r["unmeasured"] = unmeasured;
         report["roofline"] = r;
     }
     if (counted) {
@@ -229,6 +233,7 @@ int run_render(Session& s) {
         c["3d"] = static_cast<double>(counted->texture_3d);
         c["2d_array"] = static_cast<double>(counted->texture_2d_array);
         report["fetches_counted"] = c;
+        report["primitives_counted"] = static_cast<double>(counted->primitives);
     }
     report["float_target"] = target.format() == ColorFormat::RGBA32F;  // false: NaN and Inf could not be counted
     report["nan_pixels"] = static_cast<double>(stats.nan_count);

@@ -21,22 +21,29 @@ FetchCounter::FetchCounter() {
         throw UnsupportedError("counting texture fetches (GSV_COUNT_FETCHES) needs atomic counters: OpenGL 4.2 (--gl 4.5)");
     const std::uint32_t zeros[3] = {0, 0, 0};
     buffer_ = Buffer::create(GL_ATOMIC_COUNTER_BUFFER, sizeof zeros, zeros, GL_DYNAMIC_READ);
+    GLuint query = 0;
+    glGenQueries(1, &query);
+    primitives_ = QueryName(query);
 }
 
 void FetchCounter::reset_and_bind() {
     const std::uint32_t zeros[3] = {0, 0, 0};
     buffer_.upload(0, sizeof zeros, zeros);
     buffer_.bind_base(0);
+    glBeginQuery(GL_PRIMITIVES_GENERATED, primitives_.get());
 }
 
 FetchCounts FetchCounter::read() {
+    glEndQuery(GL_PRIMITIVES_GENERATED);
     glMemoryBarrier(GL_ATOMIC_COUNTER_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     glFinish();
     std::uint32_t counts[3] = {0, 0, 0};
     buffer_.bind();
     glGetBufferSubData(GL_ATOMIC_COUNTER_BUFFER, 0, sizeof counts, counts);
+    GLuint64 primitives = 0;
+    glGetQueryObjectui64v(primitives_.get(), GL_QUERY_RESULT, &primitives);
     check_gl_error("reading the texture fetch counters");
-    return {counts[0], counts[1], counts[2]};
+    return {counts[0], counts[1], counts[2], primitives};
 }
 
 }  // namespace gsv

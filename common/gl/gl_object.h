@@ -42,6 +42,7 @@ inline void buffer(GLuint n) { glDeleteBuffers(1, &n); }
 inline void framebuffer(GLuint n) { glDeleteFramebuffers(1, &n); }
 inline void renderbuffer(GLuint n) { glDeleteRenderbuffers(1, &n); }
 inline void vertex_array(GLuint n) { glDeleteVertexArrays(1, &n); }
+inline void query(GLuint n) { glDeleteQueries(1, &n); }
 }  // namespace gl_delete
 
 using ProgramName = GlName<gl_delete::program>;
@@ -51,5 +52,6 @@ using BufferName = GlName<gl_delete::buffer>;
 using FramebufferName = GlName<gl_delete::framebuffer>;
 using RenderbufferName = GlName<gl_delete::renderbuffer>;
 using VertexArrayName = GlName<gl_delete::vertex_array>;
+using QueryName = GlName<gl_delete::query>;
 
 }  // namespace gsv

@@ -98,6 +98,15 @@ MeshData make_uv_sphere(int slices, int stacks, float radius) {
     return mesh;
 }
 
+std::size_t uv_sphere_triangle_count(int slices, int stacks) {
+    // A cap triangle a slice at each pole, and two a cell of the stacks - 2 bands between the rings.
+    return 2 * static_cast<std::size_t>(slices) * static_cast<std::size_t>(stacks - 1);
+}
+
+std::size_t torus_triangle_count(int major_segments, int minor_segments) {
+    return 2 * static_cast<std::size_t>(major_segments) * static_cast<std::size_t>(minor_segments);
+}
+
 MeshData make_torus(int major_segments, int minor_segments, float major_radius, float minor_radius) {
     if (major_segments < 3)
         throw Error("make_torus: major_segments must be at least 3, got " + std::to_string(major_segments));

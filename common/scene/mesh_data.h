@@ -34,6 +34,8 @@ MeshData make_grid(int n);
 // Vertices: 2*slices + (stacks-1)*(slices+1); triangles: 2*slices*(stacks-1).
 // Throws gsv::Error for slices < 3, stacks < 2, or a radius that is not a positive finite number.
 MeshData make_uv_sphere(int slices, int stacks, float radius = 1.0f);
+// Its triangles, 2*slices*(stacks-1), without building it (a lab's work per frame, Lab::frame_work).
+std::size_t uv_sphere_triangle_count(int slices, int stacks);
 
 // A ring torus around the y axis: a tube of minor_radius swept along a circle of major_radius in the
 // xz plane. u runs around the ring (0 at +z, growing toward +x), v around the tube (0 on the outer
@@ -41,6 +43,8 @@ MeshData make_uv_sphere(int slices, int stacks, float radius = 1.0f);
 // 2*major*minor. Throws gsv::Error for fewer than 3 segments either way or unless
 // 0 < minor_radius < major_radius (a larger tube self-intersects and has no well-defined outside).
 MeshData make_torus(int major_segments, int minor_segments, float major_radius, float minor_radius);
+// Its triangles, 2*major*minor, without building it.
+std::size_t torus_triangle_count(int major_segments, int minor_segments);
 
 // Reads the triangle part of a Wavefront OBJ file: v, vt, vn and f with corners written v, v/vt, v//vn or
 // v/vt/vn, 1-based or negative (relative to the elements defined so far) indices, polygons split into

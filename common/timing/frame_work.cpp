@@ -18,6 +18,7 @@ const char* work_kind_name(WorkKind kind) {
     case WorkKind::StorageBytes: return "storage";
     case WorkKind::Fragments: return "fragments";
     case WorkKind::Flops: return "flops";
+    case WorkKind::Triangles: return "triangles";
     }
     return "?";
 }
@@ -34,6 +35,7 @@ std::string WorkItem::ceiling_key() const {
     case WorkKind::StorageBytes: return std::string("storage ") + shader_path_name(path);
     case WorkKind::Fragments: return "fragments";
     case WorkKind::Flops: return std::string("flops ") + shader_path_name(path);
+    case WorkKind::Triangles: return "triangles";
     }
     return "?";
 }
@@ -44,6 +46,7 @@ std::string WorkItem::unit() const {
     case WorkKind::StorageBytes: return "bytes";
     case WorkKind::Fragments: return "fragments";
     case WorkKind::Flops: return "flops";
+    case WorkKind::Triangles: return "triangles";
     }
     return "?";
 }
@@ -98,6 +101,11 @@ Json Ceilings::to_json() const {
         entry["low"] = c.low;
         entry["high"] = c.high;
         entry["unit"] = c.unit;
+        if (!c.runs.empty()) {
+            Json runs = Json::array();
+            for (double r : c.runs) runs.push_back(r);
+            entry["runs"] = runs;
+        }
         list.push_back(entry);
     }
     out["ceilings"] = list;
@@ -115,6 +123,16 @@ Ceilings Ceilings::from_json(const Json& json) {
         if (!(c.rate > 0) || !std::isfinite(c.rate))
             throw Error(json.source_name() + ": ceiling '" + c.key + "' has rate " + format_number(c.rate, 6) +
                         ": a measured rate is above 0");
+        // Written by gsv-ceilings --runs N; a file of one run (or an older one) has none.
+        if (entry.contains("runs")) {
+            const Json& runs = entry.array_at("runs");
+            for (std::size_t r = 0; r < runs.size(); ++r) {
+                c.runs.push_back(runs.at(r).as_number());
+                if (!(c.runs.back() > 0) || !std::isfinite(c.runs.back()))
+                    throw Error(json.source_name() + ": ceiling '" + c.key + "' has run " + std::to_string(r + 1) +
+                                " at " + format_number(c.runs.back(), 6) + ": a measured rate is above 0");
+            }
+        }
         out.rates.push_back(c);
     }
     return out;
@@ -166,7 +184,7 @@ std::optional<Roofline> roofline(const FrameWork& work, const Ceilings& ceilings
             continue;
         }
         const double median_ms = 1000.0 * item.amount / ceiling->rate;
-        const double ms = 1000.0 * item.amount / std::max(ceiling->high, ceiling->rate);
+        const double ms = 1000.0 * item.amount / ceiling->fastest();
         const std::string name = item.resource();
         auto found = std::find_if(resources.begin(), resources.end(), [&](const Resource& r) { return r.name == name; });
         if (found == resources.end()) found = resources.insert(resources.end(), Resource{name, 0, 0, {}});
@@ -183,7 +201,7 @@ std::optional<Roofline> roofline(const FrameWork& work, const Ceilings& ceilings
             const Ceiling* pair = ceilings.find(pair_ceiling_key(a->texture, b->texture, a->path));
             if (!pair) continue;
             const double amount = a->amount + b->amount;
-            r.ms = std::min(r.ms, 1000.0 * amount / std::max(pair->high, pair->rate));
+            r.ms = std::min(r.ms, 1000.0 * amount / pair->fastest());
             r.median_ms = std::min(r.median_ms, 1000.0 * amount / pair->rate);
         }
     }

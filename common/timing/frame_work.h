@@ -1,7 +1,8 @@
 #pragma once
 // What a frame asks of the device, and what the device allows: the roofline of issue 44.
 // A lab states its work per frame from its settings and its own loop structure (Lab::frame_work): texture fetches by
-// format, filter and shader path, bytes moved through storage buffers, fragments written, floating-point operations.
+// format, filter and shader path, bytes moved through storage buffers, fragments written, floating-point operations,
+// triangles drawn.
 // gsv-ceilings (tools/) measures each resource's ceiling on this device, one benchmark saturating each. A frame's
 // bound is the time its most demanding resource needs at its ceiling; the fraction reached is that bound over the
 // measured frame time, and it cannot exceed 1: a frame measured faster than its bound was not waited for.
@@ -10,11 +11,15 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace gsv {
 
-enum class WorkKind { Fetch, StorageBytes, Fragments, Flops };
+// Triangles: each one a draw call sends down the pipeline (indexed, as the labs' meshes are), culled or drawn: its
+// share of the vertex shading, its assembly, its cull test or its setup and raster. A mesh of many small triangles is
+// bound by them, not by its fill.
+enum class WorkKind { Fetch, StorageBytes, Fragments, Flops, Triangles };
 // Datacenter GPUs run fragment shaders on a few units only: a ceiling belongs to a path, not to the device.
 enum class ShaderPath { Fragment, Compute };
 
@@ -22,17 +27,20 @@ const char* work_kind_name(WorkKind kind);
 const char* shader_path_name(ShaderPath path);
 
 // One resource a frame uses, and how much of it. A fetch names its texture: the texel format and dimension as
-// gsv-ceilings measures them ("RG32F 2D", "R32F 3D"), filtered bilinearly (trilinearly in 3D).
+// gsv-ceilings measures them ("RG32F 2D", "R32F 3D"), filtered bilinearly (trilinearly in 3D), or "R32F buffer": a
+// buffer texture's texels, read with texelFetch (no filter). Fragments and triangles have no shader path: they are
+// the pipeline's fixed stages (their path stays Fragment).
 struct WorkItem {
     WorkKind kind = WorkKind::Fetch;
     ShaderPath path = ShaderPath::Fragment;
     std::string texture;  // Fetch only
-    double amount = 0;    // fetches, bytes, fragments or operations per frame
+    double amount = 0;    // fetches, bytes, fragments, operations or triangles per frame
     std::string what;     // where it comes from, in words: "1 + 4L per pixel, L = 25"
 
-    // The ceiling it is measured against: "fetch RG32F 2D fragment", "storage compute", "fragments", "flops fragment".
+    // The ceiling it is measured against: "fetch RG32F 2D fragment", "fetch R32F buffer fragment", "storage compute",
+    // "fragments", "flops fragment", "triangles".
     std::string ceiling_key() const;
-    std::string unit() const;  // "fetches", "bytes", "fragments", "flops"
+    std::string unit() const;  // "fetches", "bytes", "fragments", "flops", "triangles"
     // The resource it takes its turn on: every lookup of a shader path shares the texture units ("texture
     // (fragment)"); the others are their ceilings'.
     std::string resource() const;
@@ -49,15 +57,24 @@ struct FrameWork {
     std::string summary() const;
 };
 
-// A measured ceiling: the resource's rate per second, as the median of interleaved rounds, with its spread.
 // The key of two textures' lookups taking turns ("fetch RG32F 2D + RGB32F 2D fragment"): LIC's flow, then its input.
 std::string pair_ceiling_key(const std::string& flow_texture, const std::string& input_texture, ShaderPath path);
 
+// A measured ceiling: the resource's rate per second over interleaved rounds, the median with the spread of the
+// rounds. What a bound uses is fastest(): the fastest round, the most this device was seen to do.
 struct Ceiling {
+    Ceiling() = default;
+    Ceiling(std::string key, double rate, double low, double high, std::string unit, std::vector<double> runs = {})
+        : key(std::move(key)), rate(rate), low(low), high(high), unit(std::move(unit)), runs(std::move(runs)) {}
+
     std::string key;
-    double rate = 0;          // per second, the median
-    double low = 0, high = 0; // the lowest and highest round
+    double rate = 0;          // per second, the median of every round
+    double low = 0, high = 0; // the slowest and the fastest round
     std::string unit;
+    // Measured in several runs (gsv-ceilings --runs): each run's fastest round, in order; high is the fastest of
+    // them. Empty for one run.
+    std::vector<double> runs;
+    double fastest() const { return high > rate ? high : rate; }
 };
 
 struct Ceilings {

@@ -16,7 +16,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
+#include <cstddef>
 #include <optional>
+#include <string>
 
 namespace {
 
@@ -71,12 +73,26 @@ public:
     void params_changed(gsv::LabKit& kit) override {
         mesh_.update(kit.params(), [&] {
             const Model model = model_.get();
-            if (model == Model::Teapot) return gsv::GpuMesh(teapot_, kit.profile());
-            if (model == Model::File) return gsv::GpuMesh(load_mesh_file(kit), kit.profile());
-            const int n = mesh_resolution_.get();
-            if (model == Model::Sphere) return gsv::GpuMesh(gsv::make_uv_sphere(n, std::max(2, n / 2)), kit.profile());
-            return gsv::GpuMesh(gsv::make_torus(n, std::max(3, n / 2), 0.7f, 0.3f), kit.profile());
+            if (model == Model::Teapot) {
+                loaded_triangles_ = teapot_.triangle_count();
+                return gsv::GpuMesh(teapot_, kit.profile());
+            }
+            if (model == Model::File) {
+                const gsv::MeshData mesh = load_mesh_file(kit);
+                loaded_triangles_ = mesh.triangle_count();
+                return gsv::GpuMesh(mesh, kit.profile());
+            }
+            const glm::ivec2 segments = procedural_segments();
+            if (model == Model::Sphere) return gsv::GpuMesh(gsv::make_uv_sphere(segments.x, segments.y), kit.profile());
+            return gsv::GpuMesh(gsv::make_torus(segments.x, segments.y, 0.7f, 0.3f), kit.profile());
         });
+    }
+
+    // The sphere's or torus's segments: mesh_resolution around, half as many the other way (a sphere needs 2
+    // stacks, a torus's tube 3).
+    glm::ivec2 procedural_segments() const {
+        const int n = mesh_resolution_.get();
+        return {n, std::max(model_.get() == Model::Sphere ? 2 : 3, n / 2)};
     }
 
     void render(gsv::LabKit& kit, const gsv::Frame& frame) override {
@@ -93,12 +109,23 @@ public:
     }
 
     // The lesson is per-fragment shading of a model that covers part of the frame: at most one shaded fragment a
-    // pixel (fill), the lighting a few dozen flops each.
+    // pixel (fill), the lighting a few dozen flops each. And the mesh's triangles, each sent twice (draw(): back
+    // faces culled, then front faces), so each is drawn once and culled once: a fine mesh is bound by them, not by
+    // its fill. The sphere's and torus's count follow from their segments; the teapot's and a file's are known once
+    // loaded (not in `list`, which loads nothing).
     gsv::FrameWork frame_work(const gsv::Frame& frame) const override {
         gsv::FrameWork work;
         work.upper_bound = true;
         work.items.push_back({gsv::WorkKind::Fragments, gsv::ShaderPath::Fragment, "",
                               static_cast<double>(frame.width) * frame.height, "one shaded fragment a pixel at most"});
+        const Model model = model_.get();
+        const glm::ivec2 segments = procedural_segments();
+        const std::size_t triangles = model == Model::Sphere ? gsv::uv_sphere_triangle_count(segments.x, segments.y)
+                                      : model == Model::Torus ? gsv::torus_triangle_count(segments.x, segments.y)
+                                                              : loaded_triangles_;
+        if (triangles > 0)
+            work.items.push_back({gsv::WorkKind::Triangles, gsv::ShaderPath::Fragment, "", 2.0 * static_cast<double>(triangles),
+                                  "the mesh's " + std::to_string(triangles) + " triangles, sent twice (back faces culled, then front)"});
         return work;
     }
 
@@ -156,6 +183,7 @@ private:
     gsv::Param<float> cut_;
     const gsv::ShaderLibrary::Entry* shade_ = nullptr;
     gsv::MeshData teapot_;
+    std::size_t loaded_triangles_ = 0;  // the teapot's or the file's, once loaded
     gsv::Tracked<gsv::GpuMesh> mesh_;
 };
 

@@ -2,11 +2,13 @@
 
 #include "common/core/error.h"
 #include "common/gl/buffer.h"
+#include "common/gl/buffer_texture.h"
 #include "common/gl/compute.h"
 #include "common/gl/framebuffer.h"
 #include "common/gl/gl.h"
 #include "common/gl/gpu_mesh.h"
 #include "common/gl/texture.h"
+#include "common/scene/mesh_data.h"
 #include "common/shader/shader_program.h"
 #include "common/timing/timing.h"
 
@@ -31,6 +33,11 @@ constexpr int kFillQuads = 4;           // full-screen quads a fill frame
 constexpr int kCopyGroups = 1024;       // work groups of 128 striding over the copied items
 // The textures' sizes: a 2D texture about a LIC frame's, a volume about the ray caster's.
 constexpr int kSide2d = 512, kLayers = 4, kSide3d = 64;
+// The buffer texture (fetch_buffer.frag): 64 Ki texels, the size every OpenGL allows (GL_MAX_TEXTURE_BUFFER_SIZE is
+// at least 65536), 20 times lab 07's default elements' values; a block of 8 x 8 fragments reads the same texels.
+constexpr int kBufferTexels = 65536, kBufferTile = 8;
+// The triangles' grid: a cell a pixel of the target, at most 2048 x 2048 cells (make_grid's limit is 4096 vertices).
+constexpr int kMaxGridCells = 2048;
 
 struct TextureKind {
     std::string format;     // "RG32F"
@@ -119,6 +126,22 @@ public:
             list.push_back({"fetch " + kind.format + " " + kind.dimension + " fragment", "fetches/s", pixels * kFetches, {},
                             [this, &p, t] { draw_quad(p, t); }});
         }
+        {
+            std::vector<float> values(kBufferTexels);
+            for (std::size_t i = 0; i < values.size(); ++i) values[i] = std::fmod(static_cast<float>(i) * 0.618034f, 1.0f);
+            buffer_texture_ = BufferTexture::create_r32f(values.data(), values.size());
+            const ShaderProgram& p = keep_program({"fullscreen.vert", "fetch_buffer.frag"},
+                                                  with_counts({{"TILE", std::to_string(kBufferTile)},
+                                                               {"BUFFER_TEXELS", std::to_string(kBufferTexels)}}));
+            list.push_back({"fetch R32F buffer fragment", "fetches/s", pixels * kFetches, {}, [this, &p] {
+                                target_.bind();
+                                glDisable(GL_DEPTH_TEST);
+                                glDisable(GL_BLEND);
+                                p.use();
+                                p.bind("uValues", buffer_texture_);
+                                quad_.draw();
+                            }});
+        }
         for (const auto& [flow, input] : kFragmentPairs) {
             const std::size_t f = keep_texture(flow), i = keep_texture(input);
             const std::string dim = flow.dimension == "3D" ? "FLOW_3D" : flow.dimension == "2D array" ? "FLOW_ARRAY" : "FLOW_2D";
@@ -163,6 +186,33 @@ public:
                                 glDisable(GL_DEPTH_TEST);
                                 glDisable(GL_BLEND);
                                 for (int i = 0; i < kFillQuads; ++i) quad_.draw();
+                            }});
+        }
+        {
+            // A grid of a cell a pixel, drawn twice a frame as lab 01 draws its mesh: back faces culled, then front
+            // faces, so each triangle is drawn once (its setup and raster) and culled once, the mix of any closed
+            // mesh drawn that way (on llvmpipe a culled triangle cost a tenth of a drawn one, so the mix matters).
+            // The best case of that mix: half a pixel a triangle, so the fill (one fragment a pixel a frame) is
+            // small beside it; half a vertex a triangle, shared along the rows in index order, so the vertex cache
+            // reuses them; a vertex shader that only places the vertex and a fragment shader that only writes a
+            // colour. A frame goes faster only where more than half its triangles are culled or fall outside the
+            // target, cheaper still: lab 01's camera frames the whole model, and culls half.
+            const int cells = std::min(o_.side, kMaxGridCells);
+            grid_ = GpuMesh(make_grid(cells + 1), Profile::Core);
+            const ShaderProgram& p = keep_program({"triangles.vert", "fill.frag"}, {});
+            list.push_back({"triangles", "triangles/s", 2.0 * 2.0 * cells * cells, {}, [this, &p] {
+                                target_.bind();
+                                p.use();
+                                p.set("uColor", glm::vec4(0.2f, 0.4f, 0.6f, 1.0f));
+                                glDisable(GL_DEPTH_TEST);
+                                glDisable(GL_BLEND);
+                                glEnable(GL_CULL_FACE);
+                                glCullFace(GL_BACK);
+                                grid_.draw();
+                                glCullFace(GL_FRONT);
+                                grid_.draw();
+                                glCullFace(GL_BACK);
+                                glDisable(GL_CULL_FACE);
                             }});
         }
         const ShaderProgram& ff = keep_program({"fullscreen.vert", "flops.frag"}, with_counts({}));
@@ -249,8 +299,9 @@ private:
     }
 
     const CeilingOptions& o_;
-    GpuMesh quad_;
+    GpuMesh quad_, grid_;
     Framebuffer target_;
+    BufferTexture buffer_texture_;
     Buffer sums_, source_, copy_;
     std::vector<Texture> textures_;
     std::vector<glm::vec3> steps_;
@@ -262,28 +313,45 @@ private:
 std::vector<std::string> ceiling_keys() {
     std::vector<std::string> keys;
     for (const auto& k : kFragmentTextures) keys.push_back("fetch " + k.format + " " + k.dimension + " fragment");
+    keys.push_back("fetch R32F buffer fragment");
     for (const auto& [flow, input] : kFragmentPairs) keys.push_back(pair_key(flow, input));
     for (const auto& k : kComputeTextures) keys.push_back("fetch " + k.format + " " + k.dimension + " compute");
-    for (const char* k : {"storage compute", "fragments", "flops fragment", "flops compute"}) keys.push_back(k);
+    for (const char* k : {"storage compute", "fragments", "triangles", "flops fragment", "flops compute"}) keys.push_back(k);
     return keys;
 }
 
 Ceilings measure_ceilings(const CeilingOptions& options, const std::string& renderer) {
+    if (options.runs < 1) throw Error("gsv-ceilings: " + std::to_string(options.runs) + " runs: at least 1 is needed");
     Bench bench(options);
     const std::vector<Benchmark> benchmarks = bench.all();
     std::vector<TimedWork> work;
     for (const auto& b : benchmarks) work.push_back({b.prepare, b.frame});
-    const InterleavedTimes times = time_interleaved(work, 1, options.frames, options.rounds);
-    check_gl_error("measuring the ceilings");
+    // Every round's rate, all runs together, and each run's fastest: a run is its own interleaved rounds (its own
+    // warm-up and batch sizes), so runs far apart say whether the ceilings reproduce.
+    std::vector<std::vector<double>> rounds(benchmarks.size());
+    std::vector<std::vector<double>> run_fastest(benchmarks.size());
+    for (int run = 0; run < options.runs; ++run) {
+        const InterleavedTimes times = time_interleaved(work, 1, options.frames, options.rounds);
+        check_gl_error("measuring the ceilings");
+        for (std::size_t i = 0; i < benchmarks.size(); ++i) {
+            double fastest = 0;
+            for (const double ms : times.round_medians[i]) {
+                rounds[i].push_back(1000.0 * benchmarks[i].per_frame / ms);
+                fastest = std::max(fastest, rounds[i].back());
+            }
+            run_fastest[i].push_back(fastest);
+        }
+    }
     Ceilings out;
     out.renderer = renderer;
     for (std::size_t i = 0; i < benchmarks.size(); ++i) {
         const Benchmark& b = benchmarks[i];
-        Ceiling c{b.key, 1000.0 * b.per_frame / times.stats[i].median_ms, 0, 0, b.unit};
-        const auto [fastest, slowest] = std::minmax_element(times.round_medians[i].begin(), times.round_medians[i].end());
-        c.low = 1000.0 * b.per_frame / *slowest;
-        c.high = 1000.0 * b.per_frame / *fastest;
-        out.rates.push_back(c);
+        std::vector<double>& r = rounds[i];
+        std::sort(r.begin(), r.end());
+        const std::size_t n = r.size();
+        const double median = n % 2 ? r[n / 2] : 0.5 * (r[n / 2 - 1] + r[n / 2]);
+        out.rates.emplace_back(b.key, median, r.front(), r.back(), b.unit,
+                               options.runs > 1 ? run_fastest[i] : std::vector<double>{});
     }
     return out;
 }
@@ -306,13 +374,39 @@ std::function<void(int)> ceiling_frame(const CeilingOptions& options, const std:
 }
 
 std::string ceilings_table(const Ceilings& ceilings) {
-    std::string out = "ceilings on " + ceilings.renderer + " (median of the rounds; spread: slowest to fastest round)\n";
-    char line[200];
-    std::snprintf(line, sizeof line, "  %-30s %12s %18s  %s\n", "resource", "rate", "spread", "unit");
+    std::size_t runs = 0;
+    for (const auto& c : ceilings.rates) runs = std::max(runs, c.runs.size());
+    std::string out = "ceilings on " + ceilings.renderer +
+                      " (ceiling: the fastest round, what the bounds use; the median of the rounds, and the slowest and "
+                      "fastest round beside it" +
+                      (runs > 1 ? "; each run's ceiling, and how far apart the runs are" : "") + ")\n";
+    char line[400];
+    std::snprintf(line, sizeof line, "  %-38s %11s %11s %18s  %-12s%s\n", "resource", "ceiling", "median", "rounds",
+                  "unit", runs > 1 ? "  runs" : "");
     out += line;
+    const Ceiling* widest = nullptr;
+    double widest_ratio = 1;
     for (const auto& c : ceilings.rates) {
-        std::snprintf(line, sizeof line, "  %-30s %12.4g   %+6.1f%% .. %+5.1f%%  %s\n", c.key.c_str(), c.rate,
-                      100.0 * (c.low / c.rate - 1.0), 100.0 * (c.high / c.rate - 1.0), c.unit.c_str());
+        std::snprintf(line, sizeof line, "  %-38s %11.4g %11.4g   %+6.1f%% .. %+5.1f%%  %-12s", c.key.c_str(), c.fastest(),
+                      c.rate, 100.0 * (c.low / c.rate - 1.0), 100.0 * (c.high / c.rate - 1.0), c.unit.c_str());
+        out += line;
+        if (c.runs.size() > 1) {
+            const auto [smallest, largest] = std::minmax_element(c.runs.begin(), c.runs.end());
+            const double ratio = *largest / *smallest;
+            out += " ";
+            for (const double r : c.runs) {
+                std::snprintf(line, sizeof line, " %.4g", r);
+                out += line;
+            }
+            std::snprintf(line, sizeof line, "  (runs within %.1f%%)", 100.0 * (ratio - 1.0));
+            out += line;
+            if (!widest || ratio > widest_ratio) widest = &c, widest_ratio = ratio;
+        }
+        out += "\n";
+    }
+    if (widest) {
+        std::snprintf(line, sizeof line, "%zu runs: every ceiling within %.1f%% of itself from run to run; the widest: %s\n",
+                      runs, 100.0 * (widest_ratio - 1.0), widest->key.c_str());
         out += line;
     }
     return out;
