@@ -381,13 +381,13 @@ std::string ceilings_table(const Ceilings& ceilings) {
                       "fastest round beside it" +
                       (runs > 1 ? "; each run's ceiling, and how far apart the runs are" : "") + ")\n";
     char line[400];
-    std::snprintf(line, sizeof line, "  %-38s %11s %11s %18s  %-12s%s\n", "resource", "ceiling", "median", "rounds",
-                  "unit", runs > 1 ? "  runs" : "");
+    std::snprintf(line, sizeof line, "  %-40s %11s %11s %18s  %s\n", "resource", "ceiling", "median", "rounds",
+                  runs > 1 ? "unit          runs" : "unit");
     out += line;
     const Ceiling* widest = nullptr;
     double widest_ratio = 1;
     for (const auto& c : ceilings.rates) {
-        std::snprintf(line, sizeof line, "  %-38s %11.4g %11.4g   %+6.1f%% .. %+5.1f%%  %-12s", c.key.c_str(), c.fastest(),
+        std::snprintf(line, sizeof line, "  %-40s %11.4g %11.4g   %+6.1f%% .. %+5.1f%%  %-12s", c.key.c_str(), c.fastest(),
                       c.rate, 100.0 * (c.low / c.rate - 1.0), 100.0 * (c.high / c.rate - 1.0), c.unit.c_str());
         out += line;
         if (c.runs.size() > 1) {
@@ -402,6 +402,7 @@ std::string ceilings_table(const Ceilings& ceilings) {
             out += line;
             if (!widest || ratio > widest_ratio) widest = &c, widest_ratio = ratio;
         }
+        out.erase(out.find_last_not_of(' ') + 1);  // the unit's padding, where no runs follow
         out += "\n";
     }
     if (widest) {
