@@ -1,8 +1,10 @@
 // Lab 05 as students and lecturers run it: the lab binary's render, animate and sweep modes, its refusals,
 // and the particle buffers it hands the grader.
+#include "common/gl/compute.h"
 #include "common/image/image.h"
 #include "common/image/image_compare.h"
 #include "common/io/json.h"
+#include "gl_fixture.h"
 #include "lab_runner.h"
 #include "test_support.h"
 
@@ -11,6 +13,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -85,6 +88,45 @@ TEST_CASE("lab05: settings that cannot go together or out of range give one line
     run = test::render("lab05_solution", {"particles=0"}, dir.path(), "bad");
     CHECK(run.exit_code() == 2);
     CHECK(run.process.output.find("particles") != std::string::npos);
+}
+
+TEST_CASE("lab05: particles past this GPU's storage blocks are refused in bytes and MiB that differ, and a sweep of nothing else exits unsupported", "[lab][lab05][gl43]") {
+    std::int64_t limit = 0;
+    {
+        const auto context = test::headless_context(Profile::Core, {4, 3});
+        limit = compute_limits().max_storage_block_bytes;
+    }
+    // As many particles as the limit holds origins (32 bytes each): their sentinel slots take the buffer past it.
+    const std::int64_t count = limit / 32;
+    if (count > 16777216) {
+        WARN("this GPU's storage blocks hold " << limit << " bytes: more origins than the lab's 16,777,216 particles, so none is refused");
+        return;
+    }
+    test::TempDir dir;
+    const auto run = test::run_lab("lab05_solution", {"sweep", "--size", "16x16", "--frames", "1", "--warmup", "0", "--set",
+                                                      "particles=" + std::to_string(count), "--knob", "local_size", "--values",
+                                                      "1,1024", "--out-dir", dir.path("sweep").string()},
+                                   dir.path());
+    INFO(run.process.output);
+    CHECK(run.exit_code() == 3);  // unsupported: what this device cannot do, not a failure
+    const std::regex refusal("lab05: every setting of the sweep was left out; the first: particles=" + std::to_string(count) +
+                             R"( needs a storage buffer of (\d+) bytes \((\d+\.\d\d) MiB\) for (\d+) origins of 32 bytes, the )"
+                             R"(sentinel slots included; this GPU allows (\d+) bytes \((\d+\.\d\d) MiB\)\n)");
+    std::smatch m;
+    REQUIRE(std::regex_search(run.process.output, m, refusal));
+    const std::int64_t needed = std::stoll(m[1]), origins = std::stoll(m[3]), allowed = std::stoll(m[4]);
+    CHECK(needed == origins * 32);
+    CHECK(origins > count);
+    CHECK(allowed == limit);
+    CHECK(needed > allowed);
+    auto mib = [](std::int64_t bytes) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.2f", static_cast<double>(bytes) / (1 << 20));
+        return std::string(text);
+    };
+    CHECK(m[2] == mib(needed));
+    CHECK(m[5] == mib(allowed));
+    CHECK(m[2] != m[5]);  // the sizes differ as printed, not only in bytes
 }
 
 TEST_CASE("lab05: the buffers handed to the grader hold every particle and the untouched sentinels past them", "[lab][lab05][gl43]") {

@@ -416,11 +416,60 @@ TEST_CASE("sweep report: a measure only some rows have gets one column, blank or
     // What accuracy costs, in a line: the cheapest setting, the most accurate, and the ratios between them.
     const auto summary = test::lines_of(report.summary());
     REQUIRE(summary.size() == 2);
-    CHECK(summary[0] == "lab,knob,error,cheapest,cheapest_error,cheapest_ms,most_accurate,accurate_error,accurate_ms,time_ratio,error_ratio");
-    CHECK(summary[1] == "labX,k,rmse,mode=a k=1,0.5,2,mode=b k=1,0.25,4,2,2");
+    CHECK(summary[0] == "lab,knob,error,cheapest,cheapest_error,cheapest_ms,most_accurate,accurate_error,accurate_ms,time_ratio,error_ratio,"
+                        "cheapest_fraction,cheapest_limiter,accurate_fraction,accurate_limiter");
+    // No ceilings measured: no share of a bound, and no limiter.
+    CHECK(summary[1] == "labX,k,rmse,mode=a k=1,0.5,2,mode=b k=1,0.25,4,2,2,,,,");
     // A plotted measure of the lab's own replaces the RMSE; a row without it is neither.
     report.plotted_error = "only_b";
-    CHECK(test::lines_of(report.summary())[1] == "labX,k,only_b,mode=a k=1,-,2,mode=b k=1,7,4,2,-");
+    CHECK(test::lines_of(report.summary())[1] == "labX,k,only_b,mode=a k=1,-,2,mode=b k=1,7,4,2,-,,,,");
+}
+
+TEST_CASE("sweep report: with this device's ceilings, each end's share of the bound and its limiter, <= for an upper bound, and the bound in the time plot", "[unit]") {
+    SweepReport report;
+    report.lab = "labX";
+    report.knob = "k";
+    report.reference_name = "k=4";
+    Roofline fetches;  // the most the frame can do: rays that end early do less
+    fetches.bound_ms = 1.0;
+    fetches.limiter = "texture (fragment)";
+    fetches.upper_bound = true;
+    Roofline storage;
+    storage.bound_ms = 3.0;
+    storage.limiter = "storage compute";
+    report.rows = {{"", "1", 2.0, 2.0, 1.5, 2.5, 0.5, 3, {}, "<= 1M fetch RG32F 2D fragment", fetches},
+                   {"", "2", 4.0, 4.0, 3.5, 4.5, 0.25, 2, {}, "96M storage compute", storage},
+                   {"", "3", 8.0, 8.0, 7.5, 8.5, 0.125, 1, {}, "", std::nullopt}};
+    const auto summary = test::lines_of(report.summary());
+    REQUIRE(summary.size() == 2);
+    // The cheapest (k=1) reaches at most 1/2 of its bound; the most accurate (k=3) states no work.
+    CHECK(summary[1] == "labX,k,rmse,k=1,0.5,2,k=3,0.125,8,4,4,<=0.5,texture (fragment),,");
+    report.rows.pop_back();  // now k=2 is the most accurate: 3 ms of 4
+    CHECK(test::lines_of(report.summary())[1] == "labX,k,rmse,k=1,0.5,2,k=2,0.25,4,2,2,<=0.5,texture (fragment),0.75,storage compute");
+    // The table and the Markdown mark the upper bound the same way.
+    CHECK(report.table().find("<=50.0%") != std::string::npos);
+    const std::string md = report.markdown();
+    CHECK(md.rfind("| k | ms/frame (spread) | RMSE | max diff | ceiling |", 0) == 0);
+    CHECK(md.find("| 1 | 2 (1.5-2.5) | 0.5 | 3 | <=50% |") != std::string::npos);
+    CHECK(md.find("| 2 | 4 (3.5-4.5) | 0.25 | 2 | 75% |") != std::string::npos);
+
+    // The time panel: the bound (the CSV's 8th column, bound_ms) dashed beside the times, keyed with its limiters.
+    test::TempDir dir;
+    report.write(dir.path());
+    const std::string gp = test::read_text(dir.path() / "labX-sweep.gp");
+    const std::string csv_head = test::lines_of(test::read_text(dir.path() / "labX-sweep.csv"))[0];
+    CHECK(csv_head.rfind("series,k,median_ms,min_ms,rmse,max_diff,work,bound_ms,", 0) == 0);
+    CHECK(gp.find("using 2:(strcol(1) eq '-' ? $8 : 1/0) with linespoints lw 3 dt 2") != std::string::npos);
+    CHECK(gp.find("title \"the fastest this device allows\\n(texture (fragment), storage compute)\"") != std::string::npos);
+    CHECK(gp.find("set offsets 0, 0, graph 0.3, 0") != std::string::npos);
+    // Without ceilings, no bound is drawn.
+    for (auto& row : report.rows) row.roofline.reset();
+    test::TempDir plain;
+    report.write(plain.path());
+    const std::string plain_gp = test::read_text(plain.path() / "labX-sweep.gp");
+    CHECK(plain_gp.find("dt 2") == std::string::npos);
+    CHECK(plain_gp.find("the fastest this device allows") == std::string::npos);
+    CHECK(test::lines_of(report.summary())[1] == "labX,k,rmse,k=1,0.5,2,k=2,0.25,4,2,2,,,,");
 }
 
 TEST_CASE("sweep report: a time or ratio with its spread is one cell in the table and the Markdown, three in the CSV", "[lab][labs]") {

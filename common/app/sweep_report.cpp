@@ -85,6 +85,27 @@ bool any_roofline(const std::vector<SweepRow>& rows) {
     return std::any_of(rows.begin(), rows.end(), [](const SweepRow& r) { return r.roofline.has_value(); });
 }
 
+// "<=" before a fraction whose work is the most the frame can do (the work column's "<= "): the frame reaches at
+// most that share of the bound.
+std::string at_most(const SweepRow& row) { return row.roofline && row.roofline->upper_bound ? "<=" : ""; }
+
+// The share of the bound as a percentage for people: "41%", "<=41%"; "-" without a roofline.
+std::string percent_cell(const SweepRow& row) {
+    return row.roofline ? at_most(row) + fixed(100.0 * row.roofline->fraction(row.median_ms), 0) + "%" : "-";
+}
+
+// The limiters of a curve's rows, each once, in the order first seen: what its bound curve is titled with.
+std::string limiters_of(const std::vector<SweepRow>& rows, const std::string& series) {
+    std::string out;
+    std::vector<std::string> seen;
+    for (const auto& r : rows)
+        if (r.series == series && r.roofline && std::find(seen.begin(), seen.end(), r.roofline->limiter) == seen.end()) {
+            seen.push_back(r.roofline->limiter);
+            out += (out.empty() ? "" : ", ") + r.roofline->limiter;
+        }
+    return out;
+}
+
 }  // namespace
 
 std::string SweepReport::table() const {
@@ -114,7 +135,8 @@ std::string SweepReport::table() const {
         std::snprintf(line, sizeof line, "%-12s %-10s %10.3f %17s %8.2f %10.3f %8d", r.series.c_str(), r.knob.c_str(),
                       r.median_ms, spread.c_str(), base_ms > 0 ? r.median_ms / base_ms : 0.0, r.rmse, r.max_diff);
         out << line;
-        if (rooflines) out << " " << std::setw(9) << (r.roofline ? fixed(100.0 * r.roofline->fraction(r.median_ms), 1) + "%" : "-");
+        if (rooflines)
+            out << " " << std::setw(9) << (r.roofline ? at_most(r) + fixed(100.0 * r.roofline->fraction(r.median_ms), 1) + "%" : "-");
         for (std::size_t k = 0; k < extras.size(); ++k) {
             // Significant digits: an error of 3e-8 must not print as 0.0000.
             std::snprintf(line, sizeof line, " %*s", widths[k], shown_cell(r, extras[k], 4).c_str());
@@ -168,22 +190,27 @@ std::string SweepReport::csv() const {
 std::string SweepReport::markdown() const {
     std::ostringstream out;
     out << "| " << (series.empty() ? "" : series + " | ") << knob << " | ms/frame (spread) | RMSE | max diff";
+    // The share of this device's bound each frame reaches, where the ceilings are measured (as the table's).
+    const bool rooflines = any_roofline(rows);
+    if (rooflines) out << " | ceiling";
     const std::vector<std::string> extras = shown_columns(extra_columns(rows));
     for (const auto& name : extras) out << " | " << name;
     out << " |\n|";
-    const std::size_t columns = (series.empty() ? 4 : 5) + extras.size();
+    const std::size_t columns = (series.empty() ? 4 : 5) + (rooflines ? 1 : 0) + extras.size();
     for (std::size_t i = 0; i < columns; ++i) out << (i < (series.empty() ? 1u : 2u) ? " --- |" : " ---: |");
     out << "\n";
     auto number = [](double value) { return format_number(value, 4); };
     for (const auto& r : rows) {
         out << "| " << (series.empty() ? "" : r.series + " | ") << r.knob << " | " << number(r.median_ms) << " ("
             << number(r.p25_ms) << "-" << number(r.p75_ms) << ") | " << number(r.rmse) << " | " << r.max_diff;
+        if (rooflines) out << " | " << percent_cell(r);
         for (const auto& name : extras) out << " | " << shown_cell(r, name, 4);
         out << " |\n";
     }
     // A pipe table's caption: ": text" after a blank line.
     out << "\n: " << lab << ", " << width << "x" << height << ", " << gl << "; error against " << reference_name
-        << "; times interleaved.\n";
+        << "; times interleaved" << (rooflines ? "; ceiling: the share of this device's bound the frame reaches (<=: at most)" : "")
+        << ".\n";
     return out.str();
 }
 
@@ -214,8 +241,15 @@ std::string SweepReport::summary() const {
     };
     auto number = [](double v) { return v == v ? format_number(v, 4) : std::string("-"); };
     std::string measure = plotted_error.empty() ? "rmse" : plotted_error;
+    // Each one's share of the bound this device's ceilings set, and what sets it: empty where no ceilings were
+    // measured or the lab states no work.
+    auto roofline_cells = [&](const SweepRow* r) {
+        if (!r || !r->roofline) return std::string(",");
+        return at_most(*r) + format_number(r->roofline->fraction(r->median_ms), 4) + "," + r->roofline->limiter;
+    };
     std::ostringstream out;
-    out << "lab,knob,error,cheapest,cheapest_error,cheapest_ms,most_accurate,accurate_error,accurate_ms,time_ratio,error_ratio\n"
+    out << "lab,knob,error,cheapest,cheapest_error,cheapest_ms,most_accurate,accurate_error,accurate_ms,time_ratio,error_ratio,"
+           "cheapest_fraction,cheapest_limiter,accurate_fraction,accurate_limiter\n"
         << lab << "," << knob << "," << measure << "," << setting(cheapest) << ","
         << (cheapest ? number(plotted_value(*cheapest)) : "-") << "," << (cheapest ? number(cheapest->median_ms) : "-") << ","
         << setting(accurate) << "," << (accurate ? number(plotted_value(*accurate)) : "-") << ","
@@ -224,7 +258,7 @@ std::string SweepReport::summary() const {
         out << number(accurate->median_ms / cheapest->median_ms) << "," << number(plotted_value(*cheapest) / plotted_value(*accurate));
     else
         out << "-,-";
-    out << "\n";
+    out << "," << roofline_cells(cheapest) << "," << roofline_cells(accurate) << "\n";
     return out.str();
 }
 
@@ -255,6 +289,8 @@ std::vector<std::string> SweepReport::write(const std::filesystem::path& dir) co
             error_column = 7 + static_cast<int>(i);  // after series, knob, median_ms, min_ms, rmse, max_diff
             error_label = plotted_error + ", against the reference";
         }
+    // The CSV's bound_ms: after the extra columns and the work (csv()).
+    const int bound_column = 7 + static_cast<int>(extras.size()) + 1;
     const std::string data = csv_path.filename().string();
     const auto curve_title = [&](const std::string& sv) { return series.empty() ? knob : series + "=" + sv; };
     const auto only = [&](const std::string& sv, const std::string& column) {
@@ -269,20 +305,37 @@ std::vector<std::string> SweepReport::write(const std::filesystem::path& dir) co
        << "set key top right\nset grid\n";
     if (numeric) gp << "set logscale x 2\n";
     else gp << "set xtics rotate by -30\n";
-    auto plot = [&](int column, const std::string& ylabel) {
+    const std::string x = numeric ? "2" : "0";
+    auto plot = [&](int column, const std::string& ylabel, bool bounds) {
         gp << "set xlabel '" << knob << "'\nset ylabel '" << ylabel << "'\nplot ";
         for (std::size_t i = 0; i < series_values.size(); ++i)
-            gp << (i ? ", " : "") << "'" << data << "' using " << (numeric ? "2" : "0") << ":"
+            gp << (i ? ", " : "") << "'" << data << "' using " << x << ":"
                << only(series_values[i], "$" + std::to_string(column)) << (numeric ? "" : ":xtic(2)")
-               << " with linespoints lw 3 pt 7 ps 1.5 title '" << curve_title(series_values[i]) << "'";
+               << " with linespoints lw 3 pt 7 ps 1.5 lt " << i + 1 << " title '" << curve_title(series_values[i]) << "'";
+        // Beside each curve's times, dashed in its colour, the least time this device's ceilings allow its work
+        // (the CSV's bound_ms): the gap between the two is the fraction reached. The key names them once per
+        // limiter, with a black dash (a curve of no points), where a title per curve would not fit the panel.
+        std::vector<std::string> keyed;
+        for (std::size_t i = 0; bounds && i < series_values.size(); ++i) {
+            const std::string limiters = limiters_of(rows, series_values[i]);
+            if (limiters.empty()) continue;
+            gp << ", '" << data << "' using " << x << ":" << only(series_values[i], "$" + std::to_string(bound_column))
+               << " with linespoints lw 3 dt 2 pt 6 ps 1.5 lt " << i + 1 << " notitle";
+            if (std::find(keyed.begin(), keyed.end(), limiters) == keyed.end()) keyed.push_back(limiters);
+        }
+        for (const auto& limiters : keyed)
+            gp << ", NaN with lines lw 3 dt 2 lc 'black' title \"the fastest this device allows\\n(" << limiters << ")\"";
         gp << "\n";
     };
     // Errors fall by orders of magnitude as the knob converges; a zero cannot go on a log axis.
     const bool log_error = all_positive_errors();
     if (log_error) gp << "set logscale y\n";
-    plot(error_column, error_label);
+    plot(error_column, error_label, false);
     if (log_error) gp << "unset logscale y\n";
-    plot(3, "median ms per frame");
+    // Room above the curves for the key's bound lines, where there are bounds (the times rise towards it), and
+    // between its lines, the bound's title taking two.
+    if (any_roofline(rows)) gp << "set offsets 0, 0, graph 0.3, 0\nset key spacing 1.5\n";
+    plot(3, "median ms per frame", true);
     gp << "unset multiplot\n";
     write_file(gp_path, gp.str());
 

@@ -39,10 +39,12 @@ struct SweepReport {
     std::string markdown() const;
     // What accuracy costs, in one CSV line under a header: the cheapest setting (lowest median time) and the most
     // accurate one (lowest plotted error above 0: an error of 0 is the reference itself), each one's error and
-    // time, and the ratios between them. `scripts/kit tradeoffs` gathers these across the labs.
+    // time, the ratios between them, and each one's fraction of the bound this device's ceilings set with the
+    // resource that sets it ("<=" before the fraction where the work is an upper bound; both empty where no ceilings
+    // were measured or the lab states no work). `scripts/kit tradeoffs` gathers these across the labs.
     std::string summary() const;
     // Writes <lab>-sweep.csv, <lab>-sweep.md, <lab>-summary.csv, the gnuplot scripts and, when gnuplot is installed, <lab>-sweep.png
-    // (error and time against the knob) and <lab>-tradeoff.png (error against time, a point per setting labelled
+    // (error and time against the knob, the time beside the bound the ceilings set where measured) and <lab>-tradeoff.png (error against time, a point per setting labelled
     // with its knob value, a curve per series); returns the paths.
     std::vector<std::string> write(const std::filesystem::path& dir) const;
 

@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <optional>
 #include <string>
 #include <vector>
@@ -104,9 +105,11 @@ public:
                                                       static_cast<std::uint32_t>(local), limits_);
         const auto bytes = static_cast<std::int64_t>(slots * sizeof(gsv::ParticleOrigin));
         if (bytes > limits_.max_storage_block_bytes)
-            throw gsv::UnsupportedError("particles=" + std::to_string(count_.get()) + " needs a " +
-                                        std::to_string(bytes >> 20) + " MiB storage buffer; this GPU allows " +
-                                        std::to_string(limits_.max_storage_block_bytes >> 20) + " MiB");
+            throw gsv::UnsupportedError("particles=" + std::to_string(count_.get()) + " needs a storage buffer of " +
+                                        in_bytes_and_mib(bytes) + " for " + std::to_string(slots) + " origins of " +
+                                        std::to_string(sizeof(gsv::ParticleOrigin)) +
+                                        " bytes, the sentinel slots included; this GPU allows " +
+                                        in_bytes_and_mib(limits_.max_storage_block_bytes));
     }
 
     void render(gsv::LabKit& kit, const gsv::Frame& frame) override {
@@ -126,17 +129,16 @@ public:
         lab05::draw_particles(buffers_);
     }
 
-    // A headless frame runs round(time / h) steps from the start, after the restart's step of length 0; each step
-    // advect.comp reads a particle's position and velocity (16 bytes each) and its origin (32: returnIfOutside's
-    // arguments), and writes the position, the velocity and, coloured by speed, the colour (16 each). Its
-    // integrator looks the velocity up once (Euler), twice (midpoint) or four times (RK4) a step.
+    // A headless frame runs round(time / h) steps from the start, after the restart's step of length 0, each moving
+    // storage_bytes_per_particle_step a particle (particle_stepper.h). Its integrator looks the velocity up once
+    // (Euler), twice (midpoint) or four times (RK4) a step.
     gsv::FrameWork frame_work(const gsv::Frame& frame) const override {
         // A window's frame catches up at most kMaxStepsPerFrame steps, or none: what it did is not its settings'.
         if (frame.interactive) return {};
         const double steps = static_cast<double>(lab05::steps_for(time_.get(), params_.time_step.get()) + 1);
         const double particles = count_.get();
         const bool colored = params_.color_by_speed.get();
-        const double bytes = 16 + 16 + 32 + 16 + 16 + (colored ? 16 : 0);
+        const double bytes = lab05::storage_bytes_per_particle_step(colored);
         const std::string per = std::to_string(static_cast<long>(steps)) + " steps of " +
                                 std::to_string(count_.get()) + " particles";
         gsv::FrameWork work;
@@ -222,6 +224,13 @@ private:
         // The picture is behind its time: the page draws on, saying how far it has got.
         if (done_ < target)
             kit.ask_for_another_frame("catching up: step " + std::to_string(done_) + " of " + std::to_string(target));
+    }
+
+    // "134250496 bytes (128.03 MiB)": a buffer a few sentinel slots over the limit must not read as the limit itself.
+    static std::string in_bytes_and_mib(std::int64_t bytes) {
+        char mib[32];
+        std::snprintf(mib, sizeof mib, "%.2f", static_cast<double>(bytes) / (1 << 20));
+        return std::to_string(bytes) + " bytes (" + mib + " MiB)";
     }
 
     static std::vector<float> flatten(const std::vector<glm::vec4>& v) {

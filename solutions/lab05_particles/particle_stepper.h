@@ -19,6 +19,12 @@ std::size_t capacity_for(std::size_t count, std::uint32_t local_size, const gsv:
 // round(time / h): the number of steps that shows the simulated time `time`.
 long steps_for(double time, double h);
 
+// The bytes one step moves through the storage buffers for each particle, as advect.comp names them: it reads the
+// position and the velocity (16 bytes each) and the origin (32: returnIfOutside's arguments), and writes the position,
+// the velocity and, coloured by speed, the colour (16 each). The lab's statement of its work (frame_work), which the
+// instructor's sweep also divides by the storage bandwidth.
+double storage_bytes_per_particle_step(bool colored);
+
 // Where the shader finds the field: its formula, or its samples in a 3D texture.
 enum class Source { Analytic, Texture };
 inline constexpr gsv::EnumName<Source> kSources[] = {{Source::Analytic, "analytic"}, {Source::Texture, "texture"}};
