@@ -138,13 +138,15 @@ public:
         const double steps = static_cast<double>(lab05::steps_for(time_.get(), params_.time_step.get()) + 1);
         const double particles = count_.get();
         const bool colored = params_.color_by_speed.get();
-        const double bytes = lab05::storage_bytes_per_particle_step(colored);
+        const bool gravity = params_.field.get() == gsv::ParticleScene::Gravity;
+        const double bytes = lab05::storage_bytes_per_particle_step(gravity, colored);
         const std::string per = std::to_string(static_cast<long>(steps)) + " steps of " +
                                 std::to_string(count_.get()) + " particles";
         gsv::FrameWork work;
         work.items.push_back({gsv::WorkKind::StorageBytes, gsv::ShaderPath::Compute, "", steps * particles * bytes,
-                              std::to_string(static_cast<int>(bytes)) + " bytes a particle step (read 64, write " +
-                                  (colored ? "48" : "32") + "), " + per});
+                              std::to_string(static_cast<int>(bytes)) + " bytes a particle step at least (read " +
+                                  (gravity ? "32" : "16") + ", write " + (colored ? "48" : "32") +
+                                  "; an origin too where a particle leaves), " + per});
         if (params_.source.get() == lab05::Source::Texture) {
             const gsv::Integrator integrator = params_.integrator.get();
             const int lookups = integrator == gsv::Integrator::Euler ? 1 : integrator == gsv::Integrator::Midpoint ? 2 : 4;

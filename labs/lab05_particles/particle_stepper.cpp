@@ -15,7 +15,11 @@ std::size_t capacity_for(std::size_t count, std::uint32_t local_size, const gsv:
 
 long steps_for(double time, double h) { return h > 0 ? std::lround(time / h) : 0; }
 
-double storage_bytes_per_particle_step(bool colored) { return 16 + 16 + 32 + 16 + 16 + (colored ? 16 : 0); }
+double storage_bytes_per_particle_step(bool gravity, bool colored) {
+    const double reads = 16 + (gravity ? 16 : 0);
+    const double writes = 16 + 16 + (colored ? 16 : 0);
+    return reads + writes;
+}
 
 void Stepper::restart(const gsv::ParticleSet& initial) const {
     write_particles(buffers, initial);

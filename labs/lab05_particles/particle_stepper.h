@@ -19,11 +19,14 @@ std::size_t capacity_for(std::size_t count, std::uint32_t local_size, const gsv:
 // round(time / h): the number of steps that shows the simulated time `time`.
 long steps_for(double time, double h);
 
-// The bytes one step moves through the storage buffers for each particle, as advect.comp names them: it reads the
-// position and the velocity (16 bytes each) and the origin (32: returnIfOutside's arguments), and writes the position,
-// the velocity and, coloured by speed, the colour (16 each). The lab's statement of its work (frame_work), which the
-// instructor's sweep also divides by the storage bandwidth.
-double storage_bytes_per_particle_step(bool colored);
+// The bytes one step must move through the storage buffers for each particle, as advect.comp uses them: it reads the
+// position (16 bytes) and, under gravity, the velocity (a velocity field computes its own: the shader's load of it is
+// dead there, and compilers drop it), and writes the position, the velocity and, coloured by speed, the colour (16
+// each). The origin (32 bytes, returnIfOutside's) is read only by a particle that leaves the domain: not counted. So
+// this is the least a step moves, never more: a step measured faster than these bytes allow at the device's storage
+// ceiling did not wait for the device (gsv::check_within_ceiling), and its share of the bandwidth is at least this.
+// The lab's statement of its work (frame_work), which the instructor's sweep also divides by the storage bandwidth.
+double storage_bytes_per_particle_step(bool gravity, bool colored);
 
 // Where the shader finds the field: its formula, or its samples in a 3D texture.
 enum class Source { Analytic, Texture };
