@@ -25,7 +25,7 @@ constexpr const char* kUsage =
     "  --out FILE    where to write them (default: ceilings.json in the build folder, where the labs look)\n"
     "  --side N      fragment targets and compute grids N x N (default 512)\n"
     "  --items N     vec4s the storage benchmark copies a dispatch (default 2097152: 32 MiB each way)\n"
-    "  --rounds N    rounds over every benchmark (default 5);  --frames N  timed frames a round (default 3)\n"
+    "  --rounds N    rounds over every benchmark (default 9);  --frames N  timed frames a round (default 3)\n"
     "  --runs N      the whole set N times, each run its own rounds (default 1): each run's ceiling printed, and how\n"
     "                far apart the runs are; the file holds the fastest round of all runs, and each run's\n"
     "  --only KEY    measure only this one (repeatable);  --list  the keys\n"

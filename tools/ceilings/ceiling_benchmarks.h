@@ -18,7 +18,10 @@ struct CeilingOptions {
     std::filesystem::path kit_shaders; // shaders/ (the prelude, gsv/fullscreen.vert)
     int side = 512;                    // fragment targets and compute grids are side x side
     std::size_t storage_items = 1 << 21;  // vec4s copied a dispatch: 2 Mi items are 32 MiB each way
-    int frames = 3, rounds = 5;
+    // 9 rounds: on a 2-core machine with llvmpipe a stray process slows a round or two of five, and three runs of
+    // 5 rounds differed by up to 13.9%; with 9 each benchmark has rounds enough to meet a quiet moment (three times
+    // three runs within 7.1%, 7.6% and 7.2%).
+    int frames = 3, rounds = 9;
     int runs = 1;                      // the whole set measured this many times, each run its own rounds
     std::vector<std::string> only;     // keys to measure; empty: all
 };
