@@ -81,22 +81,23 @@ def main(argv):
         def short(setting):
             values = [part.split("=", 1)[-1] for part in setting.split(" ")]
             return values[-1] + (" (" + ", ".join(values[:-1]) + ")" if len(values) > 1 else "")
-        # The share of the bound and what sets it, in one cell: a slide has no room for two more columns.
-        def ceiling(r, which):
+        # The share of the bound beside the time it is the share of: a slide has no room for more columns (the
+        # limiting resource is in the plain table and in each lab's sweep).
+        def timed(r, which):
             share = cell(r, which + "_fraction")
-            return share if share == "-" else share + " " + cell(r, which + "_limiter")
-        print("| lab | knob: error | cheapest | error | ms | ceiling | most accurate | error | ms | ceiling | x time | / error |")
-        print("| --- | --- | --- | ---: | ---: | ---: | --- | ---: | ---: | ---: | ---: | ---: |")
+            return r[which + "_ms"] + ("" if share == "-" else " (" + share + ")")
+        print("| lab | knob: error | cheapest | error | ms (of bound) | most accurate | error | ms (of bound) | x time | / error |")
+        print("| --- | --- | --- | ---: | ---: | --- | ---: | ---: | ---: | ---: |")
         for r in table:
             knob = (r["knob"] + ": " + r["error"]).replace("_", "\\_")
-            print("| " + " | ".join([r["lab"], knob, short(r["cheapest"]), r["cheapest_error"], r["cheapest_ms"],
-                                     ceiling(r, "cheapest"), short(r["most_accurate"]), r["accurate_error"],
-                                     r["accurate_ms"], ceiling(r, "accurate"), r["time_ratio"], r["error_ratio"]]) + " |")
+            print("| " + " | ".join([r["lab"], knob, short(r["cheapest"]), r["cheapest_error"], timed(r, "cheapest"),
+                                     short(r["most_accurate"]), r["accurate_error"], timed(r, "accurate"),
+                                     r["time_ratio"], r["error_ratio"]]) + " |")
         print("\n: Per lab, the cheapest and the most accurate setting of its sweep (the knob's value, the series' in "
               "brackets); x time: the most accurate one's time over the cheapest's; / error: how many times smaller "
-              "its error is. Each error is against the reference its lab's sweep names. ceiling: the share of the "
-              "bound this device's measured ceilings set that the frame reaches, and the resource that sets it "
-              "(<=: at most, the lab stating the most its frame can do; -: no ceilings measured, or no work stated).")
+              "its error is. Each error is against the reference its lab's sweep names. (of bound): the share of the "
+              "bound this device's measured ceilings set that the frame reaches (<=: at most, the lab stating the "
+              "most its frame can do; none: no ceilings measured, or no work stated).")
         return 0
     widths = [max(len(h), *(len(line[i]) for line in cells)) for i, h in enumerate(heads)]
     print("  ".join(h.ljust(w) for h, w in zip(heads, widths)))

@@ -7,6 +7,7 @@
 -- sweep with twenty measures shows the three a slide is about; a name the table lacks stops the build too.
 -- With rows="column=value" it keeps only the rows that have that value in that column (one node set of two), and
 -- with caption="off" it drops the table's caption (a second table from the same kind of sweep on one slide).
+-- A caption's clause about a column left out ("; ceiling: ...") is left out with it.
 
 local function split_row(line)
   local cells = {}
@@ -44,13 +45,32 @@ local function drop_caption(text)
   return table.concat(out, '\n')
 end
 
+-- A caption explains some columns in clauses "; column: what it is": a clause about a column the slide leaves out
+-- goes with it, so that the caption does not describe what is not shown (nor take a line the slide lacks).
+local function caption_without(line, dropped)
+  local clauses = {}
+  for clause in (line:sub(3) .. '; '):gmatch('(.-); ') do clauses[#clauses + 1] = clause end
+  local kept = {}
+  for _, clause in ipairs(clauses) do
+    local column = clause:match('^([%w_]+):')
+    if not (column and dropped[column]) then kept[#kept + 1] = clause end
+  end
+  local caption = table.concat(kept, '; ')
+  if not caption:match('%.$') then caption = caption .. '.' end
+  return ': ' .. caption
+end
+
 local function keep_columns(text, wanted, name)
-  local out, picks = {}, nil
+  local out, picks, dropped = {}, nil, {}
   for line in (text .. '\n'):gmatch('(.-)\n') do
-    if line:match('^|') then
+    if line:match('^: ') then
+      out[#out + 1] = caption_without(line, dropped)
+    elseif line:match('^|') then
       local cells = split_row(line)
       if not picks then
         picks = {}
+        for _, cell in ipairs(cells) do dropped[cell] = true end
+        for _, want in ipairs(wanted) do dropped[want] = nil end
         for _, want in ipairs(wanted) do
           local found = nil
           for i, cell in ipairs(cells) do if cell == want then found = i end end

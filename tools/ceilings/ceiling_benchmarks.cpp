@@ -36,7 +36,8 @@ constexpr int kSide2d = 512, kLayers = 4, kSide3d = 64;
 // The buffer texture (fetch_buffer.frag): 64 Ki texels, the size every OpenGL allows (GL_MAX_TEXTURE_BUFFER_SIZE is
 // at least 65536), 20 times lab 07's default elements' values; a block of 8 x 8 fragments reads the same texels.
 constexpr int kBufferTexels = 65536, kBufferTile = 8;
-// The triangles' grid: a cell a pixel of the target, at most 2048 x 2048 cells (make_grid's limit is 4096 vertices).
+// The triangles' grid: as many cells each way as the target has pixels (drawn into a quarter of it: 16 cells a pixel),
+// at most 2048 x 2048 cells (make_grid's limit is 4096 vertices).
 constexpr int kMaxGridCells = 2048;
 
 struct TextureKind {
@@ -189,19 +190,22 @@ public:
                             }});
         }
         {
-            // A grid of a cell a pixel, drawn twice a frame as lab 01 draws its mesh: back faces culled, then front
-            // faces, so each triangle is drawn once (its setup and raster) and culled once, the mix of any closed
-            // mesh drawn that way (on llvmpipe a culled triangle cost a tenth of a drawn one, so the mix matters).
-            // The best case of that mix: half a pixel a triangle, so the fill (one fragment a pixel a frame) is
-            // small beside it; half a vertex a triangle, shared along the rows in index order, so the vertex cache
-            // reuses them; a vertex shader that only places the vertex and a fragment shader that only writes a
-            // colour. A frame goes faster only where more than half its triangles are culled or fall outside the
-            // target, cheaper still: lab 01's camera frames the whole model, and culls half.
+            // A grid drawn twice a frame as lab 01 draws its mesh: back faces culled, then front faces, so each
+            // triangle is drawn once (its setup and raster) and culled once, the mix of any closed mesh drawn that
+            // way (on llvmpipe a culled triangle cost a tenth of a drawn one, so the mix matters). The best case of
+            // that mix: triangles far under a pixel (the grid drawn into a quarter of the target each way, 16 cells a
+            // pixel), so that most cover no pixel centre and the fill is a fragment a pixel; half a vertex a triangle,
+            // shared along the rows in index order, so the vertex cache reuses them; a vertex shader that only places
+            // the vertex and a fragment shader that only writes a colour. With a cell a pixel (half a pixel a
+            // triangle) lab 01's finest sphere drawn at 64x64, its triangles smaller still, reached 99.7% of it: not
+            // a ceiling. A frame goes faster only where more than half its triangles are culled or fall outside the
+            // target: lab 01's camera frames the whole model, and culls half.
             const int cells = std::min(o_.side, kMaxGridCells);
             grid_ = GpuMesh(make_grid(cells + 1), Profile::Core);
             const ShaderProgram& p = keep_program({"triangles.vert", "fill.frag"}, {});
             list.push_back({"triangles", "triangles/s", 2.0 * 2.0 * cells * cells, {}, [this, &p] {
                                 target_.bind();
+                                glViewport(0, 0, std::max(1, o_.side / 4), std::max(1, o_.side / 4));
                                 p.use();
                                 p.set("uColor", glm::vec4(0.2f, 0.4f, 0.6f, 1.0f));
                                 glDisable(GL_DEPTH_TEST);
@@ -213,6 +217,7 @@ public:
                                 grid_.draw();
                                 glCullFace(GL_BACK);
                                 glDisable(GL_CULL_FACE);
+                                glViewport(0, 0, o_.side, o_.side);
                             }});
         }
         const ShaderProgram& ff = keep_program({"fullscreen.vert", "flops.frag"}, with_counts({}));
