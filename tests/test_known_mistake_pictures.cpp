@@ -9,6 +9,7 @@
 #include "grader/src/diagnose/known_mistakes.h"
 #include "test_support.h"
 
+#include <algorithm>
 #include <cmath>
 
 using namespace gsv;
@@ -128,8 +129,21 @@ TEST_CASE("known mistake pictures: written and read back the same, one picture k
     CHECK(matching_mistakes(back, "no-such-case", streaks(64, 64, false), flat(64, 64, 9, 9, 9)).empty());
     // None shipped: no mistakes, no error.
     CHECK(read_known_mistake_pictures(dir.path(), "lab03").empty());
-    // A file that points outside its pictures, or holds another lab's, is named.
     const std::filesystem::path file = known_mistakes_file(dir.path(), "lab02");
+    // An index beside another atlas than the one it was written with (rows renumbered for a regenerated atlas while
+    // the old one was kept: each picture then names another) is refused, naming the index.
+    const std::filesystem::path atlas_file = KitLayout{dir.path()}.golden_dir("lab02") / "mistakes.png";
+    const Image atlas = read_png(atlas_file);
+    Image swapped(atlas.width, atlas.height);
+    for (int y = 0; y < atlas.height; ++y)
+        std::copy_n(atlas.at(0, (y + atlas.height / 2) % atlas.height), static_cast<std::size_t>(atlas.width) * 4, swapped.at(0, y));
+    write_png(atlas_file, swapped);
+    const std::string refused = test::gsv_error_message([&] { read_known_mistake_pictures(dir.path(), "lab02"); });
+    CHECK(refused.find(file.string()) != std::string::npos);
+    CHECK(refused.find("indexes another mistakes.png") != std::string::npos);
+    write_png(atlas_file, atlas);
+    CHECK(read_known_mistake_pictures(dir.path(), "lab02").cases.at("long").size() == 2);
+    // A file that points outside its pictures, or holds another lab's, is named.
     test::replace_in_file(file, "\"row\": 1", "\"row\": 7");
     CHECK(test::gsv_error_message([&] { read_known_mistake_pictures(dir.path(), "lab02"); }).find(file.string()) != std::string::npos);
     test::replace_in_file(file, "\"lab\": \"lab02\"", "\"lab\": \"lab01\"");

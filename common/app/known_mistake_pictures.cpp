@@ -59,6 +59,19 @@ fs::path known_mistakes_file(const fs::path& kit_root, const std::string& lab) {
     return KitLayout{kit_root}.golden_dir(lab) / "mistakes.json";
 }
 
+namespace {
+
+// The atlas's pixels, fingerprinted: the index (mistakes.json) names the atlas it was written with, so that an index
+// kept beside another atlas (one regenerated while the other was kept) is refused instead of naming the wrong pictures.
+std::string atlas_fingerprint(const Image& atlas) {
+    Fnv1a f;
+    f.add(std::to_string(atlas.width) + "x" + std::to_string(atlas.height));
+    f.add(reinterpret_cast<const char*>(atlas.rgba.data()), atlas.rgba.size());
+    return f.hex();
+}
+
+}  // namespace
+
 KnownMistakePictures read_known_mistake_pictures(const fs::path& kit_root, const std::string& lab) {
     KnownMistakePictures k;
     k.lab = lab;
@@ -85,6 +98,9 @@ KnownMistakePictures read_known_mistake_pictures(const fs::path& kit_root, const
     const Json& pictures = j.array_at("pictures");
     if (pictures.size() == 0) return k;
     const Image atlas = read_png(file.parent_path() / kPictureFile);
+    if (atlas_fingerprint(atlas) != j.string_at("atlas"))
+        throw Error(file.string() + ": indexes another " + kPictureFile + " than the one beside it (the two are written "
+                    "together by gsv-grade --update-mistakes: keep or commit both)");
     const int bw = j.int_at("blocks_wide"), bh = j.int_at("blocks_high");
     for (const Json& p : pictures.as_array()) {
         const int row = p.int_at("row");
@@ -164,6 +180,7 @@ void write_known_mistake_pictures(const fs::path& kit_root, const KnownMistakePi
                 std::copy_n(rows[r]->texture.at(0, y), static_cast<std::size_t>(bw) * 4, atlas.at(bw, static_cast<int>(r) * bh + y));
             }
         write_png(file.parent_path() / kPictureFile, atlas);
+        j["atlas"] = atlas_fingerprint(atlas);
     } else {
         fs::remove(file.parent_path() / kPictureFile);
     }
